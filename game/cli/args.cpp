@@ -1,0 +1,135 @@
+#include "game/cli/args.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace game::cli {
+
+Args::Args(std::string verb, int argc, const char* const* argv, int first,
+           std::set<std::string> flags)
+    : verb_(std::move(verb)), flagNames_(std::move(flags)) {
+    flagNames_.insert("json");
+    flagNames_.insert("help");
+    for (int i = first; i < argc; ++i) {
+        std::string a = argv[i];
+        if (a.rfind("--", 0) != 0 || a.size() == 2) {
+            positionals_.push_back(a);
+            continue;
+        }
+        std::string name = a.substr(2), value;
+        const auto eq = name.find('=');
+        bool hasValue = false;
+        if (eq != std::string::npos) {
+            value = name.substr(eq + 1);
+            name = name.substr(0, eq);
+            hasValue = true;
+        }
+        if (flagNames_.count(name)) {
+            if (hasValue) fail("--" + name + " takes no value");
+            flagsGiven_.insert(name);
+            continue;
+        }
+        if (!hasValue) {
+            if (i + 1 >= argc) fail("--" + name + " needs a value");
+            value = argv[++i];
+        }
+        if (values_.count(name)) fail("--" + name + " given twice");
+        values_[name] = value;
+    }
+}
+
+void Args::fail(const std::string& message) const {
+    throw UsageError("artillery " + verb_ + ": " + message + " (see artillery " + verb_ +
+                     " --help)");
+}
+
+bool Args::flag(const std::string& name) const {
+    asked_.insert(name);
+    return flagsGiven_.count(name) != 0;
+}
+
+std::optional<std::string> Args::text(const std::string& name) const {
+    asked_.insert(name);
+    auto it = values_.find(name);
+    if (it == values_.end()) return std::nullopt;
+    return it->second;
+}
+
+std::string Args::text(const std::string& name, const std::string& fallback) const {
+    return text(name).value_or(fallback);
+}
+
+double Args::parseNumber(const std::string& name, const std::string& raw, double lo, double hi,
+                         const char* what) const {
+    const char* s = raw.c_str();
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(s, &end);
+    std::ostringstream range;
+    range << "a number in [" << lo << ", " << hi << "]" << (what && *what ? " " : "")
+          << (what ? what : "");
+    if (raw.empty() || end != s + raw.size() || !std::isfinite(v))
+        fail("--" + name + " expects " + range.str() + ", got '" + raw + "'");
+    if (v < lo || v > hi)
+        fail("--" + name + " expects " + range.str() + ", got " + raw);
+    return v;
+}
+
+double Args::number(const std::string& name, double fallback, double lo, double hi,
+                    const char* what) const {
+    auto t = text(name);
+    return t ? parseNumber(name, *t, lo, hi, what) : fallback;
+}
+
+double Args::requiredNumber(const std::string& name, double lo, double hi,
+                            const char* what) const {
+    auto t = text(name);
+    if (!t) fail("--" + name + " is required");
+    return parseNumber(name, *t, lo, hi, what);
+}
+
+long long Args::integer(const std::string& name, long long fallback, long long lo,
+                        long long hi) const {
+    auto t = text(name);
+    if (!t) return fallback;
+    const char* s = t->c_str();
+    char* end = nullptr;
+    errno = 0;
+    const long long v = std::strtoll(s, &end, 10);
+    if (t->empty() || end != s + t->size() || errno == ERANGE || v < lo || v > hi)
+        fail("--" + name + " expects a whole number in [" + std::to_string(lo) + ", " +
+             std::to_string(hi) + "], got '" + *t + "'");
+    return v;
+}
+
+phys::Vec2 Args::vec2(const std::string& name, phys::Vec2 fallback) const {
+    auto t = text(name);
+    if (!t) return fallback;
+    const auto comma = t->find(',');
+    if (comma == std::string::npos || t->find(',', comma + 1) != std::string::npos)
+        fail("--" + name + " expects X,Y (two numbers and a comma), got '" + *t + "'");
+    const double big = 1e9;
+    return {parseNumber(name, t->substr(0, comma), -big, big, "for X"),
+            parseNumber(name, t->substr(comma + 1), -big, big, "for Y")};
+}
+
+phys::Vec2 Args::requiredVec2(const std::string& name) const {
+    if (!has(name)) {
+        asked_.insert(name);
+        fail("--" + name + " X,Y is required");
+    }
+    return vec2(name, {});
+}
+
+void Args::rejectUnknown() const {
+    for (const auto& [name, value] : values_)
+        if (!asked_.count(name)) fail("unknown option --" + name);
+    for (const auto& name : flagsGiven_)
+        if (!asked_.count(name)) fail("unknown option --" + name);
+    if (!positionals_.empty() && !asked_.count("<positional>"))
+        fail("unexpected argument '" + positionals_.front() + "'");
+}
+
+} // namespace game::cli

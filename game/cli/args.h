@@ -1,0 +1,63 @@
+// Command-line options of one verb: `--name value` pairs, `--flag`s and positionals,
+// read through typed getters that refuse bad input with one clear message naming the
+// option and what was expected (DESIGN.md: exit 2 on bad input).
+#pragma once
+
+#include "physics/vec2.h"
+
+#include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace game::cli {
+
+/// Bad input on the command line; the verb prints what() and exits 2.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// Exit codes shared by every verb.
+enum Exit { kOk = 0, kCheckFailed = 1, kBadInput = 2 };
+
+class Args {
+  public:
+    /// Parses argv[first..argc). `flags` are options that take no value.
+    Args(std::string verb, int argc, const char* const* argv, int first,
+         std::set<std::string> flags = {});
+
+    bool flag(const std::string& name) const;
+    bool has(const std::string& name) const { return values_.count(name) != 0; }
+    const std::vector<std::string>& positionals() const { return positionals_; }
+
+    std::optional<std::string> text(const std::string& name) const;
+    std::string text(const std::string& name, const std::string& fallback) const;
+    /// A finite number, within [lo, hi]; `what` names the unit for the message.
+    double number(const std::string& name, double fallback, double lo, double hi,
+                  const char* what) const;
+    double requiredNumber(const std::string& name, double lo, double hi, const char* what) const;
+    long long integer(const std::string& name, long long fallback, long long lo,
+                      long long hi) const;
+    /// "X,Y" as a vector.
+    phys::Vec2 vec2(const std::string& name, phys::Vec2 fallback) const;
+    phys::Vec2 requiredVec2(const std::string& name) const;
+
+    /// Throws if any option was given that the verb never asked about, so typos
+    /// ("--sped") are reported instead of silently ignored.
+    void rejectUnknown() const;
+    [[noreturn]] void fail(const std::string& message) const;
+
+  private:
+    double parseNumber(const std::string& name, const std::string& raw, double lo, double hi,
+                       const char* what) const;
+    std::string verb_;
+    std::map<std::string, std::string> values_;
+    std::set<std::string> flagsGiven_;
+    std::set<std::string> flagNames_;
+    std::vector<std::string> positionals_;
+    mutable std::set<std::string> asked_;
+};
+
+} // namespace game::cli

@@ -1,0 +1,105 @@
+#include "game/cli/verbs.h"
+
+#include "physics/forces.h"
+
+#include <string>
+
+namespace game::cli {
+
+namespace {
+
+const Verb kVerbs[] = {
+    {"solve", "firing solution: launch angles and flight times to hit a point",
+     R"(usage: artillery solve --from X,Y --to X,Y --speed V [--gravity G | --planet NAME] [--json]
+
+Launch angles that take a shell from --from to --to at muzzle speed V under uniform
+gravity, with their flight times: none (out of range), one or two, the low (direct)
+shot first. Angles are degrees counter-clockwise from +x, so a shot to the left is
+above 90.
+
+  --from X,Y      launch point, m
+  --to X,Y        target point, m
+  --speed V       muzzle speed, m/s (> 0)
+  --gravity G     gravity, m/s^2 (default 9.81)
+  --planet NAME   earth (9.81), moon (1.62), mars (3.71), jupiter (24.79)
+  --json          {"solutions":[{"angle_deg":..,"flight_time_s":..}, ...]}
+)",
+     {},
+     runSolve},
+    {"trajectory", "one shot with a chosen integrator against the closed form",
+     R"(usage: artillery trajectory --speed V --angle DEG --time T [--from X,Y]
+           [--integrator NAME] [--dt S] [--gravity G | --planet NAME]
+           [--mass M] [--diameter D] [--cd C] [--air-density R] [--wind VX,VY] [--json]
+
+Simulates one particle launched at V m/s and DEG degrees for T seconds in steps of
+dt and prints its state. Without drag or wind it also prints the closed-form state
+p0 + v0 t + g t^2/2 and the position error. Any of --diameter, --cd, --air-density or
+--wind switches quadratic air drag on (F = 1/2 rho Cd A |v - w| (v - w)).
+
+  --from X,Y        launch point, m (default 0,0)
+  --speed V         muzzle speed, m/s
+  --angle DEG       launch angle, degrees counter-clockwise from +x
+  --time T          simulated time, s (rounded to a whole number of steps)
+  --integrator N    explicit-euler, symplectic-euler (euler-cromer), verlet,
+                    velocity-verlet (default), leapfrog, midpoint, rk4, implicit-euler
+  --dt S            time step, s (default 0.01)
+  --gravity G       m/s^2 (default 9.81), or --planet NAME
+  --mass M          kg (default 1)
+  --diameter D      m (default 0.1)
+  --cd C            drag coefficient (default 0.47, a sphere)
+  --air-density R   kg/m^3 (default 1.225)
+  --wind VX,VY      wind velocity, m/s (default 0,0)
+  --json            {"position":[x,y],"velocity":[vx,vy],"steps":n,"time_s":t,
+                     "closed_form":{"position":[..],"velocity":[..]}|null,
+                     "position_error_m":e|null}
+)",
+     {},
+     runTrajectory},
+    {"spring", "a mass on a spring: integrator against the analytic solution",
+     R"(usage: artillery spring --k K --mass M --x0 X --time T [--integrator NAME]
+           [--dt S] [--damping C] [--json]
+
+Simulates a mass M on a spring of stiffness K (and damping C) released at rest from
+X and prints its position, its energy against the initial energy, the analytic
+solution of m x'' + c x' + k x = 0 and the error. w dt = sqrt(K/M) dt decides
+stability: explicit Euler gains energy at any dt, symplectic Euler and Verlet are
+stable below 2, RK4 below 2.83, implicit Euler always.
+
+  --k K           stiffness, N/m (> 0)
+  --mass M        kg (> 0)
+  --x0 X          initial displacement, m
+  --time T        simulated time, s
+  --integrator N  as for trajectory (default velocity-verlet)
+  --dt S          time step, s (default 0.01)
+  --damping C     N s/m (default 0)
+  --json          {"position":..,"velocity":..,"energy_j":..,"initial_energy_j":..,
+                   "analytic_position":..,"position_error_m":..,"steps":n,"omega_dt":..}
+)",
+     {},
+     runSpring},
+};
+
+} // namespace
+
+std::span<const Verb> verbs() { return kVerbs; }
+
+double gravityOption(const Args& args) {
+    const bool hasG = args.has("gravity"), hasPlanet = args.has("planet");
+    if (hasG && hasPlanet) args.fail("give --gravity or --planet, not both");
+    if (hasPlanet) {
+        const std::string name = *args.text("planet");
+        if (auto g = phys::gravityFromPlanet(name)) return *g;
+        args.fail("--planet expects one of earth, moon, mars, jupiter, got '" + name + "'");
+    }
+    return args.number("gravity", 9.81, 0.0, 1e4, "m/s^2");
+}
+
+phys::Integrator integratorOption(const Args& args, phys::Integrator fallback) {
+    auto name = args.text("integrator");
+    if (!name) return fallback;
+    if (auto id = phys::integratorFromName(*name)) return *id;
+    args.fail("--integrator expects one of " + phys::integratorNameList() + ", got '" + *name +
+              "'");
+}
+
+} // namespace game::cli

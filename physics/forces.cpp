@@ -1,0 +1,246 @@
+#include "physics/forces.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace phys {
+
+std::optional<double> gravityFromPlanet(std::string_view name) {
+    for (const auto& p : kGravityPresets)
+        if (name == p.name) return p.g;
+    return std::nullopt;
+}
+
+Vec2 Dynamics::gravityOn(std::size_t i) const {
+    if (!active(i) || (set_.flags[i] & kNoGravity)) return {};
+    return def_.gravity;
+}
+
+namespace {
+
+/// Submerged depth of a sphere of radius r centred at y below a surface at level.
+double submergedDepth(double y, double r, double level) {
+    return std::clamp(level - (y - r), 0.0, 2.0 * r);
+}
+
+/// Volume of a spherical cap of depth h on a sphere of radius r: pi h^2 (3r - h) / 3.
+double capVolume(double h, double r) { return std::numbers::pi * h * h * (3.0 * r - h) / 3.0; }
+
+} // namespace
+
+void Dynamics::nonGravityForces(const double* px, const double* py, const double* vx,
+                                const double* vy, double* fx, double* fy) const {
+    const std::size_t n = set_.slots();
+    std::fill(fx, fx + n, 0.0);
+    std::fill(fy, fy + n, 0.0);
+    const auto& flags = set_.flags;
+
+    // Air drag, relative to the moving air (wind).
+    if (def_.drag == DragModel::Linear) {
+        const double b = def_.linearDrag;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (flags[i] & kNoDrag) continue;
+            fx[i] -= b * (vx[i] - def_.wind.x);
+            fy[i] -= b * (vy[i] - def_.wind.y);
+        }
+    } else if (def_.drag == DragModel::Quadratic) {
+        // F = -1/2 rho Cd A |u| u with u = v - wind, A = pi r^2.
+        const double halfRhoPi = 0.5 * def_.airDensity * std::numbers::pi;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (flags[i] & kNoDrag) continue;
+            const double ux = vx[i] - def_.wind.x, uy = vy[i] - def_.wind.y;
+            const double r = set_.radius[i];
+            const double k = halfRhoPi * set_.dragCd[i] * r * r * std::sqrt(ux * ux + uy * uy);
+            fx[i] -= k * ux;
+            fy[i] -= k * uy;
+        }
+    }
+
+    // Damped Hooke springs.
+    for (const Spring& s : springs_) {
+        if (s.broken) continue;
+        const bool toAnchor = s.b == kNoParticle;
+        const double bx = toAnchor ? s.anchor.x : px[s.b], by = toAnchor ? s.anchor.y : py[s.b];
+        const double dx = px[s.a] - bx, dy = py[s.a] - by;
+        const double len = std::sqrt(dx * dx + dy * dy);
+        if (len <= 0.0) continue; // direction undefined; no force
+        const double nx = dx / len, ny = dy / len;
+        const double rvx = vx[s.a] - (toAnchor ? 0.0 : vx[s.b]);
+        const double rvy = vy[s.a] - (toAnchor ? 0.0 : vy[s.b]);
+        const double mag = s.stiffness * (len - s.restLength) + s.damping * (rvx * nx + rvy * ny);
+        fx[s.a] -= mag * nx;
+        fy[s.a] -= mag * ny;
+        if (!toAnchor) {
+            fx[s.b] += mag * nx;
+            fy[s.b] += mag * ny;
+        }
+    }
+
+    // Inverse-square gravity between attractors: F = G m1 m2 / (r^2 + eps^2).
+    if (def_.pointGravity) {
+        const double eps2 = def_.pointGravitySoftening * def_.pointGravitySoftening;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!(flags[i] & kAttractor) || !(flags[i] & kAlive)) continue;
+            const double mi = set_.mass(static_cast<ParticleId>(i));
+            for (std::size_t j = i + 1; j < n; ++j) {
+                if (!(flags[j] & kAttractor) || !(flags[j] & kAlive)) continue;
+                const double mj = set_.mass(static_cast<ParticleId>(j));
+                const double dx = px[j] - px[i], dy = py[j] - py[i];
+                const double d2 = dx * dx + dy * dy + eps2;
+                const double d = std::sqrt(d2);
+                const double f = def_.gravitationalConstant * mi * mj / (d2 * d); // per unit d
+                fx[i] += f * dx;
+                fy[i] += f * dy;
+                fx[j] -= f * dx;
+                fy[j] -= f * dy;
+            }
+        }
+    }
+
+    // Buoyancy (Archimedes: rho_w V_submerged |g|, against gravity) and water drag on
+    // the submerged fraction of each particle, which is treated as a sphere.
+    if (def_.water) {
+        const double g = length(def_.gravity);
+        const Vec2 up = g > 0.0 ? def_.gravity * (-1.0 / g) : Vec2{0.0, 1.0};
+        const double halfRhoPi = 0.5 * def_.waterDensity * std::numbers::pi;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!(flags[i] & kAlive)) continue;
+            const double r = set_.radius[i];
+            const double h = submergedDepth(py[i], r, def_.waterLevel);
+            if (h <= 0.0) continue;
+            const double lift = def_.waterDensity * capVolume(h, r) * g;
+            fx[i] += lift * up.x;
+            fy[i] += lift * up.y;
+            const double frac = h / (2.0 * r);
+            const double k = halfRhoPi * set_.dragCd[i] * r * r * frac *
+                             std::sqrt(vx[i] * vx[i] + vy[i] * vy[i]);
+            fx[i] -= k * vx[i];
+            fy[i] -= k * vy[i];
+        }
+    }
+}
+
+void Dynamics::accelerations(const double* px, const double* py, const double* vx,
+                             const double* vy, double* ax, double* ay) const {
+    nonGravityForces(px, py, vx, vy, ax, ay);
+    const std::size_t n = set_.slots();
+    const double gx = def_.gravity.x, gy = def_.gravity.y;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!active(i)) {
+            ax[i] = ay[i] = 0.0;
+            continue;
+        }
+        // Gravity is added as an acceleration, not as m g / m, so that under gravity
+        // alone the integrators see g to the last bit (the closed form's g).
+        const double im = set_.invMass[i];
+        const bool grav = !(set_.flags[i] & kNoGravity);
+        ax[i] = (grav ? gx : 0.0) + im * ax[i];
+        ay[i] = (grav ? gy : 0.0) + im * ay[i];
+    }
+}
+
+void Dynamics::forceJacobianProduct(const double* px, const double* py, const double* vx,
+                                    const double* vy, const double* wx, const double* wy,
+                                    const double* ux, const double* uy, double* dfx,
+                                    double* dfy) const {
+    const std::size_t n = set_.slots();
+    std::fill(dfx, dfx + n, 0.0);
+    std::fill(dfy, dfy + n, 0.0);
+    const auto& flags = set_.flags;
+
+    if (def_.drag == DragModel::Linear) {
+        for (std::size_t i = 0; i < n; ++i) {
+            if (flags[i] & kNoDrag) continue;
+            dfx[i] -= def_.linearDrag * ux[i];
+            dfy[i] -= def_.linearDrag * uy[i];
+        }
+    } else if (def_.drag == DragModel::Quadratic) {
+        // d/du (-k|u|u) = -k (|u| I + u u^T / |u|)
+        const double halfRhoPi = 0.5 * def_.airDensity * std::numbers::pi;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (flags[i] & kNoDrag) continue;
+            const double rx = vx[i] - def_.wind.x, ry = vy[i] - def_.wind.y;
+            const double s = std::sqrt(rx * rx + ry * ry);
+            if (s <= 0.0) continue;
+            const double r = set_.radius[i];
+            const double k = halfRhoPi * set_.dragCd[i] * r * r;
+            const double proj = (rx * ux[i] + ry * uy[i]) / s;
+            dfx[i] -= k * (s * ux[i] + rx * proj);
+            dfy[i] -= k * (s * uy[i] + ry * proj);
+        }
+    }
+
+    for (const Spring& sp : springs_) {
+        if (sp.broken) continue;
+        const bool toAnchor = sp.b == kNoParticle;
+        const double bx = toAnchor ? sp.anchor.x : px[sp.b], by = toAnchor ? sp.anchor.y : py[sp.b];
+        const double dx = px[sp.a] - bx, dy = py[sp.a] - by;
+        const double len = std::sqrt(dx * dx + dy * dy);
+        if (len <= 0.0) continue;
+        const double nx = dx / len, ny = dy / len;
+        // Relative direction vectors (a minus b).
+        const double rwx = wx[sp.a] - (toAnchor ? 0.0 : wx[sp.b]);
+        const double rwy = wy[sp.a] - (toAnchor ? 0.0 : wy[sp.b]);
+        const double rux = ux[sp.a] - (toAnchor ? 0.0 : ux[sp.b]);
+        const double ruy = uy[sp.a] - (toAnchor ? 0.0 : uy[sp.b]);
+        // dF_a/dx_a = -k [n n^T + max(0, 1 - L0/L) (I - n n^T)]; dF_a/dv_a = -c n n^T.
+        const double transverse = std::max(0.0, 1.0 - sp.restLength / len);
+        const double wn = rwx * nx + rwy * ny;
+        const double un = rux * nx + ruy * ny;
+        const double jx = sp.stiffness * (wn * nx + transverse * (rwx - wn * nx)) +
+                          sp.damping * un * nx;
+        const double jy = sp.stiffness * (wn * ny + transverse * (rwy - wn * ny)) +
+                          sp.damping * un * ny;
+        dfx[sp.a] -= jx;
+        dfy[sp.a] -= jy;
+        if (!toAnchor) {
+            dfx[sp.b] += jx;
+            dfy[sp.b] += jy;
+        }
+    }
+}
+
+int applyBlast(ParticleSet& set, const Blast& blast) {
+    if (!(blast.radius > 0.0)) return 0;
+    int pushed = 0;
+    for (std::size_t i = 0; i < set.slots(); ++i) {
+        if (!(set.flags[i] & kAlive) || set.invMass[i] <= 0.0) continue;
+        const Vec2 d = set.position(static_cast<ParticleId>(i)) - blast.center;
+        const double dist = length(d);
+        if (dist >= blast.radius) continue;
+        // At the very centre the direction is undefined: push straight up.
+        const Vec2 dir = dist > 0.0 ? d / dist : Vec2{0.0, 1.0};
+        const double j = blast.impulse * (1.0 - dist / blast.radius);
+        const auto id = static_cast<ParticleId>(i);
+        set.flags[i] &= ~kSleeping;
+        set.setVelocity(id, set.velocity(id) + dir * (j * set.invMass[i]));
+        ++pushed;
+    }
+    return pushed;
+}
+
+int updateSprings(std::vector<Spring>& springs, const ParticleSet& set, double dt) {
+    int broke = 0;
+    for (Spring& s : springs) {
+        if (s.broken || !(s.restLength > 0.0)) continue;
+        const Vec2 b = s.b == kNoParticle ? s.anchor : set.position(s.b);
+        const double len = length(set.position(s.a) - b);
+        const double strain = (len - s.restLength) / s.restLength;
+        if (std::abs(strain) > s.breakStrain) {
+            s.broken = true;
+            ++broke;
+            continue;
+        }
+        if (std::abs(strain) > s.yieldStrain && s.plasticRate > 0.0) {
+            // Move the rest length toward the length at which the strain would be
+            // exactly the yield strain, at plasticRate (first-order relaxation).
+            const double target = len / (1.0 + std::copysign(s.yieldStrain, strain));
+            const double f = std::min(1.0, s.plasticRate * dt);
+            s.restLength += (target - s.restLength) * f;
+        }
+    }
+    return broke;
+}
+
+} // namespace phys

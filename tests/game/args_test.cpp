@@ -1,0 +1,53 @@
+// The command-line reader refuses bad input with a message naming option and range.
+#include "game/cli/args.h"
+
+#include <gtest/gtest.h>
+
+using game::cli::Args;
+using game::cli::UsageError;
+
+namespace {
+Args make(std::vector<const char*> argv) {
+    argv.insert(argv.begin(), {"artillery", "solve"});
+    return Args("solve", static_cast<int>(argv.size()), argv.data(), 2);
+}
+std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const UsageError& e) {
+        return e.what();
+    }
+    return "";
+}
+} // namespace
+
+TEST(Args, ReadsNumbersVectorsAndFlags) {
+    Args a = make({"--speed", "30", "--from=1.5,-2", "--json"});
+    EXPECT_EQ(a.requiredNumber("speed", 0, 100, "m/s"), 30.0);
+    EXPECT_EQ(a.requiredVec2("from"), (phys::Vec2{1.5, -2}));
+    EXPECT_TRUE(a.flag("json"));
+    a.rejectUnknown();
+}
+
+TEST(Args, BadInputNamesTheOptionAndWhatWasExpected) {
+    Args a = make({"--speed", "fast", "--from", "1;2", "--to", "nan,3", "--n", "2.5"});
+    EXPECT_NE(errorOf([&] { a.requiredNumber("speed", 0, 100, "m/s"); }).find(
+                  "--speed expects a number in [0, 100] m/s, got 'fast'"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] { a.requiredVec2("from"); }).find("--from expects X,Y"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] { a.requiredVec2("to"); }).find("got 'nan'"), std::string::npos);
+    EXPECT_NE(errorOf([&] { a.integer("n", 1, 0, 10); }).find("whole number"), std::string::npos);
+    EXPECT_NE(errorOf([&] { a.requiredNumber("missing", 0, 1, ""); }).find("--missing is required"),
+              std::string::npos);
+}
+
+TEST(Args, OutOfRangeAndUnknownOptionsAreRefused) {
+    Args a = make({"--speed", "-3", "--sped", "3"});
+    EXPECT_NE(errorOf([&] { a.requiredNumber("speed", 0, 100, "m/s"); }).find("got -3"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] { a.rejectUnknown(); }).find("unknown option --sped"), std::string::npos);
+    EXPECT_NE(errorOf([] { make({"--speed"}); }).find("--speed needs a value"), std::string::npos);
+    EXPECT_NE(errorOf([] { make({"--a", "1", "--a", "2"}); }).find("given twice"),
+              std::string::npos);
+}

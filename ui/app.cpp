@@ -1,0 +1,61 @@
+#include "ui/app.h"
+
+#include "game/cli/verbs.h"
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace ui {
+
+namespace {
+
+std::vector<game::cli::Verb> allVerbs() {
+    std::vector<game::cli::Verb> all(game::cli::verbs().begin(), game::cli::verbs().end());
+    return all;
+}
+
+void printOverview(std::ostream& out) {
+    out << "artillery: a 2D physics playground and artillery game\n\n"
+           "usage: artillery VERB [options]    (artillery VERB --help for each verb)\n\n"
+           "verbs:\n";
+    for (const auto& v : allVerbs()) {
+        std::string name = v.name;
+        name.resize(12, ' ');
+        out << "  " << name << v.summary << "\n";
+    }
+    out << "\nEvery verb takes --json for machine-readable output. Exit codes: 0 ok,\n"
+           "1 check failed, 2 bad input.\n";
+}
+
+} // namespace
+
+int runApp(int argc, const char* const* argv) {
+    if (argc < 2) {
+        printOverview(std::cout);
+        return game::cli::kOk;
+    }
+    const std::string verb = argv[1];
+    if (verb == "--help" || verb == "-h" || verb == "help") {
+        printOverview(std::cout);
+        return game::cli::kOk;
+    }
+    for (const auto& v : allVerbs()) {
+        if (verb != v.name) continue;
+        try {
+            game::cli::Args args(v.name, argc, argv, 2, v.flags);
+            if (args.flag("help")) {
+                std::cout << v.usage;
+                return game::cli::kOk;
+            }
+            return v.run(args, std::cout);
+        } catch (const game::cli::UsageError& e) {
+            std::cerr << e.what() << "\n";
+            return game::cli::kBadInput;
+        }
+    }
+    std::cerr << "artillery: unknown verb '" << verb << "' (run artillery --help for the list)\n";
+    return game::cli::kBadInput;
+}
+
+} // namespace ui
