@@ -1,0 +1,27 @@
+# The overview and the particle-core verbs: solve, trajectory, spring.
+# No arguments: the list of verbs, and never a stub.
+cli_test(overview 0 "verbs:.*solve.*trajectory.*spring" "")
+cli_test(unknown_verb 2 "unknown verb 'fly'" "fly")
+# solve: the notes' target practice example, JSON, out of range, bad input.
+cli_test(solve_notes 0 "39\\.0[0-9]*.*75\\.1[0-9]*|39\\.1.*75\\.2"
+         "solve;--from;10,2;--to;50,20;--speed;30;--json")
+cli_test(solve_out_of_range 0 "\"solutions\":\\[\\]" "solve;--from;0,0;--to;40,0;--speed;19;--json")
+cli_test(solve_text 0 "low .*angle.*high .*angle" "solve;--from;0,0;--to;40,0;--speed;25")
+cli_test(solve_bad_speed 2 "--speed expects a number" "solve;--from;0,0;--to;40,0;--speed;abc")
+cli_test(solve_missing_to 2 "--to X,Y is required" "solve;--from;0,0;--speed;20")
+cli_test(solve_bad_planet 2 "--planet expects one of earth" "solve;--from;0,0;--to;4,0;--speed;20;--planet;pluto")
+cli_test(solve_help 0 "usage: artillery solve" "solve;--help")
+# trajectory: exact integrators hit the closed form; drag has no closed form.
+cli_test(trajectory_json 0 "\"closed_form\":\\{.*\"position_error_m\":[0-9.e-]+"
+         "trajectory;--speed;30;--angle;45;--time;2;--integrator;rk4;--dt;0.01;--json")
+cli_test(trajectory_drag 0 "\"closed_form\":null.*\"position_error_m\":null"
+         "trajectory;--speed;30;--angle;45;--time;2;--cd;0.47;--diameter;0.1;--json")
+cli_test(trajectory_bad_integrator 2 "--integrator expects one of explicit-euler"
+         "trajectory;--speed;30;--angle;45;--time;2;--integrator;rk5")
+cli_test(trajectory_bad_dt 2 "--dt expects a number in" "trajectory;--speed;30;--angle;45;--time;2;--dt;0")
+cli_test(trajectory_unknown_option 2 "unknown option --sped" "trajectory;--sped;30;--speed;1;--angle;45;--time;2")
+# spring: energy and analytic solution.
+cli_test(spring_json 0 "\"analytic_position\":.*\"energy_j\":|\"energy_j\":.*\"analytic_position\":"
+         "spring;--k;100;--mass;1;--x0;0.1;--integrator;symplectic-euler;--dt;0.001;--time;1;--json")
+cli_test(spring_bad_k 2 "--k expects a number" "spring;--k;-1;--mass;1;--x0;1;--time;1")
+cli_test(spring_missing_mass 2 "--mass is required" "spring;--k;1;--x0;1;--time;1")
