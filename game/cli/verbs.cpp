@@ -77,6 +77,20 @@ stable below 2, RK4 below 2.83, implicit Euler always.
 )",
      {},
      runSpring},
+    {"check", "validate level files",
+     R"(usage: artillery check LEVEL.json... [--json]
+
+Loads each level file and reports whether it is valid. An invalid file gets one
+message naming the file, the JSON path and what was expected, e.g.
+  levels/bad.json: $.cannons[0].speed_mps: expected a number in [0, 60] m/s ...
+The level format is documented in levels/README.md.
+
+Exit code: 0 when every file is valid, 1 when any is not, 2 on bad usage.
+  --json   {"levels":[{"file":..,"ok":true,"name":..,"mode":..,"content_hash":..}
+                      | {"file":..,"ok":false,"path":..,"error":..}],"failed":n}
+)",
+     {},
+     runCheck},
 };
 
 } // namespace

@@ -30,5 +30,6 @@ phys::Integrator integratorOption(const Args& args, phys::Integrator fallback);
 int runSolve(const Args& args, std::ostream& out);
 int runTrajectory(const Args& args, std::ostream& out);
 int runSpring(const Args& args, std::ostream& out);
+int runCheck(const Args& args, std::ostream& out);
 
 } // namespace game::cli

@@ -1,0 +1,225 @@
+#include "game/files/json_reader.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fcntl.h>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace game {
+
+LoadError::LoadError(const std::string& f, const std::string& p, const std::string& m)
+    : std::runtime_error(f + ": " + p + ": " + m), file(f), path(p), detail(m) {}
+
+nlohmann::json parseJson(const std::string& file, const std::string& text) {
+    try {
+        return nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        // Turn the byte offset into line:column, which is what an editor shows.
+        std::size_t line = 1, col = 1;
+        const std::size_t end = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
+        for (std::size_t i = 0; i < end; ++i) {
+            if (text[i] == '\n') {
+                ++line;
+                col = 1;
+            } else {
+                ++col;
+            }
+        }
+        const std::string what = e.what();
+        const auto cut = what.find("syntax error");
+        throw LoadError(file, "line " + std::to_string(line) + ", column " + std::to_string(col),
+                        "not valid JSON: " +
+                            (cut != std::string::npos ? what.substr(cut) : what));
+    }
+}
+
+std::string readFile(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw LoadError(file, "$", "cannot open the file (does it exist and is it readable?)");
+    std::ostringstream s;
+    s << in.rdbuf();
+    if (in.bad()) throw LoadError(file, "$", "reading the file failed");
+    return s.str();
+}
+
+Node::Node(const nlohmann::json& value, std::string file, std::string path)
+    : value_(value), file_(std::move(file)), path_(std::move(path)) {}
+
+void Node::fail(const std::string& message) const { throw LoadError(file_, path_, message); }
+
+std::string Node::describe() const {
+    std::string s = value_.dump();
+    if (s.size() > 40) s = s.substr(0, 37) + "...";
+    switch (value_.type()) {
+    case nlohmann::json::value_t::string: return "the string " + s;
+    case nlohmann::json::value_t::object: return "an object";
+    case nlohmann::json::value_t::array: return "an array of " + std::to_string(value_.size());
+    case nlohmann::json::value_t::null: return "null";
+    case nlohmann::json::value_t::boolean: return s;
+    default: return s;
+    }
+}
+
+bool Node::has(const std::string& key) const {
+    asked_.insert(key);
+    return value_.is_object() && value_.contains(key) && !value_.at(key).is_null();
+}
+
+Node Node::at(const std::string& key) const {
+    asked_.insert(key);
+    if (!value_.is_object()) fail("expected an object with field \"" + key + "\", got " + describe());
+    if (!value_.contains(key)) fail("missing field \"" + key + "\"");
+    return Node(value_.at(key), file_, path_ + "." + key);
+}
+
+std::optional<Node> Node::find(const std::string& key) const {
+    asked_.insert(key);
+    if (!value_.is_object()) fail("expected an object, got " + describe());
+    if (!value_.contains(key) || value_.at(key).is_null()) return std::nullopt;
+    return Node(value_.at(key), file_, path_ + "." + key);
+}
+
+std::vector<Node> Node::elements(std::size_t maxCount, std::size_t minCount) const {
+    if (!value_.is_array()) fail("expected an array, got " + describe());
+    if (value_.size() > maxCount)
+        fail("expected at most " + std::to_string(maxCount) + " element(s), got " +
+             std::to_string(value_.size()));
+    if (value_.size() < minCount)
+        fail("expected at least " + std::to_string(minCount) + " element(s), got " +
+             std::to_string(value_.size()));
+    std::vector<Node> out;
+    out.reserve(value_.size());
+    for (std::size_t i = 0; i < value_.size(); ++i)
+        out.emplace_back(value_[i], file_, path_ + "[" + std::to_string(i) + "]");
+    return out;
+}
+
+double Node::number(double lo, double hi, const char* unit) const {
+    std::ostringstream range;
+    range << "a number in [" << lo << ", " << hi << "]" << (unit && *unit ? " " : "")
+          << (unit ? unit : "");
+    if (!value_.is_number()) fail("expected " + range.str() + ", got " + describe());
+    const double v = value_.get<double>();
+    if (!std::isfinite(v) || v < lo || v > hi)
+        fail("expected " + range.str() + ", got " + describe());
+    return v;
+}
+
+long long Node::integer(long long lo, long long hi) const {
+    const std::string range =
+        "a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (!value_.is_number_integer()) fail("expected " + range + ", got " + describe());
+    if (value_.is_number_unsigned() && value_.get<unsigned long long>() > 9e18)
+        fail("expected " + range + ", got " + describe());
+    const long long v = value_.get<long long>();
+    if (v < lo || v > hi) fail("expected " + range + ", got " + describe());
+    return v;
+}
+
+bool Node::boolean() const {
+    if (!value_.is_boolean()) fail("expected true or false, got " + describe());
+    return value_.get<bool>();
+}
+
+std::string Node::string(std::size_t maxLength) const {
+    if (!value_.is_string()) fail("expected a string, got " + describe());
+    const auto& s = value_.get_ref<const std::string&>();
+    if (s.size() > maxLength)
+        fail("expected a string of at most " + std::to_string(maxLength) + " characters");
+    return s;
+}
+
+std::string Node::choice(const std::vector<std::string>& allowed) const {
+    std::string list;
+    for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + ("\"" + a + "\"");
+    if (!value_.is_string()) fail("expected one of " + list + ", got " + describe());
+    const std::string s = value_.get<std::string>();
+    for (const auto& a : allowed)
+        if (s == a) return s;
+    fail("expected one of " + list + ", got " + describe());
+}
+
+phys::Vec2 Node::vec2(double limit) const {
+    if (!value_.is_array() || value_.size() != 2 || !value_[0].is_number() ||
+        !value_[1].is_number())
+        fail("expected [x, y] (two numbers), got " + describe());
+    const auto e = elements(2);
+    return {e[0].number(-limit, limit, "m"), e[1].number(-limit, limit, "m")};
+}
+
+double Node::number(const std::string& key, double lo, double hi, const char* unit) const {
+    return at(key).number(lo, hi, unit);
+}
+double Node::number(const std::string& key, double fallback, double lo, double hi,
+                    const char* unit) const {
+    auto n = find(key);
+    return n ? n->number(lo, hi, unit) : fallback;
+}
+long long Node::integer(const std::string& key, long long fallback, long long lo,
+                        long long hi) const {
+    auto n = find(key);
+    return n ? n->integer(lo, hi) : fallback;
+}
+bool Node::boolean(const std::string& key, bool fallback) const {
+    auto n = find(key);
+    return n ? n->boolean() : fallback;
+}
+std::string Node::string(const std::string& key) const { return at(key).string(); }
+std::string Node::string(const std::string& key, const std::string& fallback) const {
+    auto n = find(key);
+    return n ? n->string() : fallback;
+}
+phys::Vec2 Node::vec2(const std::string& key) const { return at(key).vec2(); }
+phys::Vec2 Node::vec2(const std::string& key, phys::Vec2 fallback) const {
+    auto n = find(key);
+    return n ? n->vec2() : fallback;
+}
+
+void Node::finish() const {
+    if (!value_.is_object()) return;
+    for (auto it = value_.begin(); it != value_.end(); ++it)
+        if (!asked_.count(it.key())) {
+            std::string known;
+            for (const auto& k : asked_) known += (known.empty() ? "" : ", ") + k;
+            fail("unknown field \"" + it.key() + "\" (known fields here: " + known + ")");
+        }
+}
+
+void writeFileAtomically(const std::string& path, const std::string& text) {
+    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0) throw std::runtime_error(path + ": cannot create " + tmp);
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n <= 0) {
+            ::close(fd);
+            ::unlink(tmp.c_str());
+            throw std::runtime_error(path + ": write failed");
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    if (::fsync(fd) != 0 || ::close(fd) != 0) {
+        ::unlink(tmp.c_str());
+        throw std::runtime_error(path + ": flushing to disk failed");
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        ::unlink(tmp.c_str());
+        throw std::runtime_error(path + ": cannot replace the file");
+    }
+}
+
+std::string contentHash(const std::string& bytes) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (unsigned char c : bytes) {
+        h ^= c;
+        h *= 0x100000001b3ull;
+    }
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+}
+
+} // namespace game
