@@ -60,7 +60,10 @@ Command readCommand(const Node& n) {
 
 std::vector<Command> parseCommands(const std::string& file, const std::string& text) {
     const nlohmann::json doc = parseJson(file, text);
-    const Node root(doc, file);
+    return readCommands(Node(doc, file));
+}
+
+std::vector<Command> readCommands(const Node& root) {
     std::vector<Command> out;
     std::uint64_t last = 0;
     for (const Node& n : root.elements(kMaxCommands)) {

@@ -34,6 +34,9 @@ struct Command {
 inline constexpr std::uint64_t kMaxCommandTick = 86'400'000;
 inline constexpr std::size_t kMaxCommands = 1'000'000;
 
+class Node;
+/// Reads a commands list at a node of a larger document (a replay's "commands").
+std::vector<Command> readCommands(const Node& list);
 /// Parses a commands list; ticks must not decrease. Throws LoadError naming file and path.
 std::vector<Command> parseCommands(const std::string& file, const std::string& text);
 std::vector<Command> loadCommands(const std::string& file);

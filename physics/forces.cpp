@@ -12,6 +12,9 @@ std::optional<double> gravityFromPlanet(std::string_view name) {
     return std::nullopt;
 }
 
+Dynamics::Dynamics(const ForceDef& def, const std::vector<Spring>& springs, const ParticleSet& set)
+    : def_(def), springs_(springs), set_(set), local_(def) {}
+
 Vec2 Dynamics::gravityOn(std::size_t i) const {
     if (!active(i) || (set_.flags[i] & kNoGravity)) return {};
     return def_.gravity;
@@ -19,42 +22,17 @@ Vec2 Dynamics::gravityOn(std::size_t i) const {
 
 namespace {
 
-/// Submerged depth of a sphere of radius r centred at y below a surface at level.
-double submergedDepth(double y, double r, double level) {
-    return std::clamp(level - (y - r), 0.0, 2.0 * r);
-}
-
-/// Volume of a spherical cap of depth h on a sphere of radius r: pi h^2 (3r - h) / 3.
-double capVolume(double h, double r) { return std::numbers::pi * h * h * (3.0 * r - h) / 3.0; }
 
 } // namespace
 
 void Dynamics::nonGravityForces(const double* px, const double* py, const double* vx,
                                 const double* vy, double* fx, double* fy) const {
     const std::size_t n = set_.slots();
-    std::fill(fx, fx + n, 0.0);
-    std::fill(fy, fy + n, 0.0);
     const auto& flags = set_.flags;
-
-    // Air drag, relative to the moving air (wind).
-    if (def_.drag == DragModel::Linear) {
-        const double b = def_.linearDrag;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (flags[i] & kNoDrag) continue;
-            fx[i] -= b * (vx[i] - def_.wind.x);
-            fy[i] -= b * (vy[i] - def_.wind.y);
-        }
-    } else if (def_.drag == DragModel::Quadratic) {
-        // F = -1/2 rho Cd A |u| u with u = v - wind, A = pi r^2.
-        const double halfRhoPi = 0.5 * def_.airDensity * std::numbers::pi;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (flags[i] & kNoDrag) continue;
-            const double ux = vx[i] - def_.wind.x, uy = vy[i] - def_.wind.y;
-            const double r = set_.radius[i];
-            const double k = halfRhoPi * set_.dragCd[i] * r * r * std::sqrt(ux * ux + uy * uy);
-            fx[i] -= k * ux;
-            fy[i] -= k * uy;
-        }
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2 f = localForce(i, px[i], py[i], vx[i], vy[i]);
+        fx[i] = f.x;
+        fy[i] = f.y;
     }
 
     // Damped Hooke springs.
@@ -98,45 +76,16 @@ void Dynamics::nonGravityForces(const double* px, const double* py, const double
         }
     }
 
-    // Buoyancy (Archimedes: rho_w V_submerged |g|, against gravity) and water drag on
-    // the submerged fraction of each particle, which is treated as a sphere.
-    if (def_.water) {
-        const double g = length(def_.gravity);
-        const Vec2 up = g > 0.0 ? def_.gravity * (-1.0 / g) : Vec2{0.0, 1.0};
-        const double halfRhoPi = 0.5 * def_.waterDensity * std::numbers::pi;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!(flags[i] & kAlive)) continue;
-            const double r = set_.radius[i];
-            const double h = submergedDepth(py[i], r, def_.waterLevel);
-            if (h <= 0.0) continue;
-            const double lift = def_.waterDensity * capVolume(h, r) * g;
-            fx[i] += lift * up.x;
-            fy[i] += lift * up.y;
-            const double frac = h / (2.0 * r);
-            const double k = halfRhoPi * set_.dragCd[i] * r * r * frac *
-                             std::sqrt(vx[i] * vx[i] + vy[i] * vy[i]);
-            fx[i] -= k * vx[i];
-            fy[i] -= k * vy[i];
-        }
-    }
 }
 
 void Dynamics::accelerations(const double* px, const double* py, const double* vx,
                              const double* vy, double* ax, double* ay) const {
     nonGravityForces(px, py, vx, vy, ax, ay);
     const std::size_t n = set_.slots();
-    const double gx = def_.gravity.x, gy = def_.gravity.y;
     for (std::size_t i = 0; i < n; ++i) {
-        if (!active(i)) {
-            ax[i] = ay[i] = 0.0;
-            continue;
-        }
-        // Gravity is added as an acceleration, not as m g / m, so that under gravity
-        // alone the integrators see g to the last bit (the closed form's g).
-        const double im = set_.invMass[i];
-        const bool grav = !(set_.flags[i] & kNoGravity);
-        ax[i] = (grav ? gx : 0.0) + im * ax[i];
-        ay[i] = (grav ? gy : 0.0) + im * ay[i];
+        const Vec2 a = accelerationFrom(i, {ax[i], ay[i]});
+        ax[i] = a.x;
+        ay[i] = a.y;
     }
 }
 
@@ -197,6 +146,57 @@ void Dynamics::forceJacobianProduct(const double* px, const double* py, const do
         if (!toAnchor) {
             dfx[sp.b] += jx;
             dfy[sp.b] += jy;
+        }
+    }
+
+    // Point gravity: F_i = G m_i m_j d / |d|^3 with d = p_j - p_i, so
+    // dF_i/dp_j = G m_i m_j (I / r^3 - 3 d d^T / r^5) = K and dF_i/dp_i = -K.
+    // (K is not negative definite: gravity stretches along d. The solver's CG guards
+    // against a direction of non-positive curvature, which only very large dt reach.)
+    if (def_.pointGravity) {
+        const double eps2 = def_.pointGravitySoftening * def_.pointGravitySoftening;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!(flags[i] & kAttractor) || !(flags[i] & kAlive)) continue;
+            const double mi = set_.mass(static_cast<ParticleId>(i));
+            for (std::size_t j = i + 1; j < n; ++j) {
+                if (!(flags[j] & kAttractor) || !(flags[j] & kAlive)) continue;
+                const double mj = set_.mass(static_cast<ParticleId>(j));
+                const double dx = px[j] - px[i], dy = py[j] - py[i];
+                const double r2 = dx * dx + dy * dy + eps2, r = std::sqrt(r2);
+                const double g = def_.gravitationalConstant * mi * mj / (r2 * r);
+                const double rwx = wx[j] - wx[i], rwy = wy[j] - wy[i]; // w_j - w_i
+                const double dw = (dx * rwx + dy * rwy) / r2;
+                const double kx = g * (rwx - 3.0 * dx * dw), ky = g * (rwy - 3.0 * dy * dw);
+                dfx[i] += kx;
+                dfy[i] += ky;
+                dfx[j] -= kx;
+                dfy[j] -= ky;
+            }
+        }
+    }
+
+    // Buoyancy: lift rho_w g V(h) with h = level - (y - r), so dLift/dy = -rho_w g pi h (2r - h);
+    // water drag as quadratic drag on the submerged fraction (its dependence on y is left out).
+    if (def_.water) {
+        const double g = length(def_.gravity);
+        const Vec2 up = g > 0.0 ? def_.gravity * (-1.0 / g) : Vec2{0.0, 1.0};
+        const double halfRhoPi = 0.5 * def_.waterDensity * std::numbers::pi;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!(flags[i] & kAlive)) continue;
+            const double r = set_.radius[i];
+            const double h = submergedDepth(py[i], r, def_.waterLevel);
+            if (h <= 0.0) continue;
+            if (h < 2.0 * r) { // partly submerged: the lift changes with depth
+                const double dLift = -def_.waterDensity * g * std::numbers::pi * h * (2.0 * r - h);
+                dfx[i] += dLift * wy[i] * up.x;
+                dfy[i] += dLift * wy[i] * up.y;
+            }
+            const double s = std::sqrt(vx[i] * vx[i] + vy[i] * vy[i]);
+            if (s <= 0.0) continue;
+            const double k = halfRhoPi * set_.dragCd[i] * r * r * (h / (2.0 * r));
+            const double proj = (vx[i] * ux[i] + vy[i] * uy[i]) / s;
+            dfx[i] -= k * (s * ux[i] + vx[i] * proj);
+            dfy[i] -= k * (s * uy[i] + vy[i] * proj);
         }
     }
 }

@@ -10,7 +10,11 @@
 #include "physics/particles.h"
 #include "physics/vec2.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <limits>
+#include <numbers>
 #include <string_view>
 #include <optional>
 #include <vector>
@@ -83,12 +87,78 @@ int applyBlast(ParticleSet& set, const Blast& blast);
 /// Returns how many springs broke.
 int updateSprings(std::vector<Spring>& springs, const ParticleSet& set, double dt);
 
+/// Submerged depth of a sphere of radius r centred at y below a surface at level.
+inline double submergedDepth(double y, double r, double level) {
+    return std::clamp(level - (y - r), 0.0, 2.0 * r);
+}
+
+/// Volume of a spherical cap of depth h on a sphere of radius r: pi h^2 (3r - h) / 3.
+inline double capVolume(double h, double r) {
+    return std::numbers::pi * h * h * (3.0 * r - h) / 3.0;
+}
+
+/// The per-particle force laws with their parameters resolved, small enough to copy into
+/// a kernel's locals: a loop that also writes the state arrays can then keep every
+/// parameter in registers (the compiler cannot assume a store to vx[i] leaves a
+/// ForceDef field unchanged, so through a reference it would reload them all).
+struct LocalForceLaw {
+    DragModel drag = DragModel::None;
+    double linearDrag = 0.0;
+    double halfRhoPi = 0.0;        ///< 1/2 rho_air pi
+    double windX = 0.0, windY = 0.0;
+    bool water = false;
+    double waterLevel = 0.0, waterDensity = 0.0, halfRhoWaterPi = 0.0;
+    double g = 0.0, upX = 0.0, upY = 1.0; ///< |gravity| and the unit vector against it
+
+    explicit LocalForceLaw(const ForceDef& d)
+        : drag(d.drag), linearDrag(d.linearDrag),
+          halfRhoPi(0.5 * d.airDensity * std::numbers::pi), windX(d.wind.x), windY(d.wind.y),
+          water(d.water), waterLevel(d.waterLevel), waterDensity(d.waterDensity),
+          halfRhoWaterPi(0.5 * d.waterDensity * std::numbers::pi), g(length(d.gravity)) {
+        if (g > 0.0) {
+            upX = -d.gravity.x / g;
+            upY = -d.gravity.y / g;
+        }
+    }
+
+    /// Drag relative to the wind, buoyancy and water drag on one particle. Newtons.
+    Vec2 force(std::uint32_t flags, double r, double cd, double y, double vx, double vy) const {
+        Vec2 f;
+        if (!(flags & kNoDrag)) {
+            const double ux = vx - windX, uy = vy - windY;
+            if (drag == DragModel::Linear) {
+                f.x -= linearDrag * ux;
+                f.y -= linearDrag * uy;
+            } else if (drag == DragModel::Quadratic) {
+                // F = -1/2 rho Cd A |u| u with u = v - wind, A = pi r^2.
+                const double k = halfRhoPi * cd * r * r * std::sqrt(ux * ux + uy * uy);
+                f.x -= k * ux;
+                f.y -= k * uy;
+            }
+        }
+        // Buoyancy (Archimedes: rho_w V_submerged |g|, against gravity) and water drag
+        // on the submerged fraction of each particle, which is treated as a sphere.
+        if (water && (flags & kAlive)) {
+            const double h = submergedDepth(y, r, waterLevel);
+            if (h > 0.0) {
+                const double lift = waterDensity * capVolume(h, r) * g;
+                f.x += lift * upX;
+                f.y += lift * upY;
+                const double k = halfRhoWaterPi * cd * r * r * (h / (2.0 * r)) *
+                                 std::sqrt(vx * vx + vy * vy);
+                f.x -= k * vx;
+                f.y -= k * vy;
+            }
+        }
+        return f;
+    }
+};
+
 /// The right-hand side of the equations of motion for a particle set: given a trial
 /// state, the acceleration of every slot. Fixed, dead and sleeping slots get 0.
 class Dynamics {
   public:
-    Dynamics(const ForceDef& def, const std::vector<Spring>& springs, const ParticleSet& set)
-        : def_(def), springs_(springs), set_(set) {}
+    Dynamics(const ForceDef& def, const std::vector<Spring>& springs, const ParticleSet& set);
 
     /// a = g + F/m for every slot, at state (px, py, vx, vy).
     void accelerations(const double* px, const double* py, const double* vx, const double* vy,
@@ -99,13 +169,33 @@ class Dynamics {
                           const double* vy, double* fx, double* fy) const;
 
     /// df = dF/dx . w + dF/dv . u (force Jacobian times a direction), for the implicit
-    /// solver. Springs and drag are differentiated exactly (the transverse spring term is
-    /// clamped at zero under compression, which keeps the system positive definite, as in
-    /// Baraff & Witkin 1998); point gravity and buoyancy are treated explicitly.
+    /// solver. Springs, drag, point gravity and buoyancy are differentiated exactly, except
+    /// that the transverse spring term is clamped at zero under compression, which keeps
+    /// the system positive definite (Baraff & Witkin 1998), and the water drag's
+    /// dependence on depth is left out.
     void forceJacobianProduct(const double* px, const double* py, const double* vx,
                               const double* vy, const double* wx, const double* wy,
                               const double* ux, const double* uy, double* dfx,
                               double* dfy) const;
+
+    /// Forces that act on particle i alone, at the given state: drag relative to the
+    /// wind, buoyancy and water drag. Newtons.
+    Vec2 localForce(std::size_t i, double x, double y, double vx, double vy) const;
+
+    /// True when every force is local (no springs, no point gravity), so a particle's
+    /// acceleration depends on its own state only and integrators may fuse force
+    /// evaluation into their update loop (one pass over memory instead of three).
+    bool onlyLocalForces() const { return springs_.empty() && !def_.pointGravity; }
+
+    /// a = g + F/m for an active particle, 0 otherwise. Gravity is added as an
+    /// acceleration, not as m g / m, so that under gravity alone the integrators see g
+    /// to the last bit (the closed form's g).
+    Vec2 accelerationFrom(std::size_t i, Vec2 force) const {
+        if (!active(i)) return {};
+        const double im = set_.invMass[i];
+        if (set_.flags[i] & kNoGravity) return {im * force.x, im * force.y};
+        return {def_.gravity.x + im * force.x, def_.gravity.y + im * force.y};
+    }
 
     /// True when the particle is moved by forces (alive, not fixed, not asleep).
     bool active(std::size_t i) const {
@@ -116,12 +206,18 @@ class Dynamics {
 
     const ForceDef& def() const { return def_; }
     const ParticleSet& set() const { return set_; }
+    const LocalForceLaw& localLaw() const { return local_; }
     const std::vector<Spring>& springs() const { return springs_; }
 
   private:
     const ForceDef& def_;
     const std::vector<Spring>& springs_;
     const ParticleSet& set_;
+    LocalForceLaw local_;
 };
+
+inline Vec2 Dynamics::localForce(std::size_t i, double, double y, double vx, double vy) const {
+    return local_.force(set_.flags[i], set_.radius[i], set_.dragCd[i], y, vx, vy);
+}
 
 } // namespace phys

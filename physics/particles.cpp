@@ -69,13 +69,13 @@ void ParticleSet::clear() {
 void ParticleSet::setPosition(ParticleId i, Vec2 p) {
     px[i] = p.x;
     py[i] = p.y;
-    flags[i] &= ~kHistoryFlags;
+    flags[i] &= ~(kHistoryFlags | kSleeping); // a moved particle must be simulated again
 }
 
 void ParticleSet::setVelocity(ParticleId i, Vec2 v) {
     vx[i] = v.x;
     vy[i] = v.y;
-    flags[i] &= ~kHistoryFlags;
+    flags[i] &= ~(kHistoryFlags | kSleeping); // a pushed particle wakes up
 }
 
 void ParticleSet::resetHistory() {

@@ -74,9 +74,10 @@ struct ParticleSet {
     Vec2 position(ParticleId i) const { return {px[i], py[i]}; }
     Vec2 velocity(ParticleId i) const { return {vx[i], vy[i]}; }
     double mass(ParticleId i) const { return invMass[i] > 0.0 ? 1.0 / invMass[i] : 0.0; }
+    /// Sets the position (and wakes the particle if it slept).
     void setPosition(ParticleId i, Vec2 p);
-    /// Sets the velocity and forgets integrator history that assumed the old one
-    /// (collisions, blasts and commands all change velocity through here).
+    /// Sets the velocity, wakes the particle, and forgets integrator history that
+    /// assumed the old one (blasts and commands change velocity through here).
     void setVelocity(ParticleId i, Vec2 v);
     /// Forgets the Verlet/leapfrog history of every particle (after a dt change).
     void resetHistory();

@@ -1,11 +1,17 @@
-// The world: particles, springs and the force model, advanced by World::step in fixed
-// ticks. The step reads top to bottom as its phases (DESIGN.md, "Data flow of one
-// tick"); each phase is timed into StepProfile.
+// The world: particles, springs, rods and cables, static shapes, materials and the force
+// model, advanced by World::step in fixed ticks. The step reads top to bottom as its
+// phases (DESIGN.md, "Data flow of one tick"): per sub-step integrate, collide, resolve,
+// constraints; per tick sleep and springs. Each phase is timed into StepProfile.
 #pragma once
 
+#include "physics/collision/collision_def.h"
+#include "physics/collision/constraints.h"
+#include "physics/collision/particle_collisions.h"
+#include "physics/collision/shapes.h"
 #include "physics/diagnostics.h"
 #include "physics/forces.h"
 #include "physics/integrators.h"
+#include "physics/materials.h"
 #include "physics/particles.h"
 
 #include <cstdint>
@@ -21,13 +27,17 @@ struct WorldDef {
     Integrator integrator = Integrator::VelocityVerlet;
     ForceDef forces;
     ImplicitDef implicit;
+    CollisionDef collision; ///< contact model, continuous detection, resting, sleep, constraints
 };
 
 /// Time spent in each phase of the last step, microseconds (profiling only: the clock is
 /// read around phases, never inside the simulation, so results do not depend on it).
 struct StepProfile {
-    double integrateUs = 0.0;
-    double springsUs = 0.0;
+    double integrateUs = 0.0;   ///< forces and integration
+    double collideUs = 0.0;     ///< broad phase, narrow phase, time of impact
+    double resolveUs = 0.0;     ///< impulses, friction, resting contact, penalty, sleep
+    double constraintsUs = 0.0; ///< rods and cables
+    double springsUs = 0.0;     ///< plastic flow and breaking
     double totalUs = 0.0;
 };
 
@@ -43,6 +53,9 @@ class World {
 
     ParticleSet particles;
     std::vector<Spring> springs;
+    std::vector<DistanceConstraint> constraints; ///< rods and cables
+    StaticShapes shapes;                         ///< terrain, walls, obstacles
+    MaterialTable materials;
 
     const WorldDef& def() const { return def_; }
     /// Applies new settings from the next tick on. A new dt or integrator invalidates
@@ -55,10 +68,20 @@ class World {
     std::uint64_t hash() const;
     /// Springs broken since the world was made.
     int brokenSprings() const { return brokenSprings_; }
+    /// Contacts resolved during the last tick (hits for the game, bounces for tests).
+    const std::vector<ContactEvent>& contacts() const { return collisions_.events(); }
+    const CollisionStats& collisionStats() const { return collisions_.stats(); }
+    /// Largest relative length error of a rod or cable after the last tick.
+    double constraintError() const { return constraintError_; }
 
   private:
     WorldDef def_;
+    void collideAndResolve(double h, double tickTime);
     IntegratorScratch scratch_;
+    ParticleCollisions collisions_;
+    ConstraintScratch constraintScratch_;
+    std::vector<std::uint8_t> tethered_;
+    double constraintError_ = 0.0;
     StepProfile profile_;
     std::uint64_t tick_ = 0;
     int brokenSprings_ = 0;

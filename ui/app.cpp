@@ -1,6 +1,7 @@
 #include "ui/app.h"
 
 #include "game/cli/verbs.h"
+#include "ui/play/play_verb.h"
 
 #include <iostream>
 #include <string>
@@ -11,7 +12,9 @@ namespace ui {
 namespace {
 
 std::vector<game::cli::Verb> allVerbs() {
-    std::vector<game::cli::Verb> all(game::cli::verbs().begin(), game::cli::verbs().end());
+    // play first: it is what a player runs; then the verbs that need no window.
+    std::vector<game::cli::Verb> all{playVerb()};
+    all.insert(all.end(), game::cli::verbs().begin(), game::cli::verbs().end());
     return all;
 }
 
@@ -31,10 +34,7 @@ void printOverview(std::ostream& out) {
 } // namespace
 
 int runApp(int argc, const char* const* argv) {
-    if (argc < 2) {
-        printOverview(std::cout);
-        return game::cli::kOk;
-    }
+    if (argc < 2) return runDefault(std::cout, printOverview);
     const std::string verb = argv[1];
     if (verb == "--help" || verb == "-h" || verb == "help") {
         printOverview(std::cout);

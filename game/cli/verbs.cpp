@@ -77,6 +77,42 @@ stable below 2, RK4 below 2.83, implicit Euler always.
 )",
      {},
      runSpring},
+    {"drop", "bounce apexes of a dropped ball against e^(2k) H",
+     R"(usage: artillery drop --height H (--cor E | --material NAME) [--bounces N]
+           [--integrator NAME] [--dt S] [--model particle|rigid] [--discrete]
+           [--gravity G | --planet NAME] [--json]
+
+Drops a ball from rest, its lowest point H above a rigid floor, and reports the apex
+of each bounce against e^(2k) H, the height the notes' measurement e = sqrt(h/H)
+predicts (notes 001). The bounce is resolved at the time of impact, so with an
+integrator exact under constant acceleration (velocity-verlet, midpoint, rk4,
+leapfrog) the apexes do not depend on dt; explicit and symplectic Euler show their
+own (first-order) error.
+
+  --height H      drop height of the ball's lowest point, m (> 0)
+  --cor E         coefficient of restitution ball-floor, 0..1 (a pair entry)
+  --material N    the ball's material; its restitution against the floor is:
+                  golf 0.858, tennis 0.712, billiard 0.804, hand-ball 0.752,
+                  wooden 0.603, steel-bearing 0.597, glass-marble 0.658,
+                  rubber-band-ball 0.828, hollow-hard-plastic 0.688,
+                  perfectly-elastic 1, perfectly-plastic 0, baseball 0.546,
+                  earth 0.3, default 0.5
+  --bounces N     apexes to report, 1..100 (default 3)
+  --integrator N  explicit-euler, symplectic-euler (euler-cromer), verlet,
+                  velocity-verlet (default), leapfrog, midpoint, rk4, implicit-euler
+  --dt S          time step, s (default 1/120)
+  --model M       particle (default); rigid is not yet available (exit 2)
+  --discrete      overlap testing with bisection in time instead of continuous
+                  (swept-sphere) detection
+  --gravity G     m/s^2 (default 9.81), or --planet NAME
+  --json          {"bounces":[{"apex_m":..,"expected_apex_m":..,"relative_error":..},
+                   ...],"restitution":e,"height_m":H,"integrator":..,"dt_s":..,
+                   "continuous":true|false,"came_to_rest":true|false}
+
+Exit codes: 0 ok, 2 bad input (including --model rigid for now).
+)",
+     {"discrete"},
+     runDrop},
     {"check", "validate level files",
      R"(usage: artillery check LEVEL.json... [--json]
 
@@ -91,6 +127,42 @@ Exit code: 0 when every file is valid, 1 when any is not, 2 on bad usage.
 )",
      {},
      runCheck},
+    {"run", "headless simulation of a level: replay or script in, events, hash, PNG frames out",
+     R"(usage: artillery run LEVEL.json [--replay FILE | --commands FILE] [--ticks N]
+           [--png DIR --every K] [--size WxH] [--no-hud] [--record FILE]
+           [--difficulty easy|normal|hard] [--json]
+
+Plays LEVEL with no window: the commands of a replay or of a commands script are
+applied at their ticks (the computer plays its own turns), and the run prints the
+events, the score and the final state hash.
+
+  --replay FILE      a recorded game (its level must be LEVEL, same content hash)
+  --commands FILE    a JSON list of {"tick": t, "cmd": ...} (see levels/README.md)
+  --ticks N          how many ticks to simulate (default: the replay's length, or until
+                     the match is over, at most 60 s after the last command)
+  --png DIR          write a PNG every K ticks (--every, default 60) into DIR, drawn
+                     headlessly with the window's drawing code (OSMesa, or EGL)
+  --size WxH         frame size (default 1280x720); --no-hud leaves the HUD out
+  --record FILE      save this run as a replay
+  --json             {"ticks":n,"final_hash":"hex","score":..,"shots":n,"over":b,
+                      "winner":i,"events":[...],"sim_ms":..,"render_ms":..}
+)",
+     {"no-hud"},
+     runRun},
+    {"replay", "replay verify FILE: re-simulate a replay and compare its checkpoints",
+     R"(usage: artillery replay verify FILE [--json]
+
+Re-simulates the recorded game from its level, seed and commands and compares the
+state hash at every checkpoint (every 120 ticks by default) and at the end.
+
+Exit code: 0 when every checkpoint matches, 1 at the first divergent tick (and what
+diverged: particles, bodies or game), 2 when the file or its level cannot be read or
+the level has changed since the recording.
+  --json   {"ok":bool,"ticks":n,"checkpoints":n,"first_divergent_tick":t|null,
+            "final_hash":"hex"}
+)",
+     {},
+     runReplayVerify},
 };
 
 } // namespace

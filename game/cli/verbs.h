@@ -5,7 +5,9 @@
 #include "game/cli/args.h"
 #include "physics/integrators.h"
 
+#include <functional>
 #include <iosfwd>
+#include <memory>
 #include <span>
 
 namespace game::cli {
@@ -30,6 +32,24 @@ phys::Integrator integratorOption(const Args& args, phys::Integrator fallback);
 int runSolve(const Args& args, std::ostream& out);
 int runTrajectory(const Args& args, std::ostream& out);
 int runSpring(const Args& args, std::ostream& out);
+int runDrop(const Args& args, std::ostream& out);
 int runCheck(const Args& args, std::ostream& out);
+int runReplayVerify(const Args& args, std::ostream& out);
+int runRun(const Args& args, std::ostream& out);
+
+} // namespace game::cli
+
+namespace game {
+class FrameSink;
+}
+
+namespace game::cli {
+
+/// Makes a frame sink that writes PNGs into a folder (ui/ provides it): (folder, width,
+/// height, draw the HUD, error out) -> sink or nullptr with the reason.
+using FrameSinkFactory = std::function<std::unique_ptr<FrameSink>(
+    const std::string& folder, int width, int height, bool hud, std::string& why)>;
+/// `artillery run` with an optional renderer for --png.
+int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory* sinks);
 
 } // namespace game::cli

@@ -1,0 +1,195 @@
+#include "game/ai.h"
+
+#include "physics/ballistics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace game {
+
+using namespace phys;
+
+const char* difficultyName(Difficulty d) {
+    switch (d) {
+    case Difficulty::Easy: return "easy";
+    case Difficulty::Normal: return "normal";
+    case Difficulty::Hard: return "hard";
+    }
+    return "?";
+}
+
+std::optional<Difficulty> difficultyFromName(const std::string& name) {
+    for (Difficulty d : {Difficulty::Easy, Difficulty::Normal, Difficulty::Hard})
+        if (name == difficultyName(d)) return d;
+    return std::nullopt;
+}
+
+AimError aimError(Difficulty d) {
+    switch (d) {
+    // At duel ranges (~250 m at 50-70 m/s) one degree moves the landing point by up to
+    // ~9 m and 1 % of speed by ~5 m, against a cannon 1.5 m wide plus half a blast.
+    case Difficulty::Easy: return {1.2, 0.025};
+    case Difficulty::Normal: return {0.5, 0.01};
+    case Difficulty::Hard: return {0.2, 0.004};
+    }
+    return {0.0, 0.0};
+}
+
+namespace {
+
+// Closest approach of a previewed path to the target, m.
+double miss(const std::vector<Vec2>& path, Vec2 target) {
+    double best = INFINITY;
+    for (std::size_t i = 1; i < path.size(); ++i) {
+        // Distance from the target to the segment between samples.
+        const Vec2 a = path[i - 1], b = path[i], ab = b - a;
+        const double t = std::clamp(dot(target - a, ab) / std::max(1e-12, lengthSquared(ab)), 0.0, 1.0);
+        best = std::min(best, length(a + ab * t - target));
+    }
+    return best;
+}
+
+} // namespace
+
+AimSolution aimAt(const Match& match, Vec2 target) {
+    const CannonState& c = match.cannon();
+    AimSolution out;
+    const double g = -match.world().def().forces.gravity.y;
+    if (match.ballisticOnly()) {
+        // Exact: the smallest speed step from the current power that reaches, low shot.
+        for (double s = std::max(5.0, c.speedMps); s <= c.def.maxSpeedMps + 1e-9; s += 2.5) {
+            // The muzzle moves with the angle; two fixed-point passes settle it.
+            double angle = c.angleDeg;
+            std::vector<FiringSolution> sol;
+            for (int pass = 0; pass < 3; ++pass) {
+                sol = solveFiring(match.muzzle(angle), target, s, g);
+                if (sol.empty()) break;
+                angle = sol.front().angleDeg;
+            }
+            if (!sol.empty()) {
+                out.angleDeg = angle;
+                out.speedMps = s;
+                out.missM = 0.0;
+                out.exact = true;
+                return out;
+            }
+        }
+    }
+    // Trial shots through the same simulation: a coarse sweep of elevations, then a
+    // golden-section search on the closest approach, at increasing power from what a
+    // vacuum shot would need until a path passes within half a metre.
+    const double dir = target.x >= c.def.position.x ? 1.0 : -1.0;
+    auto toAngle = [&](double elevation) { return dir > 0 ? elevation : 180.0 - elevation; };
+    auto trial = [&](double elevation, double speed) {
+        ++out.trials;
+        return miss(match.previewTrajectory(toAngle(elevation), speed, 20.0, target.x), target);
+    };
+    const Vec2 d = target - c.def.position;
+    const double vacuum = std::sqrt(std::max(0.0, g * (d.y + length(d)))); // least speed in vacuum
+    const double step = 0.1 * c.def.maxSpeedMps;
+    for (double s = std::min(c.def.maxSpeedMps, std::max(10.0, 1.15 * vacuum));;
+         s = std::min(c.def.maxSpeedMps, s + step)) {
+        double bestElev = 45.0, bestMiss = INFINITY;
+        for (double e = 10.0; e <= 80.0; e += 10.0) {
+            const double m = trial(e, s);
+            if (m < bestMiss) {
+                bestMiss = m;
+                bestElev = e;
+            }
+        }
+        // Golden section on [best - 10, best + 10]: one new trial per iteration.
+        const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
+        double lo = std::max(0.0, bestElev - 10.0), hi = std::min(89.0, bestElev + 10.0);
+        double x1 = hi - phi * (hi - lo), x2 = lo + phi * (hi - lo);
+        double m1 = trial(x1, s), m2 = trial(x2, s);
+        for (int it = 0; it < 16; ++it) {
+            if (m1 < m2) {
+                hi = x2;
+                x2 = x1;
+                m2 = m1;
+                x1 = hi - phi * (hi - lo);
+                m1 = trial(x1, s);
+            } else {
+                lo = x1;
+                x1 = x2;
+                m1 = m2;
+                x2 = lo + phi * (hi - lo);
+                m2 = trial(x2, s);
+            }
+        }
+        const double e = m1 < m2 ? x1 : x2, m = std::min(m1, m2);
+        if (m < bestMiss) {
+            bestMiss = m;
+            bestElev = e;
+        }
+        if (bestMiss < out.missM) {
+            out.missM = bestMiss;
+            out.angleDeg = toAngle(bestElev);
+            out.speedMps = s;
+        }
+        if (bestMiss < 0.5 || s >= c.def.maxSpeedMps) break;
+    }
+    return out;
+}
+
+std::optional<Vec2> chooseTarget(const Match& match) {
+    const Vec2 from = match.cannon().def.position;
+    std::optional<Vec2> best;
+    double bestD = INFINITY;
+    auto consider = [&](Vec2 p) {
+        const double d = length(p - from);
+        if (d < bestD) {
+            bestD = d;
+            best = p;
+        }
+    };
+    if (match.level().mode == Mode::Duel) {
+        for (std::size_t i = 0; i < match.cannons().size(); ++i)
+            if (static_cast<int>(i) != match.currentPlayer() && match.cannons()[i].hitPoints > 0)
+                consider(match.cannons()[i].def.position);
+    } else {
+        for (const auto& t : match.targets())
+            if (!t.hit) consider(t.position);
+        for (const auto& b : match.blocks())
+            if (b.def.target && !b.toppled) consider(b.def.position);
+    }
+    return best;
+}
+
+double ComputerPlayer::gaussian() {
+    // Box-Muller on the top 53 bits: the same numbers on every platform.
+    auto unit = [&] { return (static_cast<double>(rng_() >> 11) + 0.5) * 0x1.0p-53; };
+    const double u1 = unit(), u2 = unit();
+    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+}
+
+std::vector<Command> ComputerPlayer::takeTurn(const Match& match, std::uint64_t tick) {
+    std::vector<Command> out;
+    const auto target = chooseTarget(match);
+    if (!target) {
+        Command end;
+        end.tick = tick;
+        end.kind = CommandKind::EndTurn;
+        out.push_back(end);
+        return out;
+    }
+    const AimSolution aim = aimAt(match, *target);
+    const AimError err = aimError(difficulty_);
+    const CannonState& c = match.cannon();
+    Command a;
+    a.tick = tick;
+    a.kind = CommandKind::Aim;
+    a.number = std::clamp(aim.angleDeg + err.angleDeg * gaussian(), -180.0, 180.0);
+    Command p;
+    p.tick = tick;
+    p.kind = CommandKind::Power;
+    p.number = std::clamp(aim.speedMps * (1.0 + err.speedFraction * gaussian()), 0.0, c.def.maxSpeedMps);
+    Command f;
+    f.tick = tick;
+    f.kind = CommandKind::Fire;
+    out = {a, p, f};
+    return out;
+}
+
+} // namespace game

@@ -1,0 +1,60 @@
+// The computer player. It aims with the firing solution when that is exact (uniform
+// gravity only: no drag, no wind, no water), and otherwise by shooting trial shells
+// through the same simulation as the game (Match::previewTrajectory) and homing in on
+// the angle whose path passes closest to the target. Difficulty sets how much aiming
+// error it then adds, drawn from its own seeded generator, so a match with the computer
+// is as deterministic as any other.
+#pragma once
+
+#include "game/command.h"
+#include "game/match.h"
+
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace game {
+
+enum class Difficulty { Easy, Normal, Hard };
+const char* difficultyName(Difficulty d);
+std::optional<Difficulty> difficultyFromName(const std::string& name);
+
+/// Standard deviations of the error the computer adds: angle (degrees) and relative speed.
+struct AimError {
+    double angleDeg;
+    double speedFraction;
+};
+AimError aimError(Difficulty d);
+
+struct AimSolution {
+    double angleDeg = 45.0;
+    double speedMps = 30.0;
+    double missM = INFINITY; ///< closest approach of the chosen path to the target (0 = exact)
+    bool exact = false;      ///< from the closed-form firing solution
+    int trials = 0;          ///< trial shots simulated
+};
+
+/// Best aim from the current cannon at `target`, without error. Exact when the match is
+/// ballistic-only; otherwise trial shots.
+AimSolution aimAt(const Match& match, phys::Vec2 target);
+
+class ComputerPlayer {
+  public:
+    explicit ComputerPlayer(Difficulty d, std::uint64_t seed) : difficulty_(d), rng_(seed) {}
+    /// Commands for the current turn (aim, power, fire), stamped at `tick`.
+    std::vector<Command> takeTurn(const Match& match, std::uint64_t tick);
+    Difficulty difficulty() const { return difficulty_; }
+
+  private:
+    double gaussian();
+    Difficulty difficulty_;
+    std::mt19937_64 rng_;
+};
+
+/// Where the computer aims: the nearest enemy cannon in a duel, else the nearest target
+/// still standing.
+std::optional<phys::Vec2> chooseTarget(const Match& match);
+
+} // namespace game

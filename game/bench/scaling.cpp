@@ -1,0 +1,193 @@
+#include "game/bench/scaling.h"
+
+#include "physics/world.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <random>
+
+namespace game::bench {
+
+using namespace phys;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double seconds(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+std::unique_ptr<World> flightWorld(long n) {
+    WorldDef d;
+    d.integrator = Integrator::SymplecticEuler;
+    d.forces.drag = DragModel::Quadratic;
+    d.forces.wind = {3.0, 0.0};
+    d.collision.model = ContactModel::None;
+    auto w = std::make_unique<World>(d);
+    w->particles.reserve(static_cast<std::size_t>(n));
+    std::mt19937_64 rng(12345);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (long i = 0; i < n; ++i) {
+        ParticleDef pd;
+        pd.position = {1000.0 * u(rng), 1000.0 + 500.0 * u(rng)};
+        pd.velocity = {50.0 * u(rng), 50.0 * u(rng)};
+        pd.mass = 1.0;
+        pd.radius = 0.05;
+        w->particles.add(pd);
+    }
+    return w;
+}
+
+std::unique_ptr<World> clothWorld(int side, int substeps) {
+    WorldDef d;
+    d.integrator = Integrator::SymplecticEuler;
+    d.tickSeconds = 1.0 / 60.0;
+    d.substeps = substeps;
+    d.collision.model = ContactModel::None;
+    auto w = std::make_unique<World>(d);
+    const double h = 0.05;
+    w->particles.reserve(static_cast<std::size_t>(side) * side);
+    for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i) {
+            ParticleDef pd;
+            pd.position = {i * h, -j * h};
+            pd.mass = (j == 0) ? 0.0 : 0.01; // top row pinned
+            pd.radius = 0.01;
+            w->particles.add(pd);
+        }
+    auto link = [&](int a, int b, double len) {
+        Spring s;
+        s.a = static_cast<ParticleId>(a);
+        s.b = static_cast<ParticleId>(b);
+        s.restLength = len;
+        s.stiffness = 200.0;
+        s.damping = 0.02;
+        w->springs.push_back(s);
+    };
+    for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i) {
+            const int k = j * side + i;
+            if (i + 1 < side) link(k, k + 1, h);
+            if (j + 1 < side) link(k, k + side, h);
+            if (i + 1 < side && j + 1 < side) link(k, k + side + 1, h * std::sqrt(2.0));
+            if (i > 0 && j + 1 < side) link(k, k + side - 1, h * std::sqrt(2.0));
+        }
+    return w;
+}
+
+} // namespace
+
+double flightWorkload(long n, int steps) {
+    auto w = flightWorld(n);
+    w->step();
+    w->step();
+    const auto t0 = Clock::now();
+    for (int i = 0; i < steps; ++i) w->step();
+    return seconds(t0);
+}
+
+double clothWorkload(long n, int steps) {
+    const int side = std::max(2, static_cast<int>(std::lround(std::sqrt(static_cast<double>(n)))));
+    auto w = clothWorld(side, 8);
+    w->step();
+    const auto t0 = Clock::now();
+    for (int i = 0; i < steps; ++i) w->step();
+    return seconds(t0);
+}
+
+std::vector<ScalingPoint> measureScaling(const std::string& name, const Workload& work,
+                                         const ScalingDef& def,
+                                         const std::function<void(int, int)>& progress) {
+    std::vector<ScalingPoint> out;
+    int done = 0;
+    for (long n : def.sizes) {
+        std::vector<double> t;
+        for (int r = 0; r < std::max(1, def.repeats); ++r) t.push_back(work(n, def.steps));
+        const double us = 1e6 * median(t) / def.steps;
+        out.push_back({name, n, us, 1e3 * us / static_cast<double>(n)});
+        if (progress) progress(++done, static_cast<int>(def.sizes.size()));
+    }
+    return out;
+}
+
+double scalingExponent(const std::vector<ScalingPoint>& points) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int n = 0;
+    for (const auto& p : points) {
+        if (p.items <= 0 || p.usPerStep <= 0) continue;
+        const double x = std::log(static_cast<double>(p.items)), y = std::log(p.usPerStep);
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+        ++n;
+    }
+    return n < 2 ? NAN : (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+BandwidthResult measureBandwidth(long n, int steps, int repeats) {
+    BandwidthResult r;
+    r.n = n;
+    auto w = flightWorld(n);
+    w->step();
+    std::vector<double> pt, st;
+    for (int k = 0; k < repeats; ++k) {
+        const auto t0 = Clock::now();
+        for (int i = 0; i < steps; ++i) w->step();
+        pt.push_back(seconds(t0) / steps);
+    }
+    // The streaming kernel: the same arrays, read and written once per step, with the
+    // least arithmetic that uses every byte (what a perfect fused update would move).
+    ParticleSet& s = w->particles;
+    const double dt = 1.0 / 120.0;
+    for (int k = 0; k < repeats; ++k) {
+        const auto t0 = Clock::now();
+        for (int step = 0; step < steps; ++step) {
+            const std::size_t m = s.slots();
+            for (std::size_t i = 0; i < m; ++i) {
+                const double c = s.flags[i] ? s.invMass[i] * s.radius[i] * s.dragCd[i] : 0.0;
+                s.vx[i] -= dt * c * s.vx[i];
+                s.vy[i] -= dt * c * s.vy[i];
+                s.px[i] += dt * s.vx[i];
+                s.py[i] += dt * s.vy[i];
+            }
+        }
+        st.push_back(seconds(t0) / steps);
+    }
+    r.particleMs = 1e3 * median(pt);
+    r.streamMs = 1e3 * median(st);
+    return r;
+}
+
+double clothFrameMs(int side, int frames) {
+    auto w = clothWorld(side, 8);
+    w->step();
+    std::vector<double> t;
+    for (int f = 0; f < frames; ++f) {
+        const auto t0 = Clock::now();
+        w->step();
+        t.push_back(seconds(t0));
+    }
+    return 1e3 * median(t);
+}
+
+std::string toCsv(const std::vector<ScalingPoint>& points) {
+    std::string out = "workload,items,us_per_step,ns_per_item\n";
+    char line[160];
+    for (const auto& p : points) {
+        std::snprintf(line, sizeof line, "%s,%ld,%.4g,%.4g\n", p.workload.c_str(), p.items,
+                      p.usPerStep, p.nsPerItem);
+        out += line;
+    }
+    return out;
+}
+
+} // namespace game::bench

@@ -1,0 +1,57 @@
+// How step cost grows with the scene: particles in flight, springs in cloth (and, from
+// the collision and rigid layers, piles with contacts and Box2D bodies), plus the
+// particle update against a plain streaming kernel over the same bytes, the
+// memory-bandwidth limit.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace game::bench {
+
+struct ScalingPoint {
+    std::string workload;  ///< "flight", "cloth", ...
+    long items = 0;        ///< particles (or bodies)
+    double usPerStep = 0;  ///< median wall time of one world step, microseconds
+    double nsPerItem = 0;  ///< usPerStep / items, nanoseconds
+};
+
+struct ScalingDef {
+    std::vector<long> sizes{1000, 3000, 10000, 30000, 100000};
+    int steps = 20;   ///< timed steps per size (after 2 warm-up steps)
+    int repeats = 3;  ///< median of repeats
+};
+
+/// A workload: builds a world of about n items and steps it.
+using Workload = std::function<double(long n, int steps)>; // returns seconds for `steps` steps
+
+/// Times `work` at every size of def.
+std::vector<ScalingPoint> measureScaling(const std::string& name, const Workload& work,
+                                         const ScalingDef& def,
+                                         const std::function<void(int, int)>& progress = {});
+
+/// Particles in flight under gravity and quadratic drag, symplectic Euler.
+double flightWorkload(long n, int steps);
+/// A square cloth of about n particles with structural and shear springs, 8 sub-steps.
+double clothWorkload(long n, int steps);
+
+/// Least-squares slope of log(cost) against log(n): 1 is linear scaling.
+double scalingExponent(const std::vector<ScalingPoint>& points);
+
+/// The particle update (gravity + quadratic drag, symplectic Euler) against a kernel
+/// that streams the same arrays, on n particles; times are per step, medians.
+struct BandwidthResult {
+    long n = 0;
+    double particleMs = 0, streamMs = 0;
+    double ratio() const { return streamMs > 0 ? particleMs / streamMs : 0; }
+};
+BandwidthResult measureBandwidth(long n, int steps = 10, int repeats = 5);
+
+/// Cloth of 64 x 64 with structural and shear springs, 8 sub-steps per 1/60 s frame:
+/// milliseconds per frame (median).
+double clothFrameMs(int side = 64, int frames = 30);
+
+std::string toCsv(const std::vector<ScalingPoint>& points);
+
+} // namespace game::bench

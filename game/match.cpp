@@ -1,0 +1,607 @@
+#include "game/match.h"
+
+#include "physics/ballistics.h"
+#include "physics/projectiles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace game {
+
+using namespace phys;
+
+const char* eventName(EventKind k) {
+    switch (k) {
+    case EventKind::Fired: return "fired";
+    case EventKind::Bounce: return "bounce";
+    case EventKind::Burst: return "burst";
+    case EventKind::Crater: return "crater";
+    case EventKind::TargetHit: return "target_hit";
+    case EventKind::Toppled: return "toppled";
+    case EventKind::CannonHit: return "cannon_hit";
+    case EventKind::ShotOver: return "shot_over";
+    case EventKind::TurnOver: return "turn_over";
+    case EventKind::MatchOver: return "match_over";
+    case EventKind::SettingChanged: return "setting_changed";
+    case EventKind::Refused: return "refused";
+    }
+    return "?";
+}
+
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+constexpr double kBarrelLength = 1.5;   // m, muzzle distance from the cannon's pivot
+constexpr int kTargetBlockPoints = 100; // knocking a target block off its place
+constexpr int kTargetBlobPoints = 150;
+constexpr int kShotBonus = 50;          // per shot left when every target is down
+
+/// Rigid materials for blocks by name (friction, restitution); density comes from the level.
+RigidMaterial blockMaterial(const Block& b) {
+    RigidMaterial m;
+    m.density = b.density;
+    if (b.material == "stone") {
+        m.friction = 0.7;
+        m.restitution = 0.1;
+    } else if (b.material == "steel") {
+        m.friction = 0.4;
+        m.restitution = 0.5;
+    } else { // wood
+        m.friction = 0.6;
+        m.restitution = 0.3;
+    }
+    return m;
+}
+
+WorldDef worldDefFor(const LevelPhysics& p) {
+    WorldDef d;
+    d.forces.gravity = {0.0, -p.gravity};
+    d.forces.drag = p.drag ? DragModel::Quadratic : DragModel::None;
+    d.forces.airDensity = p.airDensity;
+    d.forces.water = p.water;
+    d.forces.waterLevel = p.waterLevel;
+    return d;
+}
+
+/// A uniform draw in [0, 1) from the top 53 bits: the same on every platform (the
+/// standard distributions are not specified bit for bit).
+double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+} // namespace
+
+Match::Match(const Level& level)
+    : level_(level), world_(worldDefFor(level.physics)), terrain_(level.terrain.points),
+      rng_(level.seed) {
+    RigidWorldDef rd;
+    rd.gravity = world_.def().forces.gravity;
+    rigid_ = std::make_unique<RigidWorld>(rd);
+    buildWorld();
+    WorldDef d = world_.def();
+    d.forces.wind = {drawWind(), 0.0};
+    world_.setDef(d);
+}
+
+double Match::drawWind() {
+    const double lo = level_.physics.windMin, hi = level_.physics.windMax;
+    return lo + (hi - lo) * unit(rng_);
+}
+
+void Match::rebuildStaticShapes() {
+    world_.shapes.clear();
+    const MaterialId ground = world_.materials.find(level_.terrain.material).value_or(material::kEarth);
+    world_.shapes.addPolyline(terrain_.points(), ground);
+    for (const Obstacle& o : level_.obstacles) {
+        const MaterialId m = world_.materials.find(o.material).value_or(material::kFloor);
+        switch (o.shape) {
+        case Obstacle::Shape::Polyline: world_.shapes.addPolyline(o.points, m); break;
+        case Obstacle::Shape::Polygon: world_.shapes.addPolygon(o.points, m); break;
+        case Obstacle::Shape::Circle: world_.shapes.addCircle(o.center, o.radius, m); break;
+        }
+    }
+    // The rigid layer needs the same ground for blocks to stand on.
+    if (rigidTerrain_.valid()) rigid_->destroyBody(rigidTerrain_);
+    rigidTerrain_ = rigid_->createTerrain(terrain_.points(), RigidMaterial{0.0, 0.8, 0.0});
+}
+
+void Match::buildWorld() {
+    rebuildStaticShapes();
+    for (const Obstacle& o : level_.obstacles) {
+        BodyDef bd;
+        bd.type = BodyType::Static;
+        const RigidMaterial m{0.0, 0.5, 0.3};
+        switch (o.shape) {
+        case Obstacle::Shape::Polyline: rigid_->createTerrain(o.points, m); break;
+        case Obstacle::Shape::Polygon: rigid_->createPolygon(bd, o.points, m); break;
+        case Obstacle::Shape::Circle:
+            bd.position = o.center;
+            rigid_->createCircle(bd, o.radius, m);
+            break;
+        }
+    }
+    for (const Block& b : level_.blocks) {
+        BodyDef bd;
+        bd.position = b.position;
+        bd.angle = b.angleDeg * kDegToRad;
+        const BodyId id = rigid_->createBox(bd, b.size * 0.5, blockMaterial(b));
+        blocks_.push_back({b, id, false});
+    }
+    for (const Rope& r : level_.ropes) {
+        // Points on a parabola whose arc is about (1 + sag) times the span; rods keep
+        // each link at its share of that length.
+        const Vec2 span = r.to - r.from;
+        const double spanLength = length(span);
+        const double depth = spanLength * std::sqrt(3.0 * r.sag / 8.0);
+        const double link = (1.0 + r.sag) * spanLength / r.segments;
+        ParticleId prev = kNoParticle;
+        for (int i = 0; i <= r.segments; ++i) {
+            const double s = static_cast<double>(i) / r.segments;
+            ParticleDef pd;
+            pd.position = r.from + span * s + Vec2{0.0, -4.0 * depth * s * (1.0 - s)};
+            const bool pinned = (i == 0 && r.pinFrom) || (i == r.segments && r.pinTo);
+            pd.mass = pinned ? 0.0 : r.massPerSegment;
+            pd.radius = std::min(0.15, 0.3 * link);
+            pd.material = material::kWooden;
+            const ParticleId id = world_.particles.add(pd);
+            if (prev != kNoParticle) {
+                DistanceConstraint c;
+                c.a = id;
+                c.b = prev;
+                c.length = link;
+                world_.constraints.push_back(c);
+            }
+            prev = id;
+        }
+    }
+    for (const Blob& b : level_.blobs) {
+        const double m = b.mass / (b.points + 1);
+        ParticleDef pd;
+        pd.position = b.center;
+        pd.mass = m;
+        pd.radius = 0.25 * b.radius;
+        pd.material = material::kTennis;
+        const ParticleId center = world_.particles.add(pd);
+        std::vector<ParticleId> ring;
+        for (int i = 0; i < b.points; ++i) {
+            const double a = 2.0 * std::numbers::pi * i / b.points;
+            pd.position = b.center + Vec2{std::cos(a), std::sin(a)} * b.radius;
+            pd.radius = std::min(0.2, std::numbers::pi * b.radius / b.points);
+            ring.push_back(world_.particles.add(pd));
+        }
+        auto spring = [&](ParticleId x, ParticleId y) {
+            Spring s;
+            s.a = x;
+            s.b = y;
+            s.restLength = length(world_.particles.position(x) - world_.particles.position(y));
+            s.stiffness = b.stiffness;
+            s.damping = 0.05 * std::sqrt(b.stiffness * m);
+            world_.springs.push_back(s);
+        };
+        for (int i = 0; i < b.points; ++i) {
+            spring(ring[static_cast<std::size_t>(i)], ring[static_cast<std::size_t>((i + 1) % b.points)]);
+            spring(ring[static_cast<std::size_t>(i)], center);
+        }
+        blobs_.push_back({b, center, false});
+    }
+    for (const Cannon& c : level_.cannons) {
+        CannonState s;
+        s.def = c;
+        s.angleDeg = c.angleDeg;
+        s.speedMps = c.speedMps;
+        s.hitPoints = kCannonHitPoints;
+        s.shotsLeft = level_.shots;
+        cannons_.push_back(s);
+    }
+    for (const Target& t : level_.targets) targets_.push_back({t, t.position, false});
+}
+
+void Match::emit(EventKind kind, int player, Vec2 where, double value, std::string text) {
+    events_.push_back({tick(), kind, player, where, value, std::move(text)});
+}
+
+std::optional<ParticleId> Match::shell() const {
+    if (shell_ == kNoParticle) return std::nullopt;
+    return shell_;
+}
+
+bool Match::ballisticOnly() const {
+    const ForceDef& f = world_.def().forces;
+    const bool drag = f.drag != DragModel::None && (f.airDensity > 0.0 || f.drag == DragModel::Linear);
+    return !drag && f.wind.x == 0.0 && f.wind.y == 0.0 && !f.water;
+}
+
+Vec2 Match::muzzle(double angleDeg) const {
+    const double a = angleDeg * kDegToRad;
+    return cannon().def.position + Vec2{std::cos(a), std::sin(a)} * kBarrelLength;
+}
+
+Ammo Match::selectedAmmo() const {
+    const CannonState& c = cannon();
+    return ammoFromName(c.def.projectiles[c.projectile]).value_or(Ammo{});
+}
+
+std::string Match::apply(const Command& cmd) {
+    auto refuse = [&](std::string why) {
+        emit(EventKind::Refused, current_, {}, 0.0, std::string(commandName(cmd.kind)) + ": " + why);
+        return why;
+    };
+    CannonState& c = cannons_[static_cast<std::size_t>(current_)];
+    switch (cmd.kind) {
+    case CommandKind::Aim:
+        if (!(cmd.number >= -180.0 && cmd.number <= 180.0))
+            return refuse("angle must be in [-180, 180] degrees");
+        c.angleDeg = cmd.number;
+        return "";
+    case CommandKind::Power:
+        if (!(cmd.number >= 0.0 && cmd.number <= c.def.maxSpeedMps))
+            return refuse("muzzle speed must be in [0, " + std::to_string(c.def.maxSpeedMps) +
+                          "] m/s for this cannon");
+        c.speedMps = cmd.number;
+        return "";
+    case CommandKind::Select: {
+        const auto& list = c.def.projectiles;
+        const auto it = std::find(list.begin(), list.end(), cmd.text);
+        if (it == list.end()) {
+            std::string names;
+            for (const auto& n : list) names += (names.empty() ? "" : ", ") + n;
+            return refuse("this cannon fires " + names + ", not \"" + cmd.text + "\"");
+        }
+        c.projectile = static_cast<std::size_t>(it - list.begin());
+        return "";
+    }
+    case CommandKind::Fire:
+        if (over_) return refuse("the match is over");
+        if (shell_ != kNoParticle) return refuse("a shell is still in flight");
+        if (c.shotsLeft <= 0) return refuse("no shots left");
+        fire();
+        return "";
+    case CommandKind::EndTurn:
+        if (over_) return refuse("the match is over");
+        if (shell_ != kNoParticle) return refuse("wait until the shell lands");
+        nextTurn();
+        return "";
+    case CommandKind::Set: {
+        WorldDef d = world_.def();
+        if (std::string why = applySetting(d, cmd.text, cmd.value); !why.empty()) return refuse(why);
+        world_.setDef(d);
+        RigidWorldDef rd = rigid_->def();
+        rd.gravity = d.forces.gravity;
+        rigid_->setDef(rd);
+        emit(EventKind::SettingChanged, current_, {}, 0.0, cmd.text + " = " + describe(cmd.value));
+        return "";
+    }
+    }
+    return refuse("unknown command");
+}
+
+void Match::fire() {
+    CannonState& c = cannons_[static_cast<std::size_t>(current_)];
+    shellAmmo_ = selectedAmmo();
+    const double a = c.angleDeg * kDegToRad;
+    const Vec2 v{c.speedMps * std::cos(a), c.speedMps * std::sin(a)};
+    ParticleDef pd = particleDef(shellAmmo_.preset, muzzle(c.angleDeg), v);
+    pd.flags |= kProjectile;
+    shell_ = world_.particles.add(pd);
+    shellFiredTick_ = tick();
+    closestMiss_ = INFINITY;
+    --c.shotsLeft;
+    ++shotsFired_;
+    emit(EventKind::Fired, current_, pd.position, c.speedMps, shellAmmo_.preset.name);
+}
+
+void Match::burst(Vec2 at) {
+    emit(EventKind::Burst, current_, at, shellAmmo_.blastRadius);
+    const Blast blast{at, shellAmmo_.blastImpulse, shellAmmo_.blastRadius};
+    world_.particles.remove(shell_); // the shell itself is gone
+    applyBlast(world_.particles, blast);
+    rigid_->applyBlast(blast);
+    if (level_.terrain.destructible && shellAmmo_.craterRadius > 0.0 &&
+        terrain_.carve(at, shellAmmo_.craterRadius)) {
+        rebuildStaticShapes();
+        emit(EventKind::Crater, current_, at, shellAmmo_.craterRadius);
+    }
+    // Duel: a burst next to a cannon hits it.
+    if (level_.mode == Mode::Duel)
+        for (std::size_t i = 0; i < cannons_.size(); ++i) {
+            CannonState& k = cannons_[i];
+            if (static_cast<int>(i) == current_ || k.hitPoints <= 0) continue;
+            if (length(k.def.position - at) <= kCannonRadius + shellAmmo_.blastRadius * 0.5) {
+                --k.hitPoints;
+                emit(EventKind::CannonHit, static_cast<int>(i), at, k.hitPoints);
+            }
+        }
+}
+
+void Match::scorePasses(bool shotEnding) {
+    CannonState& shooter = cannons_[static_cast<std::size_t>(current_)];
+    const Vec2 p = world_.particles.alive(shell_) ? world_.particles.position(shell_) : Vec2{};
+    for (TargetState& t : targets_) {
+        if (t.hit || !std::isfinite(t.closestInside)) continue;
+        const bool receding = !shotEnding && length(p - t.position) > t.closestInside;
+        if (!receding && !shotEnding) continue;
+        t.hit = true;
+        const double r = shellAmmo_.preset.diameter * 0.5;
+        const double closeness = 1.0 - t.closestInside / (t.def.radius + r);
+        const int points = static_cast<int>(std::lround(t.def.points * (0.5 + 0.5 * closeness)));
+        shooter.score += points;
+        emit(EventKind::TargetHit, current_, t.position, points);
+    }
+}
+
+void Match::endShot(double closestMiss) {
+    scorePasses(true);
+    if (world_.particles.alive(shell_)) world_.particles.remove(shell_);
+    shell_ = kNoParticle;
+    emit(EventKind::ShotOver, current_, {}, std::isfinite(closestMiss) ? closestMiss : -1.0);
+    bool allDown = true;
+    for (const auto& t : targets_) allDown = allDown && t.hit;
+    for (const auto& b : blocks_) allDown = allDown && (!b.def.target || b.toppled);
+    for (const auto& b : blobs_) allDown = allDown && (!b.def.target || b.toppled);
+    if (level_.mode == Mode::Duel) {
+        int alive = 0, shots = 0;
+        for (const auto& k : cannons_) {
+            alive += k.hitPoints > 0;
+            shots += k.shotsLeft;
+        }
+        if (alive <= 1 || shots == 0) return finish();
+    } else if (level_.mode == Mode::Practice) {
+        if (allDown || cannon().shotsLeft == 0) return finish();
+    }
+    nextTurn();
+}
+
+void Match::nextTurn() {
+    if (level_.mode == Mode::Duel) {
+        for (std::size_t step = 1; step <= cannons_.size(); ++step) {
+            const int next = static_cast<int>((static_cast<std::size_t>(current_) + step) % cannons_.size());
+            if (cannons_[static_cast<std::size_t>(next)].hitPoints > 0) {
+                current_ = next;
+                break;
+            }
+        }
+    }
+    WorldDef d = world_.def();
+    d.forces.wind = {drawWind(), 0.0};
+    world_.setDef(d);
+    emit(EventKind::TurnOver, current_, {}, d.forces.wind.x);
+}
+
+void Match::finish() {
+    over_ = true;
+    if (level_.mode == Mode::Duel) {
+        int best = -1, bestHp = -1;
+        bool tie = false;
+        for (std::size_t i = 0; i < cannons_.size(); ++i) {
+            const int hp = cannons_[i].hitPoints;
+            if (hp > bestHp) {
+                best = static_cast<int>(i);
+                bestHp = hp;
+                tie = false;
+            } else if (hp == bestHp) {
+                tie = true;
+            }
+        }
+        winner_ = tie ? -1 : best;
+    } else {
+        bool allDown = true;
+        for (const auto& t : targets_) allDown = allDown && t.hit;
+        for (const auto& b : blocks_) allDown = allDown && (!b.def.target || b.toppled);
+        for (const auto& b : blobs_) allDown = allDown && (!b.def.target || b.toppled);
+        if (allDown) cannons_[0].score += kShotBonus * cannons_[0].shotsLeft;
+        winner_ = allDown ? 0 : -1;
+    }
+    emit(EventKind::MatchOver, winner_, {}, score());
+}
+
+void Match::updateTargets() {
+    const double t = time();
+    for (TargetState& s : targets_) {
+        const auto& path = s.def.path;
+        if (path.size() < 2) continue;
+        // Back and forth along the path at constant speed: position by arc length.
+        double total = 0.0;
+        for (std::size_t i = 1; i < path.size(); ++i) total += length(path[i] - path[i - 1]);
+        if (total <= 0.0) continue;
+        double d = std::fmod(s.def.speedMps * t, 2.0 * total);
+        if (d > total) d = 2.0 * total - d;
+        for (std::size_t i = 1; i < path.size(); ++i) {
+            const double seg = length(path[i] - path[i - 1]);
+            if (d <= seg || i + 1 == path.size()) {
+                s.position = path[i - 1] + (path[i] - path[i - 1]) * (seg > 0.0 ? std::min(1.0, d / seg) : 0.0);
+                break;
+            }
+            d -= seg;
+        }
+    }
+}
+
+void Match::step() {
+    world_.step();
+    coupling_.exchange(world_.particles, world_.materials, *rigid_);
+    rigid_->step(world_.def().tickSeconds);
+    updateTargets();
+
+    CannonState& shooter = cannons_[static_cast<std::size_t>(current_)];
+    // Structures knocked off their place score for whoever fired last.
+    for (BlockState& b : blocks_) {
+        if (!b.def.target || b.toppled || !rigid_->alive(b.body)) continue;
+        const RigidBodyState s = rigid_->state(b.body);
+        const double moved = length(s.position - b.def.position);
+        const double tilt = std::abs(std::remainder(s.angle - b.def.angleDeg * kDegToRad, 2.0 * std::numbers::pi));
+        if (moved > std::max(b.def.size.x, b.def.size.y) || tilt > 0.25 * std::numbers::pi) {
+            b.toppled = true;
+            shooter.score += kTargetBlockPoints;
+            emit(EventKind::Toppled, current_, s.position, kTargetBlockPoints);
+        }
+    }
+    for (BlobState& b : blobs_) {
+        if (!b.def.target || b.toppled) continue;
+        const Vec2 p = world_.particles.position(b.center);
+        if (length(p - b.def.center) > b.def.radius) {
+            b.toppled = true;
+            shooter.score += kTargetBlobPoints;
+            emit(EventKind::Toppled, current_, p, kTargetBlobPoints);
+        }
+    }
+
+    if (shell_ == kNoParticle) {
+        if (!over_ && level_.mode == Mode::Practice) {
+            bool allDown = true;
+            for (const auto& t : targets_) allDown = allDown && t.hit;
+            for (const auto& b : blocks_) allDown = allDown && (!b.def.target || b.toppled);
+            for (const auto& b : blobs_) allDown = allDown && (!b.def.target || b.toppled);
+            if (allDown && shotsFired_ > 0) finish();
+        }
+        return;
+    }
+
+    const Vec2 p = world_.particles.position(shell_);
+    const double r = world_.particles.radius[shell_];
+    // Targets: a hit scores by how close to the centre the shell passes, judged at the
+    // closest point of its pass (the first tick inside is usually near the rim).
+    for (TargetState& t : targets_) {
+        if (t.hit) continue;
+        const double d = length(p - t.position);
+        closestMiss_ = std::min(closestMiss_, std::max(0.0, d - t.def.radius));
+        if (d <= t.def.radius + r && d <= t.closestInside) t.closestInside = d;
+    }
+    scorePasses(false);
+    // Duel: passing through an enemy cannon hits it and ends the shot.
+    if (level_.mode == Mode::Duel)
+        for (std::size_t i = 0; i < cannons_.size(); ++i) {
+            CannonState& k = cannons_[i];
+            if (static_cast<int>(i) == current_ || k.hitPoints <= 0) continue;
+            const double d = length(p - k.def.position);
+            closestMiss_ = std::min(closestMiss_, std::max(0.0, d - kCannonRadius));
+            if (d <= kCannonRadius + r) {
+                --k.hitPoints;
+                emit(EventKind::CannonHit, static_cast<int>(i), p, k.hitPoints);
+                if (shellAmmo_.blastRadius > 0.0) {
+                    // The burst at the cannon must not hit it a second time.
+                    const int hp = k.hitPoints;
+                    burst(p);
+                    k.hitPoints = hp;
+                } else {
+                    world_.particles.remove(shell_);
+                }
+                return endShot(0.0);
+            }
+        }
+    // Impacts: a shell bursts on its first; a ball bounces.
+    bool touched = false;
+    for (const ContactEvent& e : world_.contacts())
+        if (e.a == shell_ || e.b == shell_) {
+            touched = true;
+            if (shellAmmo_.blastRadius <= 0.0 && e.closingSpeed > 1.0)
+                emit(EventKind::Bounce, current_, e.position, e.closingSpeed);
+        }
+    // A body it struck has already taken the shell's impulse (the coupling ran first).
+    for (const BodyContactEvent& e : coupling_.events())
+        if (e.particle == shell_) {
+            touched = true;
+            if (shellAmmo_.blastRadius <= 0.0 && e.closingSpeed > 1.0)
+                emit(EventKind::Bounce, current_, e.point, e.closingSpeed);
+        }
+    if (touched && shellAmmo_.blastRadius > 0.0) {
+        burst(p);
+        return endShot(closestMiss_);
+    }
+    const double flight = static_cast<double>(tick() - shellFiredTick_) * world_.def().tickSeconds;
+    const bool outside = p.x < level_.worldMin.x || p.x > level_.worldMax.x || p.y < level_.worldMin.y;
+    const bool resting = (world_.particles.flags[shell_] & kSleeping) ||
+                         (flight > 1.0 && length(world_.particles.velocity(shell_)) < 0.05);
+    if (outside || resting || flight > kMaxFlightSeconds || !std::isfinite(p.x) || !std::isfinite(p.y))
+        endShot(closestMiss_);
+}
+
+int Match::score() const {
+    int s = 0;
+    for (const auto& c : cannons_) s += c.score;
+    return s;
+}
+
+int Match::maxScore() const {
+    int s = 0, things = 0;
+    for (const auto& t : targets_) {
+        s += t.def.points;
+        ++things;
+    }
+    for (const auto& b : blocks_)
+        if (b.def.target) {
+            s += kTargetBlockPoints;
+            ++things;
+        }
+    for (const auto& b : blobs_)
+        if (b.def.target) {
+            s += kTargetBlobPoints;
+            ++things;
+        }
+    return s + kShotBonus * std::max(0, level_.shots - things);
+}
+
+int Match::stars() const {
+    if (level_.mode != Mode::Practice || winner_ != 0) return 0;
+    const double f = static_cast<double>(score()) / std::max(1, maxScore());
+    return f >= 0.85 ? 3 : f >= 0.6 ? 2 : 1;
+}
+
+std::uint64_t Match::gameHash() const {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (const auto& c : cannons_) {
+        const double v[2] = {c.angleDeg, c.speedMps};
+        const int k[4] = {static_cast<int>(c.projectile), c.hitPoints, c.shotsLeft, c.score};
+        h = hashBytes(h, v, sizeof v);
+        h = hashBytes(h, k, sizeof k);
+    }
+    for (const auto& t : targets_) h = hashBytes(h, &t.hit, sizeof t.hit);
+    for (const auto& b : blocks_) h = hashBytes(h, &b.toppled, sizeof b.toppled);
+    for (const auto& b : blobs_) h = hashBytes(h, &b.toppled, sizeof b.toppled);
+    const int state[4] = {current_, over_ ? 1 : 0, shotsFired_, winner_};
+    h = hashBytes(h, state, sizeof state);
+    const double w = wind();
+    h = hashBytes(h, &w, sizeof w);
+    for (const auto& p : terrain_.points()) h = hashBytes(h, &p.y, sizeof p.y);
+    return h;
+}
+
+std::uint64_t Match::hash() const {
+    const std::uint64_t parts[3] = {world_.hash(), rigid_->hash(), gameHash()};
+    return hashBytes(0xcbf29ce484222325ull, parts, sizeof parts);
+}
+
+std::vector<Vec2> Match::previewTrajectory(double angleDeg, double speedMps, double seconds,
+                                           double stopPastX) const {
+    World w(world_.def());
+    w.shapes = world_.shapes;
+    const double a = angleDeg * kDegToRad;
+    const Ammo ammo = selectedAmmo();
+    ParticleDef pd = particleDef(ammo.preset, muzzle(angleDeg),
+                                 {speedMps * std::cos(a), speedMps * std::sin(a)});
+    const ParticleId id = w.particles.add(pd);
+    std::vector<Vec2> out{pd.position};
+    const long steps = std::lround(seconds / w.def().tickSeconds);
+    for (long i = 0; i < steps; ++i) {
+        w.step();
+        const Vec2 p = w.particles.position(id);
+        out.push_back(p);
+        if (!w.contacts().empty() || p.x < level_.worldMin.x || p.x > level_.worldMax.x ||
+            p.y < level_.worldMin.y)
+            break;
+        const double away = pd.velocity.x >= 0.0 ? p.x - stopPastX : stopPastX - p.x;
+        if (std::isfinite(stopPastX) && away > 0.0 && w.particles.vy[id] < 0.0) break;
+    }
+    return out;
+}
+
+std::size_t runCommands(Match& match, const std::vector<Command>& commands, std::uint64_t ticks,
+                        std::size_t next) {
+    const std::uint64_t end = match.tick() + ticks;
+    while (match.tick() < end) {
+        while (next < commands.size() && commands[next].tick <= match.tick())
+            match.apply(commands[next++]);
+        match.step();
+    }
+    return next;
+}
+
+} // namespace game

@@ -1,0 +1,196 @@
+// A match: one level played under its rules. The match owns the particle world and the
+// rigid world built from the level, takes Commands at ticks (aim, power, select, fire,
+// end_turn, set) and advances one fixed tick at a time, reporting what happened as
+// events. Everything that changes the world goes through apply(), so a recorded list
+// of commands replays the match to the last bit.
+//
+// Section index
+//   set-up     Match(level), the world built from the level (terrain, obstacles,
+//              blocks, ropes, blobs)
+//   commands   apply(): aim, power, select, fire, end_turn, set
+//   tick       step(): particles, coupling, rigid bodies, targets, shell, turn
+//   state      cannons, targets, wind, score, stars, events, hash
+#pragma once
+
+#include "game/ammo.h"
+#include "game/command.h"
+#include "game/level.h"
+#include "game/terrain.h"
+#include "physics/coupling.h"
+#include "physics/rigid/rigid_world.h"
+#include "physics/world.h"
+
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace game {
+
+enum class EventKind {
+    Fired,       ///< a shell left a cannon (value: muzzle speed)
+    Bounce,      ///< the shell hit something and bounced (value: closing speed)
+    Burst,       ///< an explosive shell burst (where: centre)
+    Crater,      ///< the ground was carved (value: radius)
+    TargetHit,   ///< a target was hit (value: points scored)
+    Toppled,     ///< a target block or blob was knocked off its place (value: points)
+    CannonHit,   ///< a duel cannon was hit (player: whose cannon; value: hit points left)
+    ShotOver,    ///< the shell came to rest, burst or left the world (value: closest miss, m)
+    TurnOver,    ///< the turn passed (player: whose turn it is now; value: new wind, m/s)
+    MatchOver,   ///< the match ended (player: winner, -1 for none/draw; value: score)
+    SettingChanged, ///< a `set` command took effect (text: name = value)
+    Refused,     ///< a command was refused (text: why)
+};
+const char* eventName(EventKind k);
+
+struct GameEvent {
+    std::uint64_t tick = 0;
+    EventKind kind = EventKind::Fired;
+    int player = 0;
+    phys::Vec2 where;
+    double value = 0.0;
+    std::string text;
+};
+
+struct CannonState {
+    Cannon def;
+    double angleDeg = 45.0;
+    double speedMps = 30.0;
+    std::size_t projectile = 0; ///< index into def.projectiles
+    int hitPoints = 3;
+    int shotsLeft = 0;
+    int score = 0;
+};
+
+struct TargetState {
+    Target def;
+    phys::Vec2 position;
+    bool hit = false;
+    /// Closest the shell has come while passing through it (m); scored once it recedes.
+    double closestInside = INFINITY;
+};
+
+struct BlockState {
+    Block def;
+    phys::BodyId body;
+    bool toppled = false;
+};
+
+struct BlobState {
+    Blob def;
+    phys::ParticleId center = phys::kNoParticle;
+    bool toppled = false;
+};
+
+/// Hit points of a duel cannon, and how close a shell must pass to hit it (m).
+inline constexpr int kCannonHitPoints = 3;
+inline constexpr double kCannonRadius = 1.5;
+/// A shell still flying after this long is over (s).
+inline constexpr double kMaxFlightSeconds = 30.0;
+
+class Match {
+  public:
+    explicit Match(const Level& level);
+
+    /// Applies a command at the current tick. Returns "" when it took effect, else why
+    /// it was refused (also reported as a Refused event); a refused command changes
+    /// nothing.
+    std::string apply(const Command& command);
+    /// Advances one tick.
+    void step();
+
+    // --- state ---------------------------------------------------------------------
+    const Level& level() const { return level_; }
+    const phys::World& world() const { return world_; }
+    const phys::RigidWorld& rigid() const { return *rigid_; }
+    const Heightfield& terrain() const { return terrain_; }
+    std::uint64_t tick() const { return world_.tick(); }
+    double time() const { return world_.time(); }
+    int currentPlayer() const { return current_; }
+    const std::vector<CannonState>& cannons() const { return cannons_; }
+    const CannonState& cannon() const { return cannons_[static_cast<std::size_t>(current_)]; }
+    const std::vector<TargetState>& targets() const { return targets_; }
+    const std::vector<BlockState>& blocks() const { return blocks_; }
+    const std::vector<BlobState>& blobs() const { return blobs_; }
+    double wind() const { return world_.def().forces.wind.x; }
+    /// The shell in flight, if any.
+    std::optional<phys::ParticleId> shell() const;
+    bool over() const { return over_; }
+    /// Winner of a finished duel (cannon index), -1 for a draw or not over.
+    int winner() const { return winner_; }
+    /// Practice: total score and stars (0..3; 0 until every target is down).
+    int score() const;
+    int stars() const;
+    int maxScore() const;
+    const std::vector<GameEvent>& events() const { return events_; }
+    /// Hash of everything that evolves: particles, bodies, cannons, targets, wind, turn.
+    std::uint64_t hash() const;
+    /// The game part alone: cannons, targets, structures, turn, wind, terrain.
+    std::uint64_t gameHash() const;
+    /// Shots fired so far by everyone.
+    int shotsFired() const { return shotsFired_; }
+    /// True when only uniform gravity acts on a shell (no drag, no wind, no water): the
+    /// firing solution is exact.
+    bool ballisticOnly() const;
+
+    /// Points a shell fired now from the current cannon would pass through, computed by
+    /// the same physics (integrator, tick, drag, wind, terrain and obstacles), up to the
+    /// first contact or `seconds`. Bodies, ropes and blobs are left out of the preview.
+    /// `stopPastX`, when finite, ends the preview once the shell is past that x going
+    /// away from the cannon and descending (the computer's trial shots need no more).
+    std::vector<phys::Vec2> previewTrajectory(double angleDeg, double speedMps,
+                                              double seconds = 8.0,
+                                              double stopPastX = INFINITY) const;
+    /// Muzzle point of the current cannon for a given aim (1.5 m along the barrel).
+    phys::Vec2 muzzle(double angleDeg) const;
+    /// The ammunition selected on the current cannon.
+    Ammo selectedAmmo() const;
+
+  private:
+    void buildWorld();
+    void rebuildStaticShapes();
+    void fire();
+    void endShot(double closestMiss);
+    void nextTurn();
+    void finish();
+    void emit(EventKind kind, int player, phys::Vec2 where, double value, std::string text = {});
+    void updateTargets();
+    /// Scores targets the shell has passed through and is now leaving (or all, at the end).
+    void scorePasses(bool shotEnding);
+    void burst(phys::Vec2 at);
+    double drawWind();
+
+    Level level_;
+    phys::World world_;
+    std::unique_ptr<phys::RigidWorld> rigid_;
+    phys::ParticleBodyCoupling coupling_;
+    Heightfield terrain_;
+    phys::BodyId rigidTerrain_;
+    std::vector<CannonState> cannons_;
+    std::vector<TargetState> targets_;
+    std::vector<BlockState> blocks_;
+    std::vector<BlobState> blobs_;
+    std::vector<GameEvent> events_;
+    std::mt19937_64 rng_;
+    int current_ = 0;
+    bool over_ = false;
+    int winner_ = -1;
+    int shotsFired_ = 0;
+    // The shell in flight.
+    phys::ParticleId shell_ = phys::kNoParticle;
+    std::uint64_t shellFiredTick_ = 0;
+    double closestMiss_ = 0.0;
+    Ammo shellAmmo_;
+    int pendingBonus_ = 0;
+};
+
+/// Applies every command whose tick is the match's current tick, then steps; repeats
+/// until `ticks` ticks have run. Commands must be in tick order. Returns the number of
+/// commands applied.
+std::size_t runCommands(Match& match, const std::vector<Command>& commands, std::uint64_t ticks,
+                        std::size_t next = 0);
+
+} // namespace game

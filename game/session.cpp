@@ -1,0 +1,54 @@
+#include "game/session.h"
+
+namespace game {
+
+Session::Session(const Level& level, const SessionOptions& options)
+    : match_(std::make_unique<Match>(level)), options_(options),
+      cpu_(options.difficulty, options.cpuSeed) {
+    replay_.levelFile = level.file;
+    replay_.levelHash = level.contentHash;
+    replay_.difficulty = difficultyName(options.difficulty);
+    replay_.cpuSeed = options.cpuSeed;
+    replay_.checkpointEvery = options.checkpointEvery;
+}
+
+std::string Session::submit(Command command) {
+    command.tick = match_->tick();
+    std::string why = match_->apply(command);
+    if (why.empty()) replay_.commands.push_back(std::move(command));
+    return why;
+}
+
+void Session::step() {
+    Match& m = *match_;
+    const bool cpuTurn = !m.over() && !m.shell() && m.cannon().def.player == "cpu";
+    if (cpuTurn) {
+        if (!cpuFireTick_) cpuFireTick_ = m.tick() + options_.cpuDelayTicks;
+        if (m.tick() >= *cpuFireTick_) {
+            cpuFireTick_.reset();
+            for (Command c : cpu_.takeTurn(m, m.tick())) submit(c);
+        }
+    } else {
+        cpuFireTick_.reset();
+    }
+    m.step();
+    if (m.tick() % options_.checkpointEvery == 0) replay_.checkpoints.push_back(checkpointOf(m));
+    // Save at the end of each turn and of the match.
+    bool turnEnded = false;
+    for (; eventsSeen_ < m.events().size(); ++eventsSeen_) {
+        const EventKind k = m.events()[eventsSeen_].kind;
+        turnEnded = turnEnded || k == EventKind::TurnOver || k == EventKind::MatchOver;
+    }
+    if (turnEnded && !options_.recordFile.empty()) save(options_.recordFile);
+}
+
+Replay Session::finishedRecording() const {
+    Replay r = replay_;
+    r.ticks = match_->tick();
+    r.finalHash = match_->hash();
+    return r;
+}
+
+void Session::save(const std::string& file) const { saveReplay(file, finishedRecording()); }
+
+} // namespace game

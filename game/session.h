@@ -1,0 +1,55 @@
+// A session drives a match the way a player sees it: commands from the window, a script
+// or a replay are stamped with the current tick, applied and recorded; the computer
+// takes its turns after a short pause; the recording is a replay with checkpoints,
+// saved atomically at the end of every turn so a crash loses at most the last turn.
+#pragma once
+
+#include "game/ai.h"
+#include "game/match.h"
+#include "game/replay.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace game {
+
+struct SessionOptions {
+    Difficulty difficulty = Difficulty::Normal;
+    std::uint64_t cpuSeed = 1;
+    /// Ticks the computer "thinks" before it fires (so a player can see its turn).
+    std::uint64_t cpuDelayTicks = 60;
+    std::uint64_t checkpointEvery = kDefaultCheckpointEvery;
+    /// Replay file written at the end of every turn and of the match ("" = none).
+    std::string recordFile;
+};
+
+class Session {
+  public:
+    Session(const Level& level, const SessionOptions& options = {});
+
+    /// Applies a command at the current tick and records it. Returns "" or why refused
+    /// (refused commands are not recorded: they changed nothing).
+    std::string submit(Command command);
+    /// Runs the computer's turn if it is due, then advances one tick, recording
+    /// checkpoints; saves the recording when a turn or the match ends.
+    void step();
+
+    Match& match() { return *match_; }
+    const Match& match() const { return *match_; }
+    const Replay& recording() const { return replay_; }
+    /// The recording as it stands, with the current tick and final hash filled in.
+    Replay finishedRecording() const;
+    /// Writes the recording now (atomically); throws std::runtime_error on failure.
+    void save(const std::string& file) const;
+
+  private:
+    std::unique_ptr<Match> match_;
+    SessionOptions options_;
+    ComputerPlayer cpu_;
+    Replay replay_;
+    std::optional<std::uint64_t> cpuFireTick_;
+    std::size_t eventsSeen_ = 0;
+};
+
+} // namespace game

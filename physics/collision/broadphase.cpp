@@ -1,0 +1,156 @@
+#include "physics/collision/broadphase.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace phys {
+
+namespace {
+bool pairable(ProxyKind a, ProxyKind b) {
+    return a != ProxyKind::None && b != ProxyKind::None &&
+           (a == ProxyKind::Moving || b == ProxyKind::Moving);
+}
+ProxyPair ordered(std::uint32_t a, std::uint32_t b) { return a < b ? ProxyPair{a, b} : ProxyPair{b, a}; }
+} // namespace
+
+void allPairs(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds,
+              std::vector<ProxyPair>& out) {
+    out.clear();
+    const auto n = static_cast<std::uint32_t>(boxes.size());
+    for (std::uint32_t i = 0; i < n; ++i)
+        for (std::uint32_t j = i + 1; j < n; ++j)
+            if (pairable(kinds[i], kinds[j]) && boxes[i].overlaps(boxes[j])) out.push_back({i, j});
+}
+
+namespace {
+// Cell index of a coordinate, clamped so that far-away boxes cannot overflow.
+std::int64_t cellOf(double x, double inv) {
+    const double c = std::floor(x * inv);
+    return static_cast<std::int64_t>(std::clamp(c, -1e15, 1e15));
+}
+std::uint64_t cellHash(std::int64_t cx, std::int64_t cy) {
+    // Two large odd multipliers mixed with xor: neighbouring cells spread over buckets.
+    return (static_cast<std::uint64_t>(cx) * 0x9E3779B97F4A7C15ull) ^
+           (static_cast<std::uint64_t>(cy) * 0xC2B2AE3D27D4EB4Full);
+}
+} // namespace
+
+void UniformGrid::findPairs(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds,
+                            std::vector<ProxyPair>& out, double cellSize) {
+    out.clear();
+    const auto n = static_cast<std::uint32_t>(boxes.size());
+    if (!(cellSize > 0.0)) {
+        double sum = 0.0;
+        int count = 0;
+        for (std::uint32_t i = 0; i < n; ++i)
+            if (kinds[i] == ProxyKind::Moving) {
+                sum += (boxes[i].hi.x - boxes[i].lo.x) + (boxes[i].hi.y - boxes[i].lo.y);
+                ++count;
+            }
+        cellSize = count > 0 && sum > 0.0 ? 2.0 * sum / (2.0 * count) : 1.0;
+    }
+    const double inv = 1.0 / cellSize;
+
+    // Enter every box in the cells it covers (too big: aside).
+    entries_.clear();
+    oversize_.clear();
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (kinds[i] == ProxyKind::None) continue;
+        const std::int64_t x0 = cellOf(boxes[i].lo.x, inv), x1 = cellOf(boxes[i].hi.x, inv);
+        const std::int64_t y0 = cellOf(boxes[i].lo.y, inv), y1 = cellOf(boxes[i].hi.y, inv);
+        if ((x1 - x0 + 1) * (y1 - y0 + 1) > kMaxCellsPerBox) {
+            oversize_.push_back(i);
+            continue;
+        }
+        for (std::int64_t cx = x0; cx <= x1; ++cx)
+            for (std::int64_t cy = y0; cy <= y1; ++cy) entries_.push_back({cx, cy, i});
+    }
+
+    // Counting sort of the entries by bucket (hash of the cell): O(entries).
+    const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(2 * entries_.size(), 16));
+    const std::uint64_t mask = buckets - 1;
+    bucketStart_.assign(buckets + 1, 0);
+    for (const Entry& e : entries_) ++bucketStart_[(cellHash(e.cx, e.cy) & mask) + 1];
+    for (std::size_t b = 0; b < buckets; ++b) bucketStart_[b + 1] += bucketStart_[b];
+    sorted_.resize(entries_.size());
+    for (const Entry& e : entries_) sorted_[bucketStart_[cellHash(e.cx, e.cy) & mask]++] = e;
+    // bucketStart_[b] now holds the end of bucket b; bucket b starts at the end of b - 1.
+
+    // Pairs sharing a cell, reported from the cell of the intersection's low corner.
+    std::uint32_t begin = 0;
+    for (std::size_t b = 0; b < buckets; ++b) {
+        const std::uint32_t end = bucketStart_[b];
+        for (std::uint32_t u = begin; u < end; ++u)
+            for (std::uint32_t v = u + 1; v < end; ++v) {
+                const Entry &e = sorted_[u], &f = sorted_[v];
+                if (e.cx != f.cx || e.cy != f.cy || e.proxy == f.proxy) continue;
+                const std::uint32_t a = e.proxy, c = f.proxy;
+                if (!pairable(kinds[a], kinds[c]) || !boxes[a].overlaps(boxes[c])) continue;
+                const double lx = std::max(boxes[a].lo.x, boxes[c].lo.x);
+                const double ly = std::max(boxes[a].lo.y, boxes[c].lo.y);
+                if (cellOf(lx, inv) != e.cx || cellOf(ly, inv) != e.cy) continue;
+                out.push_back(ordered(a, c));
+            }
+        begin = end;
+    }
+    // Oversized boxes against everything (each pair once).
+    for (std::size_t k = 0; k < oversize_.size(); ++k) {
+        const std::uint32_t a = oversize_[k];
+        for (std::uint32_t c = 0; c < n; ++c) {
+            if (c == a || !pairable(kinds[a], kinds[c]) || !boxes[a].overlaps(boxes[c])) continue;
+            const bool otherOversize = std::binary_search(oversize_.begin(), oversize_.end(), c);
+            if (otherOversize && c < a) continue; // found from c's side
+            out.push_back(ordered(a, c));
+        }
+    }
+    std::sort(out.begin(), out.end());
+}
+
+void SortAndSweep::findPairs(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds,
+                             std::vector<ProxyPair>& out) {
+    out.clear();
+    const auto n = static_cast<std::uint32_t>(boxes.size());
+    // Keep the previous order (nearly sorted frame to frame); add new proxies, drop gone ones.
+    std::erase_if(order_, [&](std::uint32_t i) { return i >= n || kinds[i] == ProxyKind::None; });
+    {
+        // Mark which proxies are already in order_ using the active_ buffer as a bitmap.
+        active_.assign(n, 0);
+        for (auto i : order_) active_[i] = 1;
+        for (std::uint32_t i = 0; i < n; ++i)
+            if (!active_[i] && kinds[i] != ProxyKind::None) order_.push_back(i);
+    }
+    // Sweep axis: the larger spread of box centres.
+    double mx = 0, my = 0, sx = 0, sy = 0;
+    for (auto i : order_) {
+        mx += boxes[i].lo.x + boxes[i].hi.x;
+        my += boxes[i].lo.y + boxes[i].hi.y;
+    }
+    const double m = order_.empty() ? 1.0 : static_cast<double>(order_.size());
+    mx /= m;
+    my /= m;
+    for (auto i : order_) {
+        const double dx = boxes[i].lo.x + boxes[i].hi.x - mx, dy = boxes[i].lo.y + boxes[i].hi.y - my;
+        sx += dx * dx;
+        sy += dy * dy;
+    }
+    const bool alongX = sx >= sy;
+    auto lo = [&](std::uint32_t i) { return alongX ? boxes[i].lo.x : boxes[i].lo.y; };
+    auto hi = [&](std::uint32_t i) { return alongX ? boxes[i].hi.x : boxes[i].hi.y; };
+    // Ties broken by index, so the order (and so the pair list) never depends on history.
+    std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return lo(a) < lo(b) || (lo(a) == lo(b) && a < b);
+    });
+    active_.clear();
+    for (const std::uint32_t i : order_) {
+        const double start = lo(i);
+        // Close intervals that ended before this one starts.
+        std::erase_if(active_, [&](std::uint32_t a) { return hi(a) < start; });
+        for (const std::uint32_t a : active_)
+            if (pairable(kinds[a], kinds[i]) && boxes[a].overlaps(boxes[i])) out.push_back(ordered(a, i));
+        active_.push_back(i);
+    }
+    std::sort(out.begin(), out.end());
+}
+
+} // namespace phys

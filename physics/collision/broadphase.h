@@ -1,0 +1,71 @@
+// Broad phase: which proxies (particles' swept boxes, static shapes' boxes) might touch.
+//
+// Uniform grid (the default, notes 002 "spatial partitioning"): every box is entered in
+// the cells it covers, the entries are bucketed by a hash of their cell with a counting
+// sort, and only boxes sharing a cell are tested. A pair that shares several cells is
+// reported only from the cell holding the low corner of the two boxes' intersection,
+// so it appears once. With cells about the size of the boxes, each box covers a few
+// cells and meets a few neighbours: O(n) for n boxes spread over a level. Boxes too big
+// for the grid (a long floor segment) are kept aside and tested against every box.
+//
+// Sort and sweep (the notes' "plane sweep", 002): sort the boxes by their low end on
+// one axis, sweep, and keep an active list of boxes whose interval is still open;
+// only boxes in the active list can overlap on that axis, and only those are tested
+// on the other. Cost O(n log n + k) for k overlapping pairs (the sort starts from the
+// previous frame's order, which is nearly sorted). The axis is the one along which the
+// box centres are spread the most, so a column of particles does not degrade it.
+//
+// allPairs() is the naive O(n^2) reference the tests compare it with.
+#pragma once
+
+#include "physics/collision/shapes.h"
+
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace phys {
+
+/// What a proxy is, for pairing: a moving proxy pairs with everything; two resting
+/// proxies (static shapes, fixed or sleeping particles) never pair; None is skipped.
+enum class ProxyKind : std::uint8_t { None, Moving, Resting };
+
+using ProxyPair = std::pair<std::uint32_t, std::uint32_t>; ///< first < second
+
+/// The reference: every overlapping pair by testing all of them, sorted.
+void allPairs(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds,
+              std::vector<ProxyPair>& out);
+
+class UniformGrid {
+  public:
+    /// The overlapping pairs, sorted; `out` is cleared first. cellSize (m) <= 0 picks
+    /// twice the mean extent of the moving boxes. Keeps its buffers between calls.
+    void findPairs(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds,
+                   std::vector<ProxyPair>& out, double cellSize = 0.0);
+    /// Boxes covering more than this many cells are tested against all others instead.
+    static constexpr int kMaxCellsPerBox = 64;
+
+  private:
+    struct Entry {
+        std::int64_t cx, cy;
+        std::uint32_t proxy;
+    };
+    std::vector<Entry> entries_, sorted_;
+    std::vector<std::uint32_t> bucketStart_;
+    std::vector<std::uint32_t> oversize_;
+};
+
+class SortAndSweep {
+  public:
+    /// The overlapping pairs, sorted; `out` is cleared first. Keeps its buffers between
+    /// calls, so once warm it does not allocate.
+    void findPairs(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds,
+                   std::vector<ProxyPair>& out);
+
+  private:
+    std::vector<std::uint32_t> order_;
+    std::vector<std::uint32_t> active_;
+};
+
+} // namespace phys

@@ -1,0 +1,159 @@
+#include "physics/collision/constraints.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace phys {
+
+namespace {
+
+Vec2 otherEnd(const DistanceConstraint& c, const ParticleSet& s) {
+    return c.b == kNoParticle ? c.anchor : s.position(c.b);
+}
+
+double wOf(const ParticleSet& s, ParticleId id) {
+    return id == kNoParticle ? 0.0 : s.invMass[id];
+}
+
+// dp = W J^T x over the active constraints.
+void applyJt(const std::vector<DistanceConstraint>& cs, const ParticleSet& s,
+             ConstraintScratch& w, const std::vector<double>& x) {
+    std::fill(w.dp.begin(), w.dp.end(), Vec2{});
+    for (std::size_t k = 0; k < cs.size(); ++k) {
+        if (!w.active[k]) continue;
+        const auto& c = cs[k];
+        w.dp[c.a] += w.dir[k] * (x[k] * s.invMass[c.a]);
+        if (c.b != kNoParticle) w.dp[c.b] -= w.dir[k] * (x[k] * s.invMass[c.b]);
+    }
+}
+
+// out = J dp.
+void applyJ(const std::vector<DistanceConstraint>& cs, ConstraintScratch& w,
+            std::vector<double>& out) {
+    for (std::size_t k = 0; k < cs.size(); ++k) {
+        const auto& c = cs[k];
+        out[k] = w.active[k] ? dot(w.dir[k], w.dp[c.a] - (c.b != kNoParticle ? w.dp[c.b] : Vec2{}))
+                             : 0.0;
+    }
+}
+
+// Solves (J W J^T) x = rhs by Jacobi-preconditioned conjugate gradients; the result
+// is left in w.x and W J^T x in w.dp.
+void solve(const std::vector<DistanceConstraint>& cs, const ParticleSet& s, ConstraintScratch& w) {
+    const std::size_t m = cs.size();
+    auto diag = [&](std::size_t k) { return wOf(s, cs[k].a) + wOf(s, cs[k].b); };
+    double rz = 0.0, rr0 = 0.0;
+    for (std::size_t k = 0; k < m; ++k) {
+        w.x[k] = 0.0;
+        w.r[k] = w.active[k] ? w.rhs[k] : 0.0;
+        const double d = diag(k);
+        w.z[k] = w.active[k] && d > 0.0 ? w.r[k] / d : 0.0;
+        w.p[k] = w.z[k];
+        rz += w.r[k] * w.z[k];
+        rr0 += w.r[k] * w.r[k];
+    }
+    const int maxIt = static_cast<int>(std::min<std::size_t>(2 * m + 10, 1000));
+    for (int it = 0; it < maxIt && rz > 0.0; ++it) {
+        applyJt(cs, s, w, w.p);
+        applyJ(cs, w, w.q);
+        double pq = 0.0;
+        for (std::size_t k = 0; k < m; ++k) pq += w.p[k] * w.q[k];
+        if (!(pq > 0.0)) break; // a dependent direction (a loop, or fixed ends): stop here
+        const double alpha = rz / pq;
+        double rzNew = 0.0, rr = 0.0;
+        for (std::size_t k = 0; k < m; ++k) {
+            w.x[k] += alpha * w.p[k];
+            w.r[k] -= alpha * w.q[k];
+            const double d = diag(k);
+            w.z[k] = w.active[k] && d > 0.0 ? w.r[k] / d : 0.0;
+            rzNew += w.r[k] * w.z[k];
+            rr += w.r[k] * w.r[k];
+        }
+        ++w.lastIterations;
+        if (rr <= 1e-28 * rr0) break;
+        const double beta = rzNew / rz;
+        rz = rzNew;
+        for (std::size_t k = 0; k < m; ++k) w.p[k] = w.z[k] + beta * w.p[k];
+    }
+    applyJt(cs, s, w, w.x);
+}
+
+} // namespace
+
+std::string validate(const DistanceConstraint& c, const ParticleSet& set) {
+    if (!set.alive(c.a)) return "constraint end a is not a live particle";
+    if (c.b != kNoParticle && !set.alive(c.b)) return "constraint end b is not a live particle";
+    if (c.b == c.a) return "constraint joins a particle to itself";
+    if (!(c.length > 0.0) || !std::isfinite(c.length)) return "constraint length must be > 0 m";
+    return {};
+}
+
+double lengthError(const DistanceConstraint& c, const ParticleSet& set) {
+    const double L = length(set.position(c.a) - otherEnd(c, set));
+    const double err = (L - c.length) / c.length;
+    return c.kind == ConstraintKind::Cable ? std::max(err, 0.0) : std::abs(err);
+}
+
+double solveConstraints(const std::vector<DistanceConstraint>& cs, ParticleSet& set,
+                        ConstraintScratch& w, int newtonSteps, double tolerance) {
+    w.lastIterations = 0;
+    if (cs.empty()) return 0.0;
+    const std::size_t m = cs.size();
+    for (auto* v : {&w.rhs, &w.x, &w.r, &w.z, &w.p, &w.q}) v->resize(m);
+    w.dir.resize(m);
+    w.active.resize(m);
+    w.dp.resize(set.slots());
+
+    // Position: Newton steps on C(p) = 0 over the rods and the taut cables.
+    for (int step = 0; step < newtonSteps; ++step) {
+        double worst = 0.0;
+        for (std::size_t k = 0; k < m; ++k) {
+            const auto& c = cs[k];
+            const Vec2 d = set.position(c.a) - otherEnd(c, set);
+            const double L = length(d);
+            const double C = L - c.length;
+            w.active[k] = L > 0.0 && (c.kind == ConstraintKind::Rod || C > 0.0) &&
+                          wOf(set, c.a) + wOf(set, c.b) > 0.0;
+            w.dir[k] = L > 0.0 ? d / L : Vec2{};
+            w.rhs[k] = -C;
+            if (w.active[k]) worst = std::max(worst, std::abs(C) / c.length);
+        }
+        if (worst <= tolerance) break;
+        solve(cs, set, w);
+        for (std::size_t i = 0; i < set.slots(); ++i) {
+            set.px[i] += w.dp[i].x;
+            set.py[i] += w.dp[i].y;
+        }
+    }
+
+    // Velocity: no relative velocity along a rod, none stretching a taut cable.
+    for (std::size_t k = 0; k < m; ++k) {
+        const auto& c = cs[k];
+        const Vec2 d = set.position(c.a) - otherEnd(c, set);
+        const double L = length(d);
+        w.dir[k] = L > 0.0 ? d / L : Vec2{};
+        const Vec2 vb = c.b != kNoParticle ? set.velocity(c.b) : Vec2{};
+        const double u = dot(set.velocity(c.a) - vb, w.dir[k]);
+        const bool taut = L >= c.length * (1.0 - tolerance) - 1e-12;
+        w.active[k] = L > 0.0 && wOf(set, c.a) + wOf(set, c.b) > 0.0 &&
+                      (c.kind == ConstraintKind::Rod || (taut && u > 0.0));
+        w.rhs[k] = -u;
+    }
+    solve(cs, set, w);
+    for (std::size_t i = 0; i < set.slots(); ++i) {
+        set.vx[i] += w.dp[i].x;
+        set.vy[i] += w.dp[i].y;
+    }
+
+    // Anything a constraint moved forgets its multi-step integrator history.
+    double worst = 0.0;
+    for (const auto& c : cs) {
+        for (const ParticleId id : {c.a, c.b})
+            if (id != kNoParticle && set.invMass[id] > 0.0)
+                set.flags[id] &= ~(kVerletPrimed | kLeapfrogPrimed);
+        worst = std::max(worst, lengthError(c, set));
+    }
+    return worst;
+}
+
+} // namespace phys

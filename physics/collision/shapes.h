@@ -1,0 +1,97 @@
+// Static shapes the particles collide with: segments (and polylines made of them:
+// terrain, walls), circles and convex polygons. They never move; each has a material.
+//
+// Every shape answers one question, the closest point: for a point p, the signed
+// distance from the shape's surface to p (negative inside a circle or polygon) and
+// the outward unit normal there. A particle of radius r touches the shape when that
+// distance equals r; the narrow phase finds when that happens.
+#pragma once
+
+#include "physics/materials.h"
+#include "physics/vec2.h"
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace phys {
+
+/// Axis-aligned box, m.
+struct Aabb {
+    Vec2 lo, hi;
+    bool overlaps(const Aabb& o) const {
+        return lo.x <= o.hi.x && o.lo.x <= hi.x && lo.y <= o.hi.y && o.lo.y <= hi.y;
+    }
+};
+
+/// A two-sided line segment a-b (a zero-thickness wall; a polyline is a chain of them).
+struct Segment {
+    Vec2 a, b;
+    MaterialId material = material::kDefault;
+};
+
+struct Circle {
+    Vec2 center;
+    double radius = 1.0; ///< m, > 0
+    MaterialId material = material::kDefault;
+};
+
+/// A convex polygon, vertices counter-clockwise; normals[i] is the outward unit normal
+/// of the edge vertices[i] -> vertices[i+1].
+struct ConvexPolygon {
+    std::vector<Vec2> vertices;
+    std::vector<Vec2> normals;
+    MaterialId material = material::kDefault;
+};
+
+enum class ShapeKind : std::uint8_t { Segment, Circle, Polygon };
+
+/// One static shape by kind and index into its list.
+struct ShapeRef {
+    ShapeKind kind = ShapeKind::Segment;
+    std::uint32_t index = 0;
+};
+
+/// Closest-point answer: signed distance from the surface to the point, m, and the
+/// outward unit normal of the surface there (points from the shape to the point).
+struct SurfacePoint {
+    double distance = 0.0;
+    Vec2 normal{0.0, 1.0};
+};
+
+SurfacePoint closestPoint(const Segment& s, Vec2 p);
+SurfacePoint closestPoint(const Circle& c, Vec2 p);
+SurfacePoint closestPoint(const ConvexPolygon& poly, Vec2 p);
+
+Aabb bounds(const Segment& s);
+Aabb bounds(const Circle& c);
+Aabb bounds(const ConvexPolygon& poly);
+
+/// All static shapes of a world.
+struct StaticShapes {
+    std::vector<Segment> segments;
+    std::vector<Circle> circles;
+    std::vector<ConvexPolygon> polygons;
+
+    void addSegment(Vec2 a, Vec2 b, MaterialId m = material::kDefault);
+    /// A chain of segments through the points (terrain, walls). Returns "" or an error.
+    std::string addPolyline(std::span<const Vec2> points, MaterialId m = material::kDefault);
+    /// Returns "" or an error (radius must be > 0).
+    std::string addCircle(Vec2 center, double radius, MaterialId m = material::kDefault);
+    /// Returns "" when added, else why not (fewer than 3 vertices, not convex, degenerate).
+    /// Clockwise input is reversed to counter-clockwise.
+    std::string addPolygon(std::span<const Vec2> vertices, MaterialId m = material::kDefault);
+    /// An axis-aligned box as a polygon (walls, platforms).
+    void addBox(Vec2 lo, Vec2 hi, MaterialId m = material::kDefault);
+
+    std::size_t count() const { return segments.size() + circles.size() + polygons.size(); }
+    /// The i-th shape in the order segments, circles, polygons.
+    ShapeRef ref(std::size_t i) const;
+    SurfacePoint closestPoint(ShapeRef s, Vec2 p) const;
+    Aabb bounds(ShapeRef s) const;
+    MaterialId material(ShapeRef s) const;
+    void clear();
+};
+
+} // namespace phys

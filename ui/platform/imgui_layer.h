@@ -1,0 +1,42 @@
+// Dear ImGui on a GLContext: the OpenGL3 renderer backend everywhere, the SDL2 platform
+// backend in a window, and a fixed display size with no input headless, so panels and
+// labels draw the same in screenshots as on screen.
+#pragma once
+
+#include "ui/platform/gl_context.h"
+#include "ui/render/renderer2d.h"
+
+#include <span>
+
+union SDL_Event;
+
+namespace ui {
+
+class SdlWindow;
+
+class ImGuiLayer {
+  public:
+    /// `window` is null headless. Throws std::runtime_error when the backend cannot start.
+    ImGuiLayer(GLContext& context, SdlWindow* window);
+    ~ImGuiLayer();
+    ImGuiLayer(const ImGuiLayer&) = delete;
+    ImGuiLayer& operator=(const ImGuiLayer&) = delete;
+
+    /// Passes an SDL event to ImGui; true when ImGui wants it (typing, over a panel).
+    bool processEvent(const SDL_Event& event);
+    /// Starts an ImGui frame of `dtSeconds`.
+    void newFrame(double dtSeconds);
+    /// Queues the renderer's text labels behind every ImGui window.
+    void drawLabels(std::span<const Label> labels);
+    /// Draws the ImGui frame into the currently bound framebuffer.
+    void render();
+
+    bool wantsMouse() const;
+    bool wantsKeyboard() const;
+
+  private:
+    GLContext& context_;
+    SdlWindow* window_;
+};
+
+} // namespace ui

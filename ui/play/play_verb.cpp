@@ -1,0 +1,325 @@
+#include "ui/play/play_verb.h"
+
+#include "ui/platform/sdl_window.h"
+#include "ui/play/play_screen.h"
+
+#include <SDL.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <optional>
+#include <ostream>
+#include <sstream>
+
+namespace ui {
+
+namespace {
+
+using game::cli::Args;
+using Clock = std::chrono::steady_clock;
+
+constexpr const char* kPlayUsage =
+    R"(usage: artillery play [LEVEL] [--frames N] [--screenshot FILE.png] [--size WxH]
+                      [--headless] [--context auto|osmesa|egl] [--warmup SECONDS]
+                      [--msaa N] [--no-panel] [--integrator NAME] [--planet NAME |
+                      --gravity G] [--wind VX] [--no-drag] [--velocities] [--json]
+
+Opens the game window. Until level files are loaded (issue 5), every level opens the
+built-in demo: a cannon firing a shell every 2.5 s (with a drag-free reference shell
+beside it while air drag is on), and a spring chain swinging from a gallows. The panel
+sets the integrator, tick rate, sub-steps, gravity, drag and wind live, and shows the
+frame and physics times.
+
+options:
+  LEVEL                 a level file (must exist; shown as the demo for now)
+  --frames N            run N frames, then exit (default: until the window closes)
+  --screenshot FILE     save the last frame as PNG (headless, the last frame is always
+                        saved: by default to $TMPDIR/artillery-demo.png)
+  --size WxH            window or picture size in pixels (default 1280x720)
+  --headless            draw offscreen, no window (also used when there is no display)
+  --context NAME        headless GL: auto (OSMesa, else EGL), osmesa or egl
+  --warmup SECONDS      simulate this long before the first frame (default 0)
+  --msaa N              anti-aliasing samples, 0..16 (default 0 = auto: 4 on a GPU,
+                        off on software renderers such as llvmpipe, where it is slow)
+  --no-panel            hide the ImGui panel
+  --integrator NAME     start with this integrator (default velocity-verlet)
+  --planet NAME         earth, moon, mars or jupiter gravity; or --gravity G in m/s^2
+  --wind VX             horizontal wind, m/s (drag acts on v - wind)
+  --no-drag             start with air drag off (on by default)
+  --velocities          draw velocity arrows
+  --json                print the run's figures as JSON
+
+keys:  Esc quit   Space pause   S or . single step   F fire   R reset
+       1/2/3 speed x0.1/x0.25/x1   V velocities   T trails   F12 screenshot
+mouse: wheel zooms at the pointer, drag pans, Home re-frames
+
+Headless, frames advance 1/60 s each, so a run gives the same picture every time.
+Exit codes: 0 ok, 1 the frame could not be drawn or saved, 2 bad input.
+)";
+
+struct PlayOptions {
+    int width = 1280;
+    int height = 720;
+    std::optional<long long> frames;
+    std::string screenshot;
+    bool headless = false;
+    HeadlessBackend backend = HeadlessBackend::Auto;
+    double warmupSeconds = 0.0;
+    int msaa = 0;
+    bool panel = true;
+    bool json = false;
+    bool velocities = false;
+    phys::WorldDef world = demoWorldDef();
+};
+
+struct RunReport {
+    long long frames = 0;
+    double firstFrameMs = 0.0; ///< includes shader compilation and font upload
+    double meanFrameMs = 0.0;
+    double minFrameMs = 0.0;
+    double maxFrameMs = 0.0;
+    std::string context;
+    std::string screenshot; ///< absolute path, "" when none
+};
+
+void parseSize(const Args& args, PlayOptions& o) {
+    const auto text = args.text("size");
+    if (!text) return;
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    std::istringstream in(*text);
+    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < 64 || h < 64 ||
+        w > 8192 || h > 8192)
+        args.fail("--size expects WxH with each side in 64..8192 pixels, got '" + *text + "'");
+    o.width = w, o.height = h;
+}
+
+PlayOptions parseOptions(const Args& args) {
+    PlayOptions o;
+    parseSize(args, o);
+    if (args.has("frames"))
+        o.frames = args.integer("frames", 1, 1, std::numeric_limits<int>::max());
+    o.screenshot = args.text("screenshot", "");
+    if (!o.screenshot.empty() && std::filesystem::path(o.screenshot).extension() != ".png")
+        args.fail("--screenshot expects a file name ending in .png, got '" + o.screenshot + "'");
+    o.headless = args.flag("headless");
+    const std::string context = args.text("context", "auto");
+    if (context == "auto")
+        o.backend = HeadlessBackend::Auto;
+    else if (context == "osmesa")
+        o.backend = HeadlessBackend::OSMesa;
+    else if (context == "egl")
+        o.backend = HeadlessBackend::EGL;
+    else
+        args.fail("--context expects one of auto, osmesa, egl, got '" + context + "'");
+    o.warmupSeconds = args.number("warmup", 0.0, 0.0, 3600.0, "s");
+    o.msaa = static_cast<int>(args.integer("msaa", 0, 0, 16));
+    o.panel = !args.flag("no-panel");
+    o.velocities = args.flag("velocities");
+    o.world.integrator = game::cli::integratorOption(args, o.world.integrator);
+    o.world.forces.gravity = {0.0, -game::cli::gravityOption(args)};
+    o.world.forces.wind = {args.number("wind", 0.0, -100.0, 100.0, "m/s"), 0.0};
+    if (args.flag("no-drag")) o.world.forces.drag = phys::DragModel::None;
+    o.json = args.flag("json");
+    const auto& pos = args.positionals();
+    if (pos.size() > 1) args.fail("expects at most one LEVEL, got " + std::to_string(pos.size()));
+    if (!pos.empty() && !std::filesystem::exists(pos[0]))
+        args.fail("level file '" + pos[0] + "' does not exist");
+    args.rejectUnknown();
+    return o;
+}
+
+double msSince(Clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+/// Simulates `seconds` without drawing, in frames of 1/60 s (the headless frame).
+void warmUp(PlayScreen& screen, double seconds) {
+    const int ticks = static_cast<int>(seconds / screen.scene().world.def().tickSeconds);
+    for (int i = 0; i < ticks; ++i)
+        screen.scene().tick();
+}
+
+PlayScreenDef screenDef(const PlayOptions& o) {
+    PlayScreenDef d;
+    d.msaaSamples = o.msaa;
+    d.panel = o.panel;
+    d.view.velocities = o.velocities;
+    d.world = o.world;
+    return d;
+}
+
+/// The first frame compiles shaders and uploads the font; it is reported apart, and the
+/// mean, min and max are over the frames after it (all frames when there is only one).
+void accumulate(RunReport& r, double ms) {
+    if (r.frames == 0) r.firstFrameMs = ms;
+    if (r.frames == 1) r.meanFrameMs = r.minFrameMs = r.maxFrameMs = 0.0;
+    const long long n = r.frames == 0 ? 0 : r.frames - 1; // frames counted in the mean so far
+    ++r.frames;
+    r.minFrameMs = n == 0 ? ms : std::min(r.minFrameMs, ms);
+    r.maxFrameMs = std::max(r.maxFrameMs, ms);
+    r.meanFrameMs += (ms - r.meanFrameMs) / static_cast<double>(n + 1);
+}
+
+std::string absolute(const std::string& path) {
+    std::error_code ec;
+    auto p = std::filesystem::absolute(path, ec);
+    return ec ? path : p.lexically_normal().string();
+}
+
+/// Saves the last frame if asked; returns false (and says why) when it cannot.
+bool saveIfAsked(PlayScreen& screen, const PlayOptions& o, RunReport& report) {
+    if (o.screenshot.empty()) return true;
+    const std::string error = screen.saveScreenshot(o.screenshot);
+    if (!error.empty()) {
+        std::cerr << "artillery play: " << error << "\n";
+        return false;
+    }
+    report.screenshot = absolute(o.screenshot);
+    return true;
+}
+
+int runHeadless(const PlayOptions& o, RunReport& report) {
+    std::string error;
+    auto context = createHeadlessContext(o.width, o.height, o.backend, error);
+    if (!context) {
+        std::cerr << "artillery play: no headless GL context: " << error << "\n";
+        return game::cli::kCheckFailed;
+    }
+    report.context = context->name();
+    PlayScreen screen(*context, nullptr, screenDef(o));
+    warmUp(screen, o.warmupSeconds);
+    const long long frames = o.frames.value_or(1);
+    for (long long f = 0; f < frames; ++f) {
+        const auto t0 = Clock::now();
+        screen.frame(1.0 / 60.0);
+        context->present(); // waits for the frame: the time includes the GPU's work
+        const double ms = msSince(t0);
+        screen.setMeasuredFrameMs(ms);
+        accumulate(report, ms);
+    }
+    return saveIfAsked(screen, o, report) ? game::cli::kOk : game::cli::kCheckFailed;
+}
+
+/// Returns -1 when no window could be opened (the caller falls back to headless).
+int runWindow(const PlayOptions& o, RunReport& report) {
+    std::string error;
+    auto window = SdlWindow::open("artillery", o.width, o.height, error);
+    if (!window) {
+        std::cerr << "artillery play: " << error << "; drawing headless instead\n";
+        return -1;
+    }
+    report.context = window->name();
+    PlayScreen screen(*window, window.get(), screenDef(o));
+    warmUp(screen, o.warmupSeconds);
+    auto last = Clock::now();
+    bool running = true;
+    for (long long f = 0; running && (!o.frames || f < *o.frames); ++f) {
+        SDL_Event e;
+        while (SDL_PollEvent(&e))
+            running = screen.handleEvent(e) && running;
+        const auto now = Clock::now();
+        const double dt = std::chrono::duration<double>(now - last).count();
+        last = now;
+        screen.frame(dt);
+        const bool lastFrame = !running || (o.frames && f + 1 == *o.frames);
+        if (screen.takeScreenshotRequest()) {
+            const std::string name = screenshotFileName();
+            if (screen.saveScreenshot(name).empty())
+                std::cout << "screenshot: " << absolute(name) << std::endl;
+        }
+        if (lastFrame && !saveIfAsked(screen, o, report)) return game::cli::kCheckFailed;
+        window->present();
+        const double ms = msSince(now);
+        screen.setMeasuredFrameMs(ms);
+        accumulate(report, ms);
+    }
+    return game::cli::kOk;
+}
+
+void printReport(std::ostream& out, const RunReport& r, const PlayOptions& o, bool json) {
+    if (json) {
+        out << "{\"frames\":" << r.frames << ",\"context\":\"" << r.context
+            << "\",\"width\":" << o.width << ",\"height\":" << o.height
+            << ",\"mean_frame_ms\":" << r.meanFrameMs << ",\"min_frame_ms\":" << r.minFrameMs
+            << ",\"max_frame_ms\":" << r.maxFrameMs << ",\"first_frame_ms\":" << r.firstFrameMs
+            << ",\"screenshot\":";
+        if (r.screenshot.empty())
+            out << "null";
+        else
+            out << "\"" << r.screenshot << "\"";
+        out << "}\n";
+        return;
+    }
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "%lld frames, %s %dx%d: %.2f ms/frame (min %.2f, max %.2f; first frame %.1f ms)",
+                  r.frames, r.context.c_str(), o.width, o.height, r.meanFrameMs, r.minFrameMs,
+                  r.maxFrameMs, r.firstFrameMs);
+    out << line << "\n";
+    if (!r.screenshot.empty()) out << "screenshot: " << r.screenshot << "\n";
+}
+
+/// Without a window the only way to see anything is a picture: unless told otherwise,
+/// 2 s into the scene (a shell pair in the air, the chain swinging), a few frames so
+/// the clock's interpolation runs as in a window, saved to the temp directory.
+PlayOptions headlessDemo(PlayOptions o) {
+    o.headless = true;
+    if (!o.frames) {
+        o.frames = 5;
+        if (o.warmupSeconds == 0.0) o.warmupSeconds = 2.0;
+    }
+    if (o.screenshot.empty())
+        o.screenshot = (std::filesystem::temp_directory_path() / "artillery-demo.png").string();
+    return o;
+}
+
+int play(PlayOptions o, std::ostream& out) {
+    RunReport report;
+    int code = -1;
+    try {
+        if (!o.headless && displayAvailable()) code = runWindow(o, report);
+        if (code < 0) {
+            if (!o.headless && !displayAvailable())
+                std::cerr << "artillery play: no display (DISPLAY is not set); drawing headless\n";
+            o = headlessDemo(o);
+            code = runHeadless(o, report);
+        }
+    } catch (const std::exception& e) {
+        std::cerr << "artillery play: " << e.what() << "\n";
+        return game::cli::kCheckFailed;
+    }
+    if (code == game::cli::kOk) printReport(out, report, o, o.json);
+    return code;
+}
+
+} // namespace
+
+int runPlay(const Args& args, std::ostream& out) {
+    return play(parseOptions(args), out);
+}
+
+const game::cli::Verb& playVerb() {
+    static const game::cli::Verb verb{"play",
+                                      "play in a window (headless picture without a display)",
+                                      kPlayUsage,
+                                      {"headless", "no-panel", "no-drag", "velocities"},
+                                      runPlay};
+    return verb;
+}
+
+int runDefault(std::ostream& out, void (*printOverview)(std::ostream&)) {
+    if (displayAvailable()) return play(PlayOptions{}, out);
+    out << "No display: drawing the demo headless (OSMesa, EGL fallback).\n";
+    const int code = play(headlessDemo(PlayOptions{}), out);
+    if (code != game::cli::kOk) return code;
+    out << "Open the PNG above to see it; with a display, `artillery` opens the window.\n\n";
+    printOverview(out);
+    return code;
+}
+
+} // namespace ui
