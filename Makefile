@@ -11,7 +11,7 @@ PACKAGES := cmake g++ make pkg-config libbox2d-dev libsdl2-dev libimgui-dev \
             nlohmann-json3-dev libgtest-dev libbenchmark-dev libeigen3-dev xvfb xauth
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build play test bench clean
+.PHONY: all deps configure build play test bench charts clean sanitize fuzz
 
 all: build
 
@@ -40,5 +40,48 @@ play: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
+# The README's speed-and-accuracy charts: docs/*.png from the bench verbs (about a
+# minute on 2 cores; the CSVs go to $(BUILD)/charts/). Add BENCH=--full for the long sweeps.
+charts: build
+	@mkdir -p $(BUILD)/charts docs
+	./$(BUILD)/artillery bench work-precision $(BENCH) --csv $(BUILD)/charts/work_precision.csv --png docs/work_precision.png
+	./$(BUILD)/artillery bench stability $(BENCH) --csv $(BUILD)/charts/stability.csv --png docs/stability.png
+	./$(BUILD)/artillery bench scaling $(BENCH) --csv $(BUILD)/charts/scaling.csv --png docs/scaling.png
+
 clean:
 	rm -rf $(BUILD)
+
+# --- Robustness (issue 8) -----------------------------------------------------------
+# make sanitize: the whole suite built with AddressSanitizer + UndefinedBehaviorSanitizer,
+# floating-point exceptions trapped in the physics tests (ARTILLERY_TRAP_FP).
+SAN_BUILD ?= build-asan
+sanitize: deps
+	cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARTILLERY_SANITIZE=ON
+	cmake --build $(SAN_BUILD) -j $(JOBS)
+	cd $(SAN_BUILD) && ARTILLERY_TRAP_FP=1 ASAN_OPTIONS=detect_leaks=0 \
+	  UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
+
+# make fuzz: libFuzzer on the level, replay and commands loaders, FUZZ_SECONDS each.
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_PACKAGES := clang libclang-rt-14-dev
+fuzz: deps
+	@missing=$$(for p in $(FUZZ_PACKAGES); do \
+	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; \
+	  done); \
+	if [ -n "$$missing" ]; then \
+	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing; \
+	fi
+	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARTILLERY_FUZZ=ON
+	cmake --build $(FUZZ_BUILD) -j $(JOBS)
+	@for t in level replay commands; do \
+	  case $$t in \
+	    level) seeds="levels tests/data/bad_levels" ;; \
+	    replay) seeds="tests/replays tests/data/bad_replays" ;; \
+	    commands) seeds="tests/data/bad_commands" ;; \
+	  esac; \
+	  corpus=$(FUZZ_BUILD)/corpus/$$t; mkdir -p $$corpus; \
+	  echo "fuzzing the $$t loader for $(FUZZ_SECONDS) s"; \
+	  $(FUZZ_BUILD)/tests/fuzz/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -max_len=65536 \
+	    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 $$corpus $$seeds 2>&1 | tail -4 || exit 1; \
+	done

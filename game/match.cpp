@@ -25,6 +25,7 @@ const char* eventName(EventKind k) {
     case EventKind::MatchOver: return "match_over";
     case EventKind::SettingChanged: return "setting_changed";
     case EventKind::Refused: return "refused";
+    case EventKind::Unstable: return "unstable";
     }
     return "?";
 }
@@ -181,7 +182,7 @@ void Match::buildWorld() {
             spring(ring[static_cast<std::size_t>(i)], ring[static_cast<std::size_t>((i + 1) % b.points)]);
             spring(ring[static_cast<std::size_t>(i)], center);
         }
-        blobs_.push_back({b, center, false});
+        blobs_.push_back({b, center, ring, false});
     }
     for (const Cannon& c : level_.cannons) {
         CannonState s;
@@ -289,7 +290,7 @@ void Match::fire() {
     emit(EventKind::Fired, current_, pd.position, c.speedMps, shellAmmo_.preset.name);
 }
 
-void Match::burst(Vec2 at) {
+void Match::burst(Vec2 at, int spared) {
     emit(EventKind::Burst, current_, at, shellAmmo_.blastRadius);
     const Blast blast{at, shellAmmo_.blastImpulse, shellAmmo_.blastRadius};
     world_.particles.remove(shell_); // the shell itself is gone
@@ -298,13 +299,15 @@ void Match::burst(Vec2 at) {
     if (level_.terrain.destructible && shellAmmo_.craterRadius > 0.0 &&
         terrain_.carve(at, shellAmmo_.craterRadius)) {
         rebuildStaticShapes();
+        world_.wakeAll(); // sleepers do not notice that the ground under them has gone
         emit(EventKind::Crater, current_, at, shellAmmo_.craterRadius);
     }
     // Duel: a burst next to a cannon hits it.
     if (level_.mode == Mode::Duel)
         for (std::size_t i = 0; i < cannons_.size(); ++i) {
             CannonState& k = cannons_[i];
-            if (static_cast<int>(i) == current_ || k.hitPoints <= 0) continue;
+            if (static_cast<int>(i) == current_ || static_cast<int>(i) == spared || k.hitPoints <= 0)
+                continue;
             if (length(k.def.position - at) <= kCannonRadius + shellAmmo_.blastRadius * 0.5) {
                 --k.hitPoints;
                 emit(EventKind::CannonHit, static_cast<int>(i), at, k.hitPoints);
@@ -417,6 +420,16 @@ void Match::updateTargets() {
 
 void Match::step() {
     world_.step();
+    // The guard: nothing non-finite or runaway survives the tick, and the player is told
+    // which setting caused it.
+    const bool shellAlive = shell_ != kNoParticle && world_.particles.alive(shell_);
+    if (const GuardReport g = guardWorld(world_); g.tripped()) {
+        emit(EventKind::Unstable, current_, {}, g.removed, g.cause);
+        if (shellAlive && !world_.particles.alive(shell_)) {
+            endShot(closestMiss_);
+            return;
+        }
+    }
     coupling_.exchange(world_.particles, world_.materials, *rigid_);
     rigid_->step(world_.def().tickSeconds);
     updateTargets();
@@ -477,10 +490,7 @@ void Match::step() {
                 --k.hitPoints;
                 emit(EventKind::CannonHit, static_cast<int>(i), p, k.hitPoints);
                 if (shellAmmo_.blastRadius > 0.0) {
-                    // The burst at the cannon must not hit it a second time.
-                    const int hp = k.hitPoints;
-                    burst(p);
-                    k.hitPoints = hp;
+                    burst(p, static_cast<int>(i)); // which must not hit it a second time
                 } else {
                     world_.particles.remove(shell_);
                 }

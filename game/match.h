@@ -17,6 +17,7 @@
 #include "game/level.h"
 #include "game/terrain.h"
 #include "physics/coupling.h"
+#include "physics/guard.h"
 #include "physics/rigid/rigid_world.h"
 #include "physics/world.h"
 
@@ -43,6 +44,7 @@ enum class EventKind {
     MatchOver,   ///< the match ended (player: winner, -1 for none/draw; value: score)
     SettingChanged, ///< a `set` command took effect (text: name = value)
     Refused,     ///< a command was refused (text: why)
+    Unstable,    ///< the guard removed particles that blew up (value: how many; text: the cause)
 };
 const char* eventName(EventKind k);
 
@@ -82,6 +84,7 @@ struct BlockState {
 struct BlobState {
     Blob def;
     phys::ParticleId center = phys::kNoParticle;
+    std::vector<phys::ParticleId> ring; ///< the outline, counter-clockwise
     bool toppled = false;
 };
 
@@ -160,7 +163,8 @@ class Match {
     void updateTargets();
     /// Scores targets the shell has passed through and is now leaving (or all, at the end).
     void scorePasses(bool shotEnding);
-    void burst(phys::Vec2 at);
+    /// An explosive shell bursts at `at`; `spared` (a cannon index) was already hit directly.
+    void burst(phys::Vec2 at, int spared = -1);
     double drawWind();
 
     Level level_;

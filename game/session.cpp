@@ -21,7 +21,8 @@ std::string Session::submit(Command command) {
 
 void Session::step() {
     Match& m = *match_;
-    const bool cpuTurn = !m.over() && !m.shell() && m.cannon().def.player == "cpu";
+    const bool cpuTurn =
+        !m.over() && !m.shell() && (options_.autoplay || m.cannon().def.player == "cpu");
     if (cpuTurn) {
         if (!cpuFireTick_) cpuFireTick_ = m.tick() + options_.cpuDelayTicks;
         if (m.tick() >= *cpuFireTick_) {
@@ -50,5 +51,29 @@ Replay Session::finishedRecording() const {
 }
 
 void Session::save(const std::string& file) const { saveReplay(file, finishedRecording()); }
+
+void Session::rewindTo(std::uint64_t tick) {
+    if (tick > match_->tick()) tick = match_->tick();
+    const Level level = match_->level();
+    std::vector<Command> keep;
+    for (const Command& c : replay_.commands)
+        if (c.tick < tick) keep.push_back(c);
+    std::erase_if(replay_.checkpoints, [&](const Checkpoint& c) { return c.tick > tick; });
+    // The computer's generator must be where it was: re-create it and replay its turns'
+    // draws by re-running from the start with the recorded commands (the computer is not
+    // consulted again; its commands are in the recording).
+    match_ = std::make_unique<Match>(level);
+    std::size_t next = 0;
+    while (match_->tick() < tick) {
+        while (next < keep.size() && keep[next].tick <= match_->tick()) match_->apply(keep[next++]);
+        match_->step();
+    }
+    replay_.commands = std::move(keep);
+    eventsSeen_ = match_->events().size();
+    cpuFireTick_.reset();
+    // Draw the computer's generator forward past the turns it has already taken, so a
+    // branch does not repeat its earlier aim errors.
+    cpu_ = ComputerPlayer(options_.difficulty, options_.cpuSeed + tick);
+}
 
 } // namespace game

@@ -22,6 +22,8 @@ struct SessionOptions {
     std::uint64_t checkpointEvery = kDefaultCheckpointEvery;
     /// Replay file written at the end of every turn and of the match ("" = none).
     std::string recordFile;
+    /// The computer plays every cannon (demos, golden replays), not only "cpu" ones.
+    bool autoplay = false;
 };
 
 class Session {
@@ -42,6 +44,11 @@ class Session {
     Replay finishedRecording() const;
     /// Writes the recording now (atomically); throws std::runtime_error on failure.
     void save(const std::string& file) const;
+    /// Goes back to `tick` (<= now) by re-simulating the recorded commands from the start:
+    /// the result is the very state the match had then (snapshots of Box2D worlds cannot
+    /// be copied, but a deterministic re-run can). Commands after `tick` are dropped, so
+    /// play continues from there as a new branch.
+    void rewindTo(std::uint64_t tick);
 
   private:
     std::unique_ptr<Match> match_;

@@ -17,6 +17,8 @@ const SettingInfo kSettings[] = {
     {"air_density", "kg/m^3", "air density for drag", K::Number, 0.0, 100.0},
     {"drag", "", "quadratic air drag on or off", K::Boolean},
     {"wind", "m/s", "horizontal wind speed (+ blows to the right)", K::Number, -100.0, 100.0},
+    {"model", "", "auto: the closed form wherever only gravity acts; integrate: every particle "
+                  "through the integrator", K::Choice},
 };
 
 std::string rangeText(const SettingInfo& s) {
@@ -84,6 +86,10 @@ std::string applySetting(phys::WorldDef& def, const std::string& name, const Set
                 return "integrator expects one of " + phys::integratorNameList() + ", got " +
                        describe(value);
             next.integrator = *id;
+        } else if (n == "model") {
+            if (!t || (*t != "auto" && *t != "integrate"))
+                return "model expects \"auto\" or \"integrate\", got " + describe(value);
+            next.model = *t == "auto" ? phys::ModelPolicy::Auto : phys::ModelPolicy::Integrate;
         } else if (n == "planet") {
             auto g = t ? phys::gravityFromPlanet(*t) : std::nullopt;
             if (!g) return "planet expects one of earth, moon, mars, jupiter, got " + describe(value);
@@ -110,6 +116,7 @@ SettingValue readSetting(const phys::WorldDef& def, const std::string& name) {
     if (name == "air_density") return def.forces.airDensity;
     if (name == "drag") return def.forces.drag != phys::DragModel::None;
     if (name == "wind") return def.forces.wind.x;
+    if (name == "model") return std::string(phys::modelPolicyName(def.model));
     return std::string("?");
 }
 

@@ -197,9 +197,11 @@ class Dynamics {
         return {def_.gravity.x + im * force.x, def_.gravity.y + im * force.y};
     }
 
-    /// True when the particle is moved by forces (alive, not fixed, not asleep).
+    /// True when the particle is moved by forces (alive, not fixed, not asleep, not on
+    /// the closed form).
     bool active(std::size_t i) const {
-        return set_.invMass[i] > 0.0 && (set_.flags[i] & (kAlive | kSleeping)) == kAlive;
+        return set_.invMass[i] > 0.0 &&
+               (set_.flags[i] & (kAlive | kSleeping | kBallistic)) == kAlive;
     }
     /// Gravity acting on slot i (0 for inactive or kNoGravity particles).
     Vec2 gravityOn(std::size_t i) const;

@@ -55,7 +55,7 @@ void symplecticEuler(const Dynamics& dyn, ParticleSet& s, double dt, IntegratorS
         const std::uint32_t* fl = s.flags.data();
         for (std::size_t i = 0; i < n; ++i) {
             const std::uint32_t f = fl[i];
-            if (!(im[i] > 0.0) || (f & (kAlive | kSleeping)) != kAlive) { // not moved by forces
+            if (!(im[i] > 0.0) || (f & (kAlive | kSleeping | kBallistic)) != kAlive) { // no forces
                 px[i] += dt * vx[i];
                 py[i] += dt * vy[i];
                 continue;

@@ -18,9 +18,9 @@ namespace {
 // static >= dynamic; they are game values, not measurements.
 const Material kBuiltIn[] = {
     {"default", 0.5, 0.5, 0.4},
-    {"floor", 1.0, 0.6, 0.5},               // the rigid reference floor of the drop tests
-    {"perfectly-elastic", 1.0, 0.0, 0.0},   // e = 1: kinetic energy kept
-    {"perfectly-plastic", 0.0, 0.6, 0.5},   // e = 0: no bounce at all
+    {"floor", 1.0, 0.6, 0.5},             // the rigid reference floor of the drop tests
+    {"perfectly-elastic", 1.0, 0.0, 0.0}, // e = 1: kinetic energy kept
+    {"perfectly-plastic", 0.0, 0.6, 0.5}, // e = 0: no bounce at all
     {"golf", 0.858, 0.35, 0.25},
     {"tennis", 0.712, 0.6, 0.5},
     {"billiard", 0.804, 0.2, 0.15},
@@ -109,7 +109,8 @@ void MaterialTable::rebuild() {
     const std::size_t n = materials_.size();
     mixed_.assign(n * n, {});
     for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j) mixed_[i * n + j] = combine(materials_[i], materials_[j]);
+        for (std::size_t j = 0; j < n; ++j)
+            mixed_[i * n + j] = combine(materials_[i], materials_[j]);
     for (const auto& o : overrides_) {
         if (o.a >= n || o.b >= n) continue;
         mixed_[o.a * n + o.b] = o.p;

@@ -68,7 +68,10 @@ class MaterialTable {
   private:
     void rebuild();
     std::vector<Material> materials_;
-    struct Override { MaterialId a, b; PairProperties p; };
+    struct Override {
+        MaterialId a, b;
+        PairProperties p;
+    };
     std::vector<Override> overrides_;
     std::vector<PairProperties> mixed_; // size^2, row-major
 };

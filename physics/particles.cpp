@@ -16,7 +16,7 @@ ParticleId ParticleSet::add(const ParticleDef& def) {
     } else {
         id = static_cast<ParticleId>(px.size());
         for (auto* a : {&px, &py, &vx, &vy, &invMass, &radius, &dragCd, &prevX, &prevY, &halfVx,
-                        &halfVy})
+                        &halfVy, &launchX, &launchY, &launchVx, &launchVy, &launchT})
             a->push_back(0.0);
         material.push_back(0);
         flags.push_back(0);
@@ -30,7 +30,7 @@ ParticleId ParticleSet::add(const ParticleDef& def) {
     radius[id] = def.radius;
     dragCd[id] = def.dragCoefficient;
     material[id] = def.material;
-    flags[id] = (def.flags | kAlive) & ~kHistoryFlags;
+    flags[id] = (def.flags | kAlive) & ~(kHistoryFlags | kBallistic); // the world picks the model
     prevX[id] = def.position.x;
     prevY[id] = def.position.y;
     halfVx[id] = def.velocity.x;
@@ -42,6 +42,9 @@ void ParticleSet::remove(ParticleId id) {
     if (!alive(id)) return;
     flags[id] = 0;
     invMass[id] = 0.0;
+    // Zero the whole state, so a slot removed for being non-finite holds no NaN that a
+    // whole-array kernel could spread or a renderer could read.
+    px[id] = py[id] = prevX[id] = prevY[id] = 0.0;
     vx[id] = vy[id] = 0.0;
     halfVx[id] = halfVy[id] = 0.0;
     radius[id] = 0.0;
@@ -50,7 +53,8 @@ void ParticleSet::remove(ParticleId id) {
 
 void ParticleSet::reserve(std::size_t n) {
     for (auto* a :
-         {&px, &py, &vx, &vy, &invMass, &radius, &dragCd, &prevX, &prevY, &halfVx, &halfVy})
+         {&px, &py, &vx, &vy, &invMass, &radius, &dragCd, &prevX, &prevY, &halfVx, &halfVy,
+          &launchX, &launchY, &launchVx, &launchVy, &launchT})
         a->reserve(n);
     material.reserve(n);
     flags.reserve(n);
@@ -59,7 +63,8 @@ void ParticleSet::reserve(std::size_t n) {
 
 void ParticleSet::clear() {
     for (auto* a :
-         {&px, &py, &vx, &vy, &invMass, &radius, &dragCd, &prevX, &prevY, &halfVx, &halfVy})
+         {&px, &py, &vx, &vy, &invMass, &radius, &dragCd, &prevX, &prevY, &halfVx, &halfVy,
+          &launchX, &launchY, &launchVx, &launchVy, &launchT})
         a->clear();
     material.clear();
     flags.clear();

@@ -30,6 +30,9 @@ enum ParticleFlag : std::uint32_t {
     kLeapfrogPrimed = 1u << 6,///< leapfrog has a staggered half-step velocity for it
     kSleeping = 1u << 7,      ///< at rest; skipped until something wakes it
     kProjectile = 1u << 8,    ///< fired by a cannon (game events track it)
+    /// Moved by the closed form p0 + v0 t + g t^2/2 from its launch state (World, model
+    /// policy Auto): only uniform gravity acts on it, so the integrators leave it alone.
+    kBallistic = 1u << 9,
 };
 
 /// Definition of one particle, with defaults and units.
@@ -56,6 +59,9 @@ struct ParticleSet {
     // Integrator history (position Verlet's previous position, leapfrog's v_{n+1/2}).
     std::vector<double> prevX, prevY;
     std::vector<double> halfVx, halfVy;
+    // Closed-form launch state of kBallistic particles: position, velocity and the world
+    // time (s) they were launched at.
+    std::vector<double> launchX, launchY, launchVx, launchVy, launchT;
 
     /// Adds a particle; reuses a dead slot when there is one. Returns its id.
     ParticleId add(const ParticleDef& def);

@@ -38,7 +38,9 @@ constexpr ProjectilePreset kPresets[] = {
 
 } // namespace
 
-std::span<const ProjectilePreset> projectilePresets() { return kPresets; }
+std::span<const ProjectilePreset> projectilePresets() {
+    return kPresets;
+}
 
 std::optional<ProjectilePreset> projectileFromName(std::string_view name) {
     for (const auto& p : kPresets)

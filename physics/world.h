@@ -20,8 +20,21 @@
 
 namespace phys {
 
+/// How particles are moved ("model no more than a scene needs", DESIGN.md).
+enum class ModelPolicy {
+    /// A particle that only uniform gravity acts on follows the closed form (exact at any
+    /// dt, O(1)); drag, wind, water, springs, rods or point gravity hand it to the
+    /// integrator, at the moment the condition changes, from its exact state.
+    Auto,
+    /// Every particle goes through the selected integrator, so the integrator toggle
+    /// shows its effect even where the closed form would be exact.
+    Integrate,
+};
+const char* modelPolicyName(ModelPolicy p);
+
 /// World settings, with defaults and units.
 struct WorldDef {
+    ModelPolicy model = ModelPolicy::Auto;
     double tickSeconds = 1.0 / 120.0;  ///< fixed tick, s, > 0
     int substeps = 1;                  ///< integration sub-steps per tick, >= 1
     Integrator integrator = Integrator::VelocityVerlet;
@@ -39,6 +52,11 @@ struct StepProfile {
     double constraintsUs = 0.0; ///< rods and cables
     double springsUs = 0.0;     ///< plastic flow and breaking
     double totalUs = 0.0;
+    // Which model each alive particle was in during the tick.
+    int closedForm = 0; ///< on the closed form (kBallistic)
+    int integrated = 0; ///< moved by the integrator
+    int sleeping = 0;   ///< asleep: costs next to nothing
+    int fixed = 0;      ///< infinite mass (anchors, pins)
 };
 
 /// Returns "" when the definition is usable, else what is wrong and the allowed range.
@@ -63,7 +81,8 @@ class World {
     void setDef(const WorldDef& def);
 
     std::uint64_t tick() const { return tick_; }
-    double time() const { return static_cast<double>(tick_) * def_.tickSeconds; }
+    /// Simulated time, s: the sum of the ticks so far (the tick length may change).
+    double time() const { return time_; }
     const StepProfile& profile() const { return profile_; }
     std::uint64_t hash() const;
     /// Springs broken since the world was made.
@@ -71,12 +90,19 @@ class World {
     /// Contacts resolved during the last tick (hits for the game, bounces for tests).
     const std::vector<ContactEvent>& contacts() const { return collisions_.events(); }
     const CollisionStats& collisionStats() const { return collisions_.stats(); }
+    /// Wakes every sleeping particle. Call after editing `shapes` (a crater in the
+    /// terrain): a sleeper does not notice that its support has gone.
+    void wakeAll();
     /// Largest relative length error of a rod or cable after the last tick.
     double constraintError() const { return constraintError_; }
 
   private:
     WorldDef def_;
     void collideAndResolve(double h, double tickTime);
+    void markTethered();
+    void chooseModels();
+    void launchBallistic(double now);
+    void advanceBallistic(double now);
     IntegratorScratch scratch_;
     ParticleCollisions collisions_;
     ConstraintScratch constraintScratch_;
@@ -84,6 +110,7 @@ class World {
     double constraintError_ = 0.0;
     StepProfile profile_;
     std::uint64_t tick_ = 0;
+    double time_ = 0.0;
     int brokenSprings_ = 0;
 };
 

@@ -1,7 +1,11 @@
 #include "ui/app.h"
 
 #include "game/cli/verbs.h"
+#include "ui/charts/bench_verb.h"
+#include "ui/game/png_frames.h"
 #include "ui/play/play_verb.h"
+
+#include <string_view>
 
 #include <iostream>
 #include <string>
@@ -12,9 +16,12 @@ namespace ui {
 namespace {
 
 std::vector<game::cli::Verb> allVerbs() {
-    // play first: it is what a player runs; then the verbs that need no window.
+    // play first: it is what a player runs; then the verbs that need no window, with
+    // `run` replaced by the same verb given the renderer (so --png works).
     std::vector<game::cli::Verb> all{playVerb()};
-    all.insert(all.end(), game::cli::verbs().begin(), game::cli::verbs().end());
+    for (const game::cli::Verb& v : game::cli::verbs())
+        all.push_back(std::string_view(v.name) == "run" ? runVerbWithRenderer() : v);
+    all.push_back(benchVerb()); // draws its charts with the renderer, so it lives in ui/
     return all;
 }
 

@@ -1,5 +1,6 @@
 #include "game/bench/scaling.h"
 
+#include "physics/rigid/rigid_world.h"
 #include "physics/world.h"
 
 #include <algorithm>
@@ -83,7 +84,119 @@ std::unique_ptr<World> clothWorld(int side, int substeps) {
     return w;
 }
 
+// The pile: balls of radius 0.05 m on a grid 0.12 m apart (a little jitter so they do
+// not stack in perfect columns), about twice as many columns as rows, in an open box.
+constexpr double kBallRadius = 0.05, kBallSpacing = 0.12;
+constexpr double kWoodenRestitution = 0.603; // the notes' wooden preset (materials.h)
+
+struct PileLayout {
+    long columns = 1, rows = 1;
+    double width = 1.0; ///< inside of the box, m
+};
+
+PileLayout pileLayout(long n) {
+    PileLayout l;
+    l.columns = std::max(4L, static_cast<long>(std::ceil(std::sqrt(2.0 * n))));
+    l.rows = (n + l.columns - 1) / l.columns;
+    l.width = static_cast<double>(l.columns) * kBallSpacing + kBallSpacing;
+    return l;
+}
+
+template <class Place>
+void placeBalls(long n, const PileLayout& l, Place place) {
+    std::mt19937_64 rng(777);
+    std::uniform_real_distribution<double> jitter(-0.01, 0.01);
+    for (long i = 0; i < n; ++i) {
+        const long c = i % l.columns, r = i / l.columns;
+        place(Vec2{kBallSpacing * (static_cast<double>(c) + 1.0) + jitter(rng),
+                   kBallSpacing * (static_cast<double>(r) + 1.0) + jitter(rng)});
+    }
+}
+
+std::unique_ptr<World> particlePile(long n) {
+    const PileLayout l = pileLayout(n);
+    auto w = std::make_unique<World>(WorldDef{}); // default collision settings
+    const double top = kBallSpacing * static_cast<double>(l.rows + 4);
+    w->shapes.addSegment({0.0, 0.0}, {l.width, 0.0}, material::kWooden);
+    w->shapes.addSegment({0.0, 0.0}, {0.0, top}, material::kWooden);
+    w->shapes.addSegment({l.width, 0.0}, {l.width, top}, material::kWooden);
+    w->particles.reserve(static_cast<std::size_t>(n));
+    placeBalls(n, l, [&](Vec2 p) {
+        ParticleDef pd;
+        pd.position = p;
+        pd.radius = kBallRadius;
+        pd.mass = 0.1;
+        pd.material = material::kWooden;
+        w->particles.add(pd);
+    });
+    return w;
+}
+
+std::unique_ptr<RigidWorld> rigidPile(long n) {
+    const PileLayout l = pileLayout(n);
+    auto w = std::make_unique<RigidWorld>(RigidWorldDef{});
+    const double top = kBallSpacing * static_cast<double>(l.rows + 4);
+    const RigidMaterial wood{1000.0, 0.6, kWoodenRestitution};
+    // Solid inside the loop would trap the balls, so three open chains: floor (drawn
+    // left to right, solid below) and the walls (solid outside).
+    const Vec2 floor[] = {{0.0, 0.0}, {l.width, 0.0}};
+    const Vec2 left[] = {{0.0, top}, {0.0, 0.0}};
+    const Vec2 right[] = {{l.width, 0.0}, {l.width, top}};
+    w->createTerrain(floor, wood);
+    w->createTerrain(left, wood);
+    w->createTerrain(right, wood);
+    placeBalls(n, l, [&](Vec2 p) {
+        BodyDef bd;
+        bd.position = p;
+        w->createCircle(bd, kBallRadius, wood);
+    });
+    return w;
+}
+
 } // namespace
+
+double pileWorkload(long n, int steps) {
+    auto w = particlePile(n);
+    for (int i = 0; i < kPileSettleTicks; ++i) w->step();
+    const auto t0 = Clock::now();
+    for (int i = 0; i < steps; ++i) w->step();
+    return seconds(t0);
+}
+
+double rigidPileWorkload(long n, int steps) {
+    auto w = rigidPile(n);
+    const double tick = WorldDef{}.tickSeconds;
+    for (int i = 0; i < kPileSettleTicks; ++i) w->step(tick);
+    const auto t0 = Clock::now();
+    for (int i = 0; i < steps; ++i) w->step(tick);
+    return seconds(t0);
+}
+
+PileComparison comparePiles(long balls, int steps, int repeats) {
+    // Both piles are built and settled once; the repeats then time consecutive windows
+    // of the same run, alternating so a burst of load from elsewhere hits both.
+    PileComparison r;
+    r.balls = balls;
+    auto particles = particlePile(balls);
+    auto rigid = rigidPile(balls);
+    const double tick = WorldDef{}.tickSeconds;
+    for (int i = 0; i < kPileSettleTicks; ++i) {
+        particles->step();
+        rigid->step(tick);
+    }
+    std::vector<double> pt, rt;
+    for (int k = 0; k < std::max(1, repeats); ++k) {
+        auto t0 = Clock::now();
+        for (int i = 0; i < steps; ++i) particles->step();
+        pt.push_back(seconds(t0) / steps);
+        t0 = Clock::now();
+        for (int i = 0; i < steps; ++i) rigid->step(tick);
+        rt.push_back(seconds(t0) / steps);
+    }
+    r.particleMs = 1e3 * median(pt);
+    r.rigidMs = 1e3 * median(rt);
+    return r;
+}
 
 double flightWorkload(long n, int steps) {
     auto w = flightWorld(n);
@@ -138,11 +251,16 @@ BandwidthResult measureBandwidth(long n, int steps, int repeats) {
     r.n = n;
     auto w = flightWorld(n);
     w->step();
-    std::vector<double> pt, st;
+    std::vector<double> pt, st, it;
     for (int k = 0; k < repeats; ++k) {
         const auto t0 = Clock::now();
-        for (int i = 0; i < steps; ++i) w->step();
+        double integrateUs = 0.0;
+        for (int i = 0; i < steps; ++i) {
+            w->step();
+            integrateUs += w->profile().integrateUs;
+        }
         pt.push_back(seconds(t0) / steps);
+        it.push_back(1e-6 * integrateUs / steps);
     }
     // The streaming kernel: the same arrays, read and written once per step, with the
     // least arithmetic that uses every byte (what a perfect fused update would move).
@@ -163,6 +281,7 @@ BandwidthResult measureBandwidth(long n, int steps, int repeats) {
         st.push_back(seconds(t0) / steps);
     }
     r.particleMs = 1e3 * median(pt);
+    r.integrateMs = 1e3 * median(it);
     r.streamMs = 1e3 * median(st);
     return r;
 }

@@ -36,6 +36,25 @@ double flightWorkload(long n, int steps);
 /// A square cloth of about n particles with structural and shear springs, 8 sub-steps.
 double clothWorkload(long n, int steps);
 
+/// A pile of about n balls (radius 0.05 m, wooden, COR 0.603) dropped into a box of
+/// three static segments, in the particle layer with the default collision settings.
+/// The first `settleTicks` ticks (the balls falling and landing) are not timed.
+double pileWorkload(long n, int steps);
+/// The same pile as Box2D circles in a RigidWorld (same box, radius, restitution).
+double rigidPileWorkload(long n, int steps);
+
+/// Ticks run before the pile workloads are timed: 0.5 s at 1/120 s, so most balls are
+/// in contact when the clock starts.
+inline constexpr int kPileSettleTicks = 60;
+
+/// The same pile of balls as particles and as Box2D circles, one run: per-step medians.
+struct PileComparison {
+    long balls = 0;
+    double particleMs = 0, rigidMs = 0;
+    double speedup() const { return particleMs > 0 ? rigidMs / particleMs : 0; }
+};
+PileComparison comparePiles(long balls = 2000, int steps = 60, int repeats = 3);
+
 /// Least-squares slope of log(cost) against log(n): 1 is linear scaling.
 double scalingExponent(const std::vector<ScalingPoint>& points);
 
@@ -44,13 +63,25 @@ double scalingExponent(const std::vector<ScalingPoint>& points);
 struct BandwidthResult {
     long n = 0;
     double particleMs = 0, streamMs = 0;
+    /// The integrate phase alone (World::profile), without the per-tick sleep and spring
+    /// passes that World::step also makes over every particle.
+    double integrateMs = 0;
     double ratio() const { return streamMs > 0 ? particleMs / streamMs : 0; }
+    double integrateRatio() const { return streamMs > 0 ? integrateMs / streamMs : 0; }
 };
 BandwidthResult measureBandwidth(long n, int steps = 10, int repeats = 5);
 
 /// Cloth of 64 x 64 with structural and shear springs, 8 sub-steps per 1/60 s frame:
 /// milliseconds per frame (median).
 double clothFrameMs(int side = 64, int frames = 30);
+
+/// Everything `artillery bench scaling` measures in one run.
+struct ScalingReport {
+    std::vector<ScalingPoint> points; ///< every workload's sweep
+    PileComparison pile;
+    BandwidthResult bandwidth;
+    double clothMs = 0;               ///< clothFrameMs(64)
+};
 
 std::string toCsv(const std::vector<ScalingPoint>& points);
 

@@ -2,6 +2,7 @@
 
 #include "physics/world.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -142,6 +143,26 @@ std::string toCsv(const std::vector<StabilityRow>& rows) {
         std::snprintf(line, sizeof line, "%s,%.6g,%.6g,%.6g\n", info(r.integrator).name,
                       r.maxOmegaDt, r.theoryOmegaDt, r.ropeStiffness);
         out += line;
+    }
+    return out;
+}
+
+std::vector<GrowthCurve> energyGrowthCurves(double lo, double hi, int samples,
+                                            const std::function<void(int, int)>& progress) {
+    std::vector<GrowthCurve> out;
+    const int n = std::max(2, samples);
+    const int total = static_cast<int>(phys::integrators().size());
+    int done = 0;
+    for (const auto& m : phys::integrators()) {
+        GrowthCurve c{m.id, {}, {}};
+        for (int k = 0; k < n; ++k) {
+            const double wdt = lo * std::pow(hi / lo, static_cast<double>(k) / (n - 1));
+            // Fewer steps than the limit search: the chart needs the trend, not 1e-4.
+            c.omegaDt.push_back(wdt);
+            c.growth.push_back(energyGrowth(m.id, wdt, 1000));
+        }
+        out.push_back(std::move(c));
+        if (progress) progress(++done, total);
     }
     return out;
 }

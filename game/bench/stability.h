@@ -59,6 +59,18 @@ double theoreticalOmegaDt(phys::Integrator m);
 std::vector<StabilityRow> runStability(const std::function<void(int, int)>& progress = {},
                                        const RopeDef& rope = {});
 
+/// Energy growth of one integrator across a sweep of w dt: the curve the stability chart
+/// draws, so it shows where (and how violently) each method fails.
+struct GrowthCurve {
+    phys::Integrator integrator;
+    std::vector<double> omegaDt; ///< rad (w dt is dimensionless)
+    std::vector<double> growth;  ///< energyGrowth at each w dt (may be infinite)
+};
+
+/// `samples` values of w dt spaced evenly in log between lo and hi, for every integrator.
+std::vector<GrowthCurve> energyGrowthCurves(double lo, double hi, int samples,
+                                            const std::function<void(int, int)>& progress = {});
+
 /// CSV: integrator,max_omega_dt,theory_omega_dt,rope_max_stiffness_n_per_m
 std::string toCsv(const std::vector<StabilityRow>& rows);
 

@@ -3,6 +3,7 @@
 
 #include "physics/collision/drop.h"
 #include "physics/materials.h"
+#include "physics/rigid/rigid_drop.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,7 +25,8 @@ int runDrop(const Args& args, std::ostream& out) {
     } else {
         const std::string name = *args.text("material");
         const auto id = table.find(name);
-        if (!id) args.fail("--material expects one of " + table.nameList() + ", got '" + name + "'");
+        if (!id)
+            args.fail("--material expects one of " + table.nameList() + ", got '" + name + "'");
         def.material = *id;
     }
     def.bounces = static_cast<int>(args.integer("bounces", 3, 1, 100));
@@ -33,13 +35,56 @@ int runDrop(const Args& args, std::ostream& out) {
     def.gravity = gravityOption(args);
     if (!(def.gravity > 0.0)) args.fail("--gravity must be > 0 m/s^2 for a drop");
     def.collision.continuous = !args.flag("discrete");
+    const std::string contact = args.text("contact", "impulse");
+    if (contact == "penalty")
+        def.collision.model = phys::ContactModel::Penalty;
+    else if (contact != "impulse")
+        args.fail("--contact expects impulse or penalty, got '" + contact + "'");
+    def.collision.penaltyHertz =
+        args.number("stiffness", def.collision.penaltyHertz, 1e-3, 1e6, "Hz");
     const std::string model = args.text("model", "particle");
     const bool json = args.flag("json");
     args.rejectUnknown();
-    if (model == "rigid")
-        args.fail("--model rigid: rigid bodies are not yet available for the drop "
-                  "(use --model particle)");
-    if (model != "particle") args.fail("--model expects particle or rigid, got '" + model + "'");
+    if (model != "particle" && model != "rigid")
+        args.fail("--model expects particle or rigid, got '" + model + "'");
+    if (model == "rigid") {
+        // The same drop as a Box2D circle on a static floor: how close Box2D gets (it
+        // reverses the speed at the end of a step, after that step's gravity, and rests
+        // bodies inside a contact skin; see physics/rigid/rigid_world.h).
+        const double e = hasCor ? *def.restitution : table[def.material].restitution;
+        phys::RigidDropDef rd;
+        rd.height = def.height;
+        rd.restitution = e;
+        rd.bounces = def.bounces;
+        rd.tickSeconds = def.dt;
+        rd.gravity = def.gravity;
+        const auto apexes = phys::rigidDropApexes(rd);
+        nlohmann::json bounces = nlohmann::json::array();
+        char line[200];
+        if (!json) {
+            std::snprintf(line, sizeof line, "drop from %g m as a Box2D circle, e = %g, dt = %g s\n",
+                          def.height, e, def.dt);
+            out << line << "  bounce   apex (m)        expected e^2k H (m)   error\n";
+        }
+        for (std::size_t k = 0; k < apexes.size(); ++k) {
+            const double expected = std::pow(e, 2.0 * static_cast<double>(k + 1)) * def.height;
+            const double err = expected > 0.0 ? (apexes[k] - expected) / expected : apexes[k];
+            bounces.push_back({{"apex_m", apexes[k]}, {"expected_apex_m", expected}, {"relative_error", err}});
+            if (!json) {
+                std::snprintf(line, sizeof line, "  %-6zu   %-14.9g  %-20.9g  %+.4g %%\n", k + 1,
+                              apexes[k], expected, 100.0 * err);
+                out << line;
+            }
+        }
+        if (json)
+            out << nlohmann::json{{"model", "rigid"}, {"height_m", def.height}, {"restitution", e},
+                                  {"dt_s", def.dt}, {"bounces", bounces}}.dump()
+                << "\n";
+        else if (apexes.size() < static_cast<std::size_t>(def.bounces))
+            out << "  Box2D stopped the ball after " << apexes.size()
+                << " bounce(s) (its restitution threshold kills slower bounces)\n";
+        return kOk;
+    }
 
     // The fall takes sqrt(2H/g), each bounce at most twice that: bound the work.
     const double fall = std::sqrt(2.0 * def.height / def.gravity);
@@ -47,6 +92,7 @@ int runDrop(const Args& args, std::ostream& out) {
     if (def.maxTime / def.dt > 5e7)
         args.fail("--height, --bounces and --dt ask for more than 5e7 steps; use a larger --dt");
     const phys::DropResult r = phys::simulateDrop(def);
+    const bool penalty = def.collision.model == phys::ContactModel::Penalty;
     if (json) {
         nlohmann::json j;
         j["height_m"] = def.height;
@@ -55,6 +101,8 @@ int runDrop(const Args& args, std::ostream& out) {
         j["dt_s"] = def.dt;
         j["continuous"] = def.collision.continuous;
         j["came_to_rest"] = r.cameToRest;
+        j["contact"] = contact;
+        j["max_penetration_m"] = r.maxPenetration;
         j["bounces"] = nlohmann::json::array();
         for (const auto& b : r.bounces)
             j["bounces"].push_back({{"apex_m", b.apex},
@@ -63,19 +111,29 @@ int runDrop(const Args& args, std::ostream& out) {
         out << j.dump() << "\n";
         return kOk;
     }
-    char line[200];
+    char line[240];
     std::snprintf(line, sizeof line,
                   "drop from %g m, %s, e = %g against the floor, %s, dt = %g s, %s detection\n",
-                  def.height, hasCor ? "ball given by --cor" : table[def.material].name.c_str(), r.restitution,
-                  phys::info(def.integrator).name, def.dt,
-                  def.collision.continuous ? "continuous" : "overlap (bisection)");
+                  def.height, hasCor ? "ball given by --cor" : table[def.material].name.c_str(),
+                  r.restitution, phys::info(def.integrator).name, def.dt,
+                  penalty                    ? "no (penalty springs)"
+                  : def.collision.continuous ? "continuous"
+                                             : "overlap (bisection)");
     out << line;
+    if (penalty) {
+        std::snprintf(line, sizeof line,
+                      "  penalty contact at %g Hz: the ball sank up to %.4g m into the floor "
+                      "(w dt = %.3g; unstable above 2)\n",
+                      def.collision.penaltyHertz, r.maxPenetration,
+                      2.0 * 3.141592653589793 * def.collision.penaltyHertz * def.dt);
+        out << line;
+    }
     out << "  bounce   apex (m)        expected e^2k H (m)   error\n";
     for (std::size_t k = 0; k < r.bounces.size(); ++k) {
         const auto& b = r.bounces[k];
         if (b.expected > 0.0)
-            std::snprintf(line, sizeof line, "  %-6zu   %-14.9g  %-20.9g  %+.4g %%\n", k + 1, b.apex,
-                          b.expected, 100.0 * b.relativeError);
+            std::snprintf(line, sizeof line, "  %-6zu   %-14.9g  %-20.9g  %+.4g %%\n", k + 1,
+                          b.apex, b.expected, 100.0 * b.relativeError);
         else
             std::snprintf(line, sizeof line, "  %-6zu   %-14.9g  %-20.9g  %+.3g m\n", k + 1, b.apex,
                           b.expected, b.relativeError);

@@ -77,6 +77,7 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
     const auto record = args.text("record");
     const std::string difficulty = args.text("difficulty", "normal");
     const bool hud = !args.flag("no-hud");
+    const bool autoplay = args.flag("autoplay");
     const bool json = args.flag("json");
     args.rejectUnknown();
     if (args.positionals().size() != 1) args.fail("name one level file");
@@ -90,6 +91,7 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
 
     HeadlessOptions o;
     o.session.difficulty = *difficultyFromName(difficulty);
+    o.session.autoplay = autoplay;
     Level level;
     try {
         level = loadLevel(args.positionals()[0]);

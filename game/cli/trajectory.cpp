@@ -41,6 +41,7 @@ int runTrajectory(const Args& args, std::ostream& out) {
     const double simulated = static_cast<double>(steps) * dt;
 
     phys::WorldDef def;
+    def.model = phys::ModelPolicy::Integrate; // the verb compares the integrator with the closed form
     def.tickSeconds = dt;
     def.integrator = method;
     def.forces.gravity = {0.0, -g};

@@ -80,7 +80,8 @@ stable below 2, RK4 below 2.83, implicit Euler always.
     {"drop", "bounce apexes of a dropped ball against e^(2k) H",
      R"(usage: artillery drop --height H (--cor E | --material NAME) [--bounces N]
            [--integrator NAME] [--dt S] [--model particle|rigid] [--discrete]
-           [--gravity G | --planet NAME] [--json]
+           [--contact impulse|penalty] [--stiffness F] [--gravity G | --planet NAME]
+           [--json]
 
 Drops a ball from rest, its lowest point H above a rigid floor, and reports the apex
 of each bounce against e^(2k) H, the height the notes' measurement e = sqrt(h/H)
@@ -104,10 +105,15 @@ own (first-order) error.
   --model M       particle (default); rigid is not yet available (exit 2)
   --discrete      overlap testing with bisection in time instead of continuous
                   (swept-sphere) detection
+  --contact M     impulse (default: equation 4 at the time of impact) or penalty
+                  (a spring-damper while overlapping: it sinks into the floor, and
+                  is unstable once 2 pi f dt > 2)
+  --stiffness F   penalty contact stiffness, Hz (default 10)
   --gravity G     m/s^2 (default 9.81), or --planet NAME
   --json          {"bounces":[{"apex_m":..,"expected_apex_m":..,"relative_error":..},
                    ...],"restitution":e,"height_m":H,"integrator":..,"dt_s":..,
-                   "continuous":true|false,"came_to_rest":true|false}
+                   "continuous":true|false,"came_to_rest":true|false,
+                   "contact":"impulse"|"penalty","max_penetration_m":..}
 
 Exit codes: 0 ok, 2 bad input (including --model rigid for now).
 )",
@@ -130,7 +136,7 @@ Exit code: 0 when every file is valid, 1 when any is not, 2 on bad usage.
     {"run", "headless simulation of a level: replay or script in, events, hash, PNG frames out",
      R"(usage: artillery run LEVEL.json [--replay FILE | --commands FILE] [--ticks N]
            [--png DIR --every K] [--size WxH] [--no-hud] [--record FILE]
-           [--difficulty easy|normal|hard] [--json]
+           [--autoplay] [--difficulty easy|normal|hard] [--json]
 
 Plays LEVEL with no window: the commands of a replay or of a commands script are
 applied at their ticks (the computer plays its own turns), and the run prints the
@@ -144,10 +150,11 @@ events, the score and the final state hash.
                      headlessly with the window's drawing code (OSMesa, or EGL)
   --size WxH         frame size (default 1280x720); --no-hud leaves the HUD out
   --record FILE      save this run as a replay
+  --autoplay         the computer plays every cannon (at --difficulty)
   --json             {"ticks":n,"final_hash":"hex","score":..,"shots":n,"over":b,
                       "winner":i,"events":[...],"sim_ms":..,"render_ms":..}
 )",
-     {"no-hud"},
+     {"no-hud", "autoplay"},
      runRun},
     {"replay", "replay verify FILE: re-simulate a replay and compare its checkpoints",
      R"(usage: artillery replay verify FILE [--json]

@@ -11,7 +11,9 @@ bool pairable(ProxyKind a, ProxyKind b) {
     return a != ProxyKind::None && b != ProxyKind::None &&
            (a == ProxyKind::Moving || b == ProxyKind::Moving);
 }
-ProxyPair ordered(std::uint32_t a, std::uint32_t b) { return a < b ? ProxyPair{a, b} : ProxyPair{b, a}; }
+ProxyPair ordered(std::uint32_t a, std::uint32_t b) {
+    return a < b ? ProxyPair{a, b} : ProxyPair{b, a};
+}
 } // namespace
 
 void allPairs(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds,
@@ -64,17 +66,21 @@ void UniformGrid::findPairs(std::span<const Aabb> boxes, std::span<const ProxyKi
             continue;
         }
         for (std::int64_t cx = x0; cx <= x1; ++cx)
-            for (std::int64_t cy = y0; cy <= y1; ++cy) entries_.push_back({cx, cy, i});
+            for (std::int64_t cy = y0; cy <= y1; ++cy)
+                entries_.push_back({cx, cy, i});
     }
 
     // Counting sort of the entries by bucket (hash of the cell): O(entries).
     const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(2 * entries_.size(), 16));
     const std::uint64_t mask = buckets - 1;
     bucketStart_.assign(buckets + 1, 0);
-    for (const Entry& e : entries_) ++bucketStart_[(cellHash(e.cx, e.cy) & mask) + 1];
-    for (std::size_t b = 0; b < buckets; ++b) bucketStart_[b + 1] += bucketStart_[b];
+    for (const Entry& e : entries_)
+        ++bucketStart_[(cellHash(e.cx, e.cy) & mask) + 1];
+    for (std::size_t b = 0; b < buckets; ++b)
+        bucketStart_[b + 1] += bucketStart_[b];
     sorted_.resize(entries_.size());
-    for (const Entry& e : entries_) sorted_[bucketStart_[cellHash(e.cx, e.cy) & mask]++] = e;
+    for (const Entry& e : entries_)
+        sorted_[bucketStart_[cellHash(e.cx, e.cy) & mask]++] = e;
     // bucketStart_[b] now holds the end of bucket b; bucket b starts at the end of b - 1.
 
     // Pairs sharing a cell, reported from the cell of the intersection's low corner.
@@ -116,7 +122,8 @@ void SortAndSweep::findPairs(std::span<const Aabb> boxes, std::span<const ProxyK
     {
         // Mark which proxies are already in order_ using the active_ buffer as a bitmap.
         active_.assign(n, 0);
-        for (auto i : order_) active_[i] = 1;
+        for (auto i : order_)
+            active_[i] = 1;
         for (std::uint32_t i = 0; i < n; ++i)
             if (!active_[i] && kinds[i] != ProxyKind::None) order_.push_back(i);
     }
@@ -130,7 +137,8 @@ void SortAndSweep::findPairs(std::span<const Aabb> boxes, std::span<const ProxyK
     mx /= m;
     my /= m;
     for (auto i : order_) {
-        const double dx = boxes[i].lo.x + boxes[i].hi.x - mx, dy = boxes[i].lo.y + boxes[i].hi.y - my;
+        const double dx = boxes[i].lo.x + boxes[i].hi.x - mx,
+                     dy = boxes[i].lo.y + boxes[i].hi.y - my;
         sx += dx * dx;
         sy += dy * dy;
     }
@@ -147,10 +155,88 @@ void SortAndSweep::findPairs(std::span<const Aabb> boxes, std::span<const ProxyK
         // Close intervals that ended before this one starts.
         std::erase_if(active_, [&](std::uint32_t a) { return hi(a) < start; });
         for (const std::uint32_t a : active_)
-            if (pairable(kinds[a], kinds[i]) && boxes[a].overlaps(boxes[i])) out.push_back(ordered(a, i));
+            if (pairable(kinds[a], kinds[i]) && boxes[a].overlaps(boxes[i]))
+                out.push_back(ordered(a, i));
         active_.push_back(i);
     }
     std::sort(out.begin(), out.end());
+}
+
+void StaticShapeIndex::update(const StaticShapes& shapes) {
+    if (shapes.version() == version_ && shapes.count() == count_ && version_ != 0) return;
+    version_ = shapes.version();
+    count_ = shapes.count();
+    boxes_.resize(count_);
+    cellStart_.clear();
+    items_.clear();
+    oversize_.clear();
+    nx_ = ny_ = 0;
+    if (count_ == 0) return;
+    Aabb all = shapes.bounds(shapes.ref(0));
+    double extent = 0.0;
+    for (std::size_t i = 0; i < count_; ++i) {
+        const Aabb b = shapes.bounds(shapes.ref(i));
+        boxes_[i] = b;
+        all.lo = {std::min(all.lo.x, b.lo.x), std::min(all.lo.y, b.lo.y)};
+        all.hi = {std::max(all.hi.x, b.hi.x), std::max(all.hi.y, b.hi.y)};
+        extent += std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+    }
+    // Cells about twice the mean shape size, at most ~1M of them over the shapes' bounds.
+    const Vec2 size = all.hi - all.lo;
+    cell_ = std::max({2.0 * extent / static_cast<double>(count_), 1e-3,
+                      std::sqrt(std::max(size.x * size.y, 1e-12) / 1e6)});
+    origin_ = all.lo;
+    nx_ = static_cast<std::int64_t>(size.x / cell_) + 1;
+    ny_ = static_cast<std::int64_t>(size.y / cell_) + 1;
+    // Counting sort of (cell, shape) entries into cellStart_/items_.
+    std::vector<std::uint32_t> count(static_cast<std::size_t>(nx_ * ny_) + 1, 0);
+    auto cellsOf = [&](const Aabb& b, auto&& visit) {
+        const std::int64_t x0 = static_cast<std::int64_t>((b.lo.x - origin_.x) / cell_);
+        const std::int64_t x1 = static_cast<std::int64_t>((b.hi.x - origin_.x) / cell_);
+        const std::int64_t y0 = static_cast<std::int64_t>((b.lo.y - origin_.y) / cell_);
+        const std::int64_t y1 = static_cast<std::int64_t>((b.hi.y - origin_.y) / cell_);
+        for (std::int64_t y = std::max<std::int64_t>(0, y0); y <= std::min(ny_ - 1, y1); ++y)
+            for (std::int64_t x = std::max<std::int64_t>(0, x0); x <= std::min(nx_ - 1, x1); ++x)
+                visit(static_cast<std::size_t>(y * nx_ + x));
+    };
+    auto cellCount = [&](const Aabb& b) {
+        const double w = (b.hi.x - b.lo.x) / cell_ + 1.0, h = (b.hi.y - b.lo.y) / cell_ + 1.0;
+        return w * h;
+    };
+    for (std::size_t i = 0; i < count_; ++i) {
+        if (cellCount(boxes_[i]) > UniformGrid::kMaxCellsPerBox) {
+            oversize_.push_back(static_cast<std::uint32_t>(i));
+            continue;
+        }
+        cellsOf(boxes_[i], [&](std::size_t c) { ++count[c + 1]; });
+    }
+    for (std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
+    cellStart_ = count;
+    items_.resize(count.back());
+    for (std::size_t i = 0; i < count_; ++i) {
+        if (cellCount(boxes_[i]) > UniformGrid::kMaxCellsPerBox) continue;
+        cellsOf(boxes_[i], [&](std::size_t c) { items_[count[c]++] = static_cast<std::uint32_t>(i); });
+    }
+}
+
+void StaticShapeIndex::query(const Aabb& box, std::vector<std::uint32_t>& out) const {
+    out.clear();
+    for (const std::uint32_t s : oversize_)
+        if (boxes_[s].overlaps(box)) out.push_back(s);
+    if (nx_ > 0) {
+        const std::int64_t x0 = static_cast<std::int64_t>(std::floor((box.lo.x - origin_.x) / cell_));
+        const std::int64_t x1 = static_cast<std::int64_t>(std::floor((box.hi.x - origin_.x) / cell_));
+        const std::int64_t y0 = static_cast<std::int64_t>(std::floor((box.lo.y - origin_.y) / cell_));
+        const std::int64_t y1 = static_cast<std::int64_t>(std::floor((box.hi.y - origin_.y) / cell_));
+        for (std::int64_t y = std::max<std::int64_t>(0, y0); y <= std::min(ny_ - 1, y1); ++y)
+            for (std::int64_t x = std::max<std::int64_t>(0, x0); x <= std::min(nx_ - 1, x1); ++x) {
+                const std::size_t c = static_cast<std::size_t>(y * nx_ + x);
+                for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k)
+                    if (boxes_[items_[k]].overlaps(box)) out.push_back(items_[k]);
+            }
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
 } // namespace phys

@@ -56,6 +56,27 @@ class UniformGrid {
     std::vector<std::uint32_t> oversize_;
 };
 
+/// The static shapes in a grid of their own, built once per StaticShapes::version():
+/// shapes never move, so only the moving particles' boxes are looked up each pass,
+/// instead of entering hundreds of terrain segments into the broad phase every pass.
+class StaticShapeIndex {
+  public:
+    /// Rebuilds the index if the shapes changed since the last call (cheap otherwise).
+    void update(const StaticShapes& shapes);
+    /// Indices (in StaticShapes::ref order) of the shapes whose box overlaps `box`,
+    /// sorted and unique; appended to `out` after clearing it.
+    void query(const Aabb& box, std::vector<std::uint32_t>& out) const;
+
+  private:
+    std::uint64_t version_ = 0;
+    std::size_t count_ = 0;
+    double cell_ = 1.0;
+    Vec2 origin_;
+    std::int64_t nx_ = 0, ny_ = 0;
+    std::vector<Aabb> boxes_;
+    std::vector<std::uint32_t> cellStart_, items_, oversize_;
+};
+
 class SortAndSweep {
   public:
     /// The overlapping pairs, sorted; `out` is cleared first. Keeps its buffers between

@@ -16,7 +16,8 @@ std::string validate(const CollisionDef& d) {
     if (d.maxPasses < 1 || d.maxPasses > 1000) return "collision passes must be in 1..1000";
     if (!(d.restingSpeed >= 0.0) || !std::isfinite(d.restingSpeed))
         return "resting speed must be >= 0 m/s";
-    if (!(d.sleepSpeed >= 0.0) || !std::isfinite(d.sleepSpeed)) return "sleep speed must be >= 0 m/s";
+    if (!(d.sleepSpeed >= 0.0) || !std::isfinite(d.sleepSpeed))
+        return "sleep speed must be >= 0 m/s";
     if (!(d.sleepTime >= 0.0) || !std::isfinite(d.sleepTime)) return "sleep time must be >= 0 s";
     if (!(d.penaltyHertz > 0.0) || !std::isfinite(d.penaltyHertz))
         return "penalty stiffness must be > 0 Hz";
@@ -29,18 +30,24 @@ std::string validate(const CollisionDef& d) {
 
 const char* broadPhaseName(BroadPhase b) {
     switch (b) {
-    case BroadPhase::Grid: return "grid";
-    case BroadPhase::SortAndSweep: return "sort-and-sweep";
-    case BroadPhase::AllPairs: return "all-pairs";
+    case BroadPhase::Grid:
+        return "grid";
+    case BroadPhase::SortAndSweep:
+        return "sort-and-sweep";
+    case BroadPhase::AllPairs:
+        return "all-pairs";
     }
     return "?";
 }
 
 const char* contactModelName(ContactModel m) {
     switch (m) {
-    case ContactModel::Impulse: return "impulse";
-    case ContactModel::Penalty: return "penalty";
-    case ContactModel::None: return "none";
+    case ContactModel::Impulse:
+        return "impulse";
+    case ContactModel::Penalty:
+        return "penalty";
+    case ContactModel::None:
+        return "none";
     }
     return "?";
 }

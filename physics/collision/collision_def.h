@@ -14,33 +14,33 @@ enum class ContactModel {
 
 enum class BroadPhase {
     Grid,         ///< uniform grid, O(n) for boxes spread over a level (default)
-    SortAndSweep, ///< plane sweep along the wider axis, O(n log n + k), degrades to O(n^1.5) on a 2D field
+    SortAndSweep, ///< plane sweep, O(n log n + k); O(n^1.5) over a 2D field
     AllPairs,     ///< every pair, O(n^2): the reference
 };
 
 struct CollisionDef {
     ContactModel model = ContactModel::Impulse;
     BroadPhase broadPhase = BroadPhase::Grid;
-    double gridCellSize = 0.0;        ///< m; 0 = twice the mean size of the moving boxes
+    double gridCellSize = 0.0; ///< m; 0 = twice the mean size of the moving boxes
     /// Swept-sphere detection with conservative advancement (no tunnelling). Off: the
     /// notes' overlap testing at the end of the step with bisection in time.
     bool continuous = true;
-    int bisectionHalvings = 5;        ///< halvings of an overlap bracket (notes: 5), 0..60
-    double toiTolerance = 1e-9;       ///< m: a gap this small counts as touching, > 0
-    int maxAdvanceIterations = 64;    ///< conservative-advancement steps per pair, >= 1
+    int bisectionHalvings = 5;     ///< halvings of an overlap bracket (notes: 5), 0..60
+    double toiTolerance = 1e-9;    ///< m: a gap this small counts as touching, > 0
+    int maxAdvanceIterations = 64; ///< conservative-advancement steps per pair, >= 1
     /// Detect-and-resolve passes per sub-step: each finds the impacts that the previous
     /// pass's bounces lead to later in the same step, >= 1.
     int maxPasses = 8;
-    bool particlePairs = true;        ///< particles collide with each other, not only with shapes
+    bool particlePairs = true; ///< particles collide with each other, not only with shapes
     /// m/s: a contact closing slower than this plus the speed its acceleration builds in
     /// one step (|a.n| dt, Millington's resting-contact rule) is resting: no bounce,
     /// and the surface supports the particle for the rest of the step.
     double restingSpeed = 0.01;
-    bool sleep = true;                ///< resting particles sleep (kSleeping) until woken
-    double sleepSpeed = 1e-3;         ///< m/s: slower than this in resting contact ...
-    double sleepTime = 0.5;           ///< s: ... for this long puts a particle to sleep
-    double penaltyHertz = 10.0;       ///< penalty contact stiffness, cycles per second (k = m (2 pi f)^2)
-    int constraintIterations = 4;     ///< most Newton steps of the rod/cable projection, >= 1
+    bool sleep = true;          ///< resting particles sleep (kSleeping) until woken
+    double sleepSpeed = 1e-3;   ///< m/s: slower than this in resting contact ...
+    double sleepTime = 0.5;     ///< s: ... for this long puts a particle to sleep
+    double penaltyHertz = 10.0; ///< penalty contact stiffness, cycles per second (k = m (2 pi f)^2)
+    int constraintIterations = 4;      ///< most Newton steps of the rod/cable projection, >= 1
     double constraintTolerance = 1e-6; ///< relative length error at which they stop, [0, 1)
 };
 

@@ -16,8 +16,8 @@ double wOf(const ParticleSet& s, ParticleId id) {
 }
 
 // dp = W J^T x over the active constraints.
-void applyJt(const std::vector<DistanceConstraint>& cs, const ParticleSet& s,
-             ConstraintScratch& w, const std::vector<double>& x) {
+void applyJt(const std::vector<DistanceConstraint>& cs, const ParticleSet& s, ConstraintScratch& w,
+             const std::vector<double>& x) {
     std::fill(w.dp.begin(), w.dp.end(), Vec2{});
     for (std::size_t k = 0; k < cs.size(); ++k) {
         if (!w.active[k]) continue;
@@ -57,7 +57,8 @@ void solve(const std::vector<DistanceConstraint>& cs, const ParticleSet& s, Cons
         applyJt(cs, s, w, w.p);
         applyJ(cs, w, w.q);
         double pq = 0.0;
-        for (std::size_t k = 0; k < m; ++k) pq += w.p[k] * w.q[k];
+        for (std::size_t k = 0; k < m; ++k)
+            pq += w.p[k] * w.q[k];
         if (!(pq > 0.0)) break; // a dependent direction (a loop, or fixed ends): stop here
         const double alpha = rz / pq;
         double rzNew = 0.0, rr = 0.0;
@@ -73,7 +74,8 @@ void solve(const std::vector<DistanceConstraint>& cs, const ParticleSet& s, Cons
         if (rr <= 1e-28 * rr0) break;
         const double beta = rzNew / rz;
         rz = rzNew;
-        for (std::size_t k = 0; k < m; ++k) w.p[k] = w.z[k] + beta * w.p[k];
+        for (std::size_t k = 0; k < m; ++k)
+            w.p[k] = w.z[k] + beta * w.p[k];
     }
     applyJt(cs, s, w, w.x);
 }
@@ -99,7 +101,8 @@ double solveConstraints(const std::vector<DistanceConstraint>& cs, ParticleSet& 
     w.lastIterations = 0;
     if (cs.empty()) return 0.0;
     const std::size_t m = cs.size();
-    for (auto* v : {&w.rhs, &w.x, &w.r, &w.z, &w.p, &w.q}) v->resize(m);
+    for (auto* v : {&w.rhs, &w.x, &w.r, &w.z, &w.p, &w.q})
+        v->resize(m);
     w.dir.resize(m);
     w.active.resize(m);
     w.dp.resize(set.slots());

@@ -45,7 +45,7 @@ double lengthError(const DistanceConstraint& c, const ParticleSet& set);
 
 /// Buffers the solver reuses between steps (no allocation per step once sized).
 struct ConstraintScratch {
-    std::vector<Vec2> dir;                 // n_c per constraint
+    std::vector<Vec2> dir;                  // n_c per constraint
     std::vector<double> rhs, x, r, z, p, q; // per constraint
     std::vector<unsigned char> active;      // per constraint
     std::vector<Vec2> dp;                   // W J^T x, per particle slot
@@ -56,7 +56,6 @@ struct ConstraintScratch {
 /// steps, stopping once every relative error is within `tolerance`, then the velocity
 /// solve. Returns the largest relative length error left (cables: only if over-long).
 double solveConstraints(const std::vector<DistanceConstraint>& constraints, ParticleSet& set,
-                        ConstraintScratch& scratch, int newtonSteps = 4,
-                        double tolerance = 1e-6);
+                        ConstraintScratch& scratch, int newtonSteps = 4, double tolerance = 1e-6);
 
 } // namespace phys

@@ -40,8 +40,9 @@ double penaltyImpulse(double depth, double closingVelocity, double wa, double wb
     if (!(w > 0.0) || !(depth > 0.0)) return 0.0;
     const double omega = 2.0 * std::numbers::pi * hertz;
     const double lnE = std::log(std::max(restitution, 1e-12));
-    const double zeta = restitution >= 1.0 ? 0.0
-                                           : -lnE / std::sqrt(std::numbers::pi * std::numbers::pi + lnE * lnE);
+    const double zeta = restitution >= 1.0
+                            ? 0.0
+                            : -lnE / std::sqrt(std::numbers::pi * std::numbers::pi + lnE * lnE);
     // The spring pushes out; the damper opposes the normal relative velocity. A contact
     // never pulls (F >= 0).
     const double force = (omega * omega * depth - 2.0 * zeta * omega * closingVelocity) / w;

@@ -35,7 +35,7 @@ namespace phys {
 
 /// A particle's path from t0 (seconds into the step) on; see the file comment.
 struct PathMotion {
-    Vec2 p, v, a;   ///< position (m) and path velocity (m/s) at t0, path acceleration (m/s^2)
+    Vec2 p, v, a; ///< position (m) and path velocity (m/s) at t0, path acceleration (m/s^2)
     double t0 = 0.0;
     Vec2 position(double t) const {
         const double s = t - t0;
@@ -51,10 +51,11 @@ struct PathMotion {
 
 /// Settings of the time-of-impact search (WorldDef::collision holds them).
 struct ToiSettings {
-    bool continuous = true;        ///< swept-sphere + conservative advancement; off: overlap at step end
-    int bisectionHalvings = 5;     ///< halvings of the overlap bracket (notes: 5), 0..60
-    double tolerance = 1e-9;       ///< m: a gap this small counts as touching
-    int maxAdvanceIterations = 64; ///< conservative-advancement steps before falling back to bisection
+    bool continuous = true; ///< swept-sphere + conservative advancement; off: overlap at step end
+    int bisectionHalvings = 5; ///< halvings of the overlap bracket (notes: 5), 0..60
+    double tolerance = 1e-9;   ///< m: a gap this small counts as touching
+    int maxAdvanceIterations =
+        64; ///< conservative-advancement steps before falling back to bisection
 };
 
 /// First parameter s in [0, 1] at which a sphere of radius r moving in a straight line
@@ -95,8 +96,10 @@ std::optional<double> timeOfImpact(const Shape& shape, double radius, const Path
     auto bracketRoot = [&](double ta, double ga, double tb, double gb) {
         for (int k = 0; k < s.bisectionHalvings; ++k) {
             const double tm = 0.5 * (ta + tb), gm = gap(tm);
-            if (gm > 0.0) ta = tm, ga = gm;
-            else tb = tm, gb = gm;
+            if (gm > 0.0)
+                ta = tm, ga = gm;
+            else
+                tb = tm, gb = gm;
         }
         int side = 0;
         for (int k = 0; k < 60 && ga > s.tolerance; ++k) {

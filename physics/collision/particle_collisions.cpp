@@ -19,12 +19,14 @@ constexpr double kRestSlide = 1e-9;
 constexpr int kProjectionSweeps = 4;
 
 // Calls f with the concrete shape behind a reference (no virtual call per contact).
-template <class F>
-auto withShape(const StaticShapes& shapes, ShapeRef ref, F&& f) {
+template <class F> auto withShape(const StaticShapes& shapes, ShapeRef ref, F&& f) {
     switch (ref.kind) {
-    case ShapeKind::Circle: return f(shapes.circles[ref.index]);
-    case ShapeKind::Polygon: return f(shapes.polygons[ref.index]);
-    case ShapeKind::Segment: break;
+    case ShapeKind::Circle:
+        return f(shapes.circles[ref.index]);
+    case ShapeKind::Polygon:
+        return f(shapes.polygons[ref.index]);
+    case ShapeKind::Segment:
+        break;
     }
     return f(shapes.segments[ref.index]);
 }
@@ -35,8 +37,7 @@ Vec2 withoutInward(Vec2 a, Vec2 n) {
     return an < 0.0 ? a - n * an : a;
 }
 
-template <class T>
-void growTo(std::vector<T>& v, std::size_t n) {
+template <class T> void growTo(std::vector<T>& v, std::size_t n) {
     if (v.size() < n) v.resize(n);
 }
 
@@ -68,9 +69,11 @@ void ParticleCollisions::buildPaths(const ParticleSet& set, double h) {
 
 void ParticleCollisions::buildProxies(const ParticleSet& set, const StaticShapes& shapes,
                                       const CollisionDef& def, double h, bool atEndOnly) {
-    const std::size_t n = set.slots(), total = n + shapes.count();
-    boxes_.resize(total);
-    kinds_.resize(total);
+    const std::size_t n = set.slots();
+    boxes_.resize(n);
+    kinds_.resize(n);
+    staticIndex_.update(shapes);
+    staticHits_.reserve(shapes.count()); // the most a query can return: no growth later
     for (std::size_t i = 0; i < n; ++i) {
         if ((set.flags[i] & (kAlive | kNoCollide)) != kAlive) {
             kinds_[i] = ProxyKind::None;
@@ -91,18 +94,30 @@ void ParticleCollisions::buildProxies(const ParticleSet& set, const StaticShapes
         const double r = set.radius[i] + def.toiTolerance;
         boxes_[i] = {lo - Vec2{r, r}, hi + Vec2{r, r}};
     }
-    for (std::size_t s = 0; s < shapes.count(); ++s) {
-        boxes_[n + s] = shapes.bounds(shapes.ref(s));
-        kinds_[n + s] = ProxyKind::Resting;
-    }
 }
 
 void ParticleCollisions::findPairs(const CollisionDef& def) {
+    // Particle against particle: the chosen broad phase over the particles' boxes.
     switch (def.broadPhase) {
-    case BroadPhase::Grid: grid_.findPairs(boxes_, kinds_, pairs_, def.gridCellSize); break;
-    case BroadPhase::SortAndSweep: sweep_.findPairs(boxes_, kinds_, pairs_); break;
-    case BroadPhase::AllPairs: allPairs(boxes_, kinds_, pairs_); break;
+    case BroadPhase::Grid:
+        grid_.findPairs(boxes_, kinds_, pairs_, def.gridCellSize);
+        break;
+    case BroadPhase::SortAndSweep:
+        sweep_.findPairs(boxes_, kinds_, pairs_);
+        break;
+    case BroadPhase::AllPairs:
+        allPairs(boxes_, kinds_, pairs_);
+        break;
     }
+    // Particle against static shape: moving particles look up the static index. A shape's
+    // proxy number is slots + its index, as the narrow phase expects.
+    const auto n = static_cast<std::uint32_t>(boxes_.size());
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (kinds_[i] != ProxyKind::Moving) continue;
+        staticIndex_.query(boxes_[i], staticHits_);
+        for (const std::uint32_t s : staticHits_) pairs_.push_back({i, n + s});
+    }
+    std::sort(pairs_.begin(), pairs_.end());
 }
 
 void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shapes,
@@ -113,7 +128,8 @@ void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shap
     stats_.pairs += static_cast<int>(pairs_.size());
     candidates_.clear();
     const auto n = static_cast<std::uint32_t>(set.slots());
-    for (const auto& [a, b] : pairs_) {
+    for (const ProxyPair& pair : pairs_) {
+        const std::uint32_t a = pair.first, b = pair.second; // (clang 14 cannot capture a structured binding)
         if (b >= n) {
             if (!moving(set, a)) continue;
             const ShapeRef ref = shapes.ref(b - n);
@@ -123,7 +139,8 @@ void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shap
             if (t) candidates_.push_back({a, kNoParticle, ref, *t});
         } else if (def.particlePairs) {
             const PathMotion rel = path_[a].relativeTo(path_[b]);
-            const auto t = timeOfImpact(Circle{{0.0, 0.0}, set.radius[b]}, set.radius[a], rel, h, toi_);
+            const auto t =
+                timeOfImpact(Circle{{0.0, 0.0}, set.radius[b]}, set.radius[a], rel, h, toi_);
             if (t) candidates_.push_back({a, b, {}, *t});
         }
     }
@@ -135,7 +152,8 @@ void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shap
         if (x.shape.kind != y.shape.kind) return x.shape.kind < y.shape.kind;
         return x.shape.index < y.shape.index;
     });
-    detectMicros_ += std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+    detectMicros_ +=
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // Moves particle i's path start to time t (state velocity carried with its own rate).
@@ -231,11 +249,12 @@ bool ParticleCollisions::resolveStatic(const Candidate& c, ParticleSet& set,
 }
 
 bool ParticleCollisions::resolvePair(const Candidate& c, ParticleSet& set,
-                                     const MaterialTable& mats, const CollisionDef& def,
-                                     double h, double tickTime) {
+                                     const MaterialTable& mats, const CollisionDef& def, double h,
+                                     double tickTime) {
     const std::size_t i = c.a, j = c.b;
     const double ri = set.radius[i], rj = set.radius[j];
-    const auto toi = timeOfImpact(Circle{{0.0, 0.0}, rj}, ri, path_[i].relativeTo(path_[j]), h, toi_);
+    const auto toi =
+        timeOfImpact(Circle{{0.0, 0.0}, rj}, ri, path_[i].relativeTo(path_[j]), h, toi_);
     if (!toi) return false;
     rebase(i, *toi);
     rebase(j, *toi);
@@ -291,8 +310,16 @@ bool ParticleCollisions::resolvePair(const Candidate& c, ParticleSet& set,
     mj.v = sv_[j];
     if (wi > 0.0) touched_[i] = 1, resting_[i] = resting_[i] || resting;
     if (wj > 0.0) touched_[j] = 1, resting_[j] = resting_[j] || resting;
-    events_.push_back({static_cast<ParticleId>(i), static_cast<ParticleId>(j), {}, tickTime + *toi,
-                       n, -vn, ci.normal, resting, mi.p, sv_[i]});
+    events_.push_back({static_cast<ParticleId>(i),
+                       static_cast<ParticleId>(j),
+                       {},
+                       tickTime + *toi,
+                       n,
+                       -vn,
+                       ci.normal,
+                       resting,
+                       mi.p,
+                       sv_[i]});
     return true;
 }
 
@@ -307,8 +334,8 @@ void ParticleCollisions::finish(ParticleSet& set, double h) {
 }
 
 void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shapes,
-                                      const MaterialTable& mats, const CollisionDef& def,
-                                      double h, double tickTime) {
+                                      const MaterialTable& mats, const CollisionDef& def, double h,
+                                      double tickTime) {
     toi_ = {def.continuous, def.bisectionHalvings, def.toiTolerance, def.maxAdvanceIterations};
     buildPaths(set, h);
     bool converged = false;
@@ -317,8 +344,9 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
         ++stats_.passes;
         int resolved = 0;
         for (const Candidate& c : candidates_) {
-            const bool done = c.b == kNoParticle ? resolveStatic(c, set, shapes, mats, def, h, tickTime)
-                                                 : resolvePair(c, set, mats, def, h, tickTime);
+            const bool done = c.b == kNoParticle
+                                  ? resolveStatic(c, set, shapes, mats, def, h, tickTime)
+                                  : resolvePair(c, set, mats, def, h, tickTime);
             resolved += done ? 1 : 0;
         }
         stats_.impacts += resolved;
@@ -336,10 +364,12 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
 void ParticleCollisions::projectOverlaps(ParticleSet& set, const StaticShapes& shapes,
                                          const CollisionDef& def, double h) {
     const auto t0 = std::chrono::steady_clock::now(); // profile only
-    for (std::size_t i = 0; i < set.slots(); ++i) path_[i] = {set.position(static_cast<ParticleId>(i)), {}, {}, h};
+    for (std::size_t i = 0; i < set.slots(); ++i)
+        path_[i] = {set.position(static_cast<ParticleId>(i)), {}, {}, h};
     buildProxies(set, shapes, def, h, true);
     findPairs(def);
-    detectMicros_ += std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+    detectMicros_ +=
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
     // Shock propagation (Guendelman et al. 2003): contacts with static shapes first; a
     // particle pushed out of one counts as immovable for the particle pairs after it,
     // and so does one pushed off a particle that was, so a stack is lifted from the
@@ -347,7 +377,8 @@ void ParticleCollisions::projectOverlaps(ParticleSet& set, const StaticShapes& s
     const auto n = static_cast<std::uint32_t>(set.slots());
     std::fill(touched_.begin(), touched_.end(), 0); // reused as "supported"
     for (int sweep = 0; sweep < 1 + kProjectionSweeps; ++sweep)
-        for (const auto& [a, b] : pairs_) {
+        for (const ProxyPair& pair : pairs_) {
+            const std::uint32_t a = pair.first, b = pair.second;
             const bool isStatic = b >= n;
             if (isStatic != (sweep == 0) || (!isStatic && !def.particlePairs)) continue;
             double wa = moving(set, a) && !touched_[a] ? set.invMass[a] : 0.0;
@@ -365,7 +396,8 @@ void ParticleCollisions::projectOverlaps(ParticleSet& set, const StaticShapes& s
             }
             const double depth = reach - sp.distance;
             if (!(depth > 0.0)) {
-                if (depth > -def.toiTolerance && (isStatic || wb == 0.0)) touched_[a] = 1; // touching
+                if (depth > -def.toiTolerance && (isStatic || wb == 0.0))
+                    touched_[a] = 1; // touching
                 continue;
             }
             const Vec2 nrm = sp.normal;
@@ -379,23 +411,27 @@ void ParticleCollisions::projectOverlaps(ParticleSet& set, const StaticShapes& s
                 if (vn < 0.0) set.vx[b] += nrm.x * vn * fb, set.vy[b] += nrm.y * vn * fb;
                 set.flags[b] &= ~kHistory;
             }
-            if (isStatic || wb == 0.0) touched_[a] = 1;
-            else if (wa == 0.0) touched_[b] = 1;
+            if (isStatic || wb == 0.0)
+                touched_[a] = 1;
+            else if (wa == 0.0)
+                touched_[b] = 1;
         }
 }
 
 void ParticleCollisions::penaltyPhase(ParticleSet& set, const StaticShapes& shapes,
-                                      const MaterialTable& mats, const CollisionDef& def,
-                                      double h, double tickTime) {
+                                      const MaterialTable& mats, const CollisionDef& def, double h,
+                                      double tickTime) {
     const auto t0 = std::chrono::steady_clock::now(); // profile only
     buildPaths(set, h);
     buildProxies(set, shapes, def, h, true);
     findPairs(def);
     stats_.pairs += static_cast<int>(pairs_.size());
     ++stats_.passes;
-    detectMicros_ += std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+    detectMicros_ +=
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
     const auto n = static_cast<std::uint32_t>(set.slots());
-    for (const auto& [a, b] : pairs_) {
+    for (const ProxyPair& pair : pairs_) {
+        const std::uint32_t a = pair.first, b = pair.second;
         const bool isStatic = b >= n;
         if (!isStatic && !def.particlePairs) continue;
         const Vec2 pa = set.position(a);

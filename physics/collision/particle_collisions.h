@@ -54,10 +54,10 @@ struct ContactEvent {
 
 /// Per-step statistics.
 struct CollisionStats {
-    int pairs = 0;       ///< broad-phase pairs, summed over passes
-    int impacts = 0;     ///< contacts resolved (bounces and resting)
-    int passes = 0;      ///< detect-and-resolve passes
-    int sleeping = 0;    ///< particles asleep after the step
+    int pairs = 0;    ///< broad-phase pairs, summed over passes
+    int impacts = 0;  ///< contacts resolved (bounces and resting)
+    int passes = 0;   ///< detect-and-resolve passes
+    int sleeping = 0; ///< particles asleep after the step
 };
 
 class ParticleCollisions {
@@ -77,7 +77,10 @@ class ParticleCollisions {
 
     /// Contacts of the last tick (cleared by clearEvents, which World::step calls).
     const std::vector<ContactEvent>& events() const { return events_; }
-    void clearEvents() { events_.clear(); stats_ = {}; }
+    void clearEvents() {
+        events_.clear();
+        stats_ = {};
+    }
     const CollisionStats& stats() const { return stats_; }
     /// Microseconds spent detecting (broad + narrow phase) since construction, a running
     /// total the world differences to split its profile (profile only).
@@ -94,9 +97,11 @@ class ParticleCollisions {
     void buildProxies(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                       double h, bool atEndOnly);
     void findPairs(const CollisionDef& def);
-    void detect(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def, double h);
+    void detect(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
+                double h);
     bool resolveStatic(const Candidate& c, ParticleSet& set, const StaticShapes& shapes,
-                       const MaterialTable& mats, const CollisionDef& def, double h, double tickTime);
+                       const MaterialTable& mats, const CollisionDef& def, double h,
+                       double tickTime);
     bool resolvePair(const Candidate& c, ParticleSet& set, const MaterialTable& mats,
                      const CollisionDef& def, double h, double tickTime);
     void rebase(std::size_t i, double t);
@@ -121,6 +126,8 @@ class ParticleCollisions {
     std::vector<Aabb> boxes_;
     std::vector<ProxyKind> kinds_;
     std::vector<ProxyPair> pairs_;
+    StaticShapeIndex staticIndex_;
+    std::vector<std::uint32_t> staticHits_;
     SortAndSweep sweep_;
     UniformGrid grid_;
     std::vector<Candidate> candidates_;

@@ -1,5 +1,7 @@
 #include "physics/collision/shapes.h"
 
+#include <atomic>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -48,7 +50,8 @@ SurfacePoint closestPoint(const ConvexPolygon& poly, Vec2 p) {
     if (maxSep <= 0.0) return {maxSep, poly.normals[best]};
     SurfacePoint out{std::numeric_limits<double>::infinity(), poly.normals[best]};
     for (std::size_t i = 0; i < n; ++i) {
-        const SurfacePoint e = closestPoint(Segment{poly.vertices[i], poly.vertices[(i + 1) % n]}, p);
+        const SurfacePoint e =
+            closestPoint(Segment{poly.vertices[i], poly.vertices[(i + 1) % n]}, p);
         if (e.distance < out.distance) out = e;
     }
     return out;
@@ -70,17 +73,28 @@ Aabb bounds(const ConvexPolygon& poly) {
     return b;
 }
 
-void StaticShapes::addSegment(Vec2 a, Vec2 b, MaterialId m) { segments.push_back({a, b, m}); }
+void StaticShapes::touch() {
+    // One counter for the whole process: a version names one content, whichever set holds it.
+    static std::atomic<std::uint64_t> next{1};
+    version_ = next.fetch_add(1, std::memory_order_relaxed);
+}
+
+void StaticShapes::addSegment(Vec2 a, Vec2 b, MaterialId m) {
+    segments.push_back({a, b, m});
+    touch();
+}
 
 std::string StaticShapes::addPolyline(std::span<const Vec2> points, MaterialId m) {
     if (points.size() < 2) return "a polyline needs at least 2 points";
-    for (std::size_t i = 0; i + 1 < points.size(); ++i) addSegment(points[i], points[i + 1], m);
+    for (std::size_t i = 0; i + 1 < points.size(); ++i)
+        addSegment(points[i], points[i + 1], m);
     return {};
 }
 
 std::string StaticShapes::addCircle(Vec2 center, double radius, MaterialId m) {
     if (!(radius > 0.0) || !std::isfinite(radius)) return "circle radius must be > 0 m";
     circles.push_back({center, radius, m});
+    touch();
     return {};
 }
 
@@ -88,7 +102,8 @@ std::string StaticShapes::addPolygon(std::span<const Vec2> vertices, MaterialId 
     const std::size_t n = vertices.size();
     if (n < 3) return "a polygon needs at least 3 vertices";
     double area2 = 0.0;
-    for (std::size_t i = 0; i < n; ++i) area2 += cross(vertices[i], vertices[(i + 1) % n]);
+    for (std::size_t i = 0; i < n; ++i)
+        area2 += cross(vertices[i], vertices[(i + 1) % n]);
     if (!(std::abs(area2) > 0.0)) return "polygon has zero area";
     ConvexPolygon poly;
     poly.material = m;
@@ -97,12 +112,14 @@ std::string StaticShapes::addPolygon(std::span<const Vec2> vertices, MaterialId 
     for (std::size_t i = 0; i < n; ++i) {
         const Vec2 a = poly.vertices[i], b = poly.vertices[(i + 1) % n],
                    c = poly.vertices[(i + 2) % n];
-        if (cross(b - a, c - b) < 0.0) return "polygon is not convex (vertex " + std::to_string((i + 1) % n) + ")";
+        if (cross(b - a, c - b) < 0.0)
+            return "polygon is not convex (vertex " + std::to_string((i + 1) % n) + ")";
         const Vec2 e = b - a;
         if (!(lengthSquared(e) > 0.0)) return "polygon has a repeated vertex";
         poly.normals.push_back(unitOr(Vec2{e.y, -e.x}, {0.0, 1.0})); // right of a CCW edge = out
     }
     polygons.push_back(std::move(poly));
+    touch();
     return {};
 }
 
@@ -120,27 +137,36 @@ ShapeRef StaticShapes::ref(std::size_t i) const {
 
 SurfacePoint StaticShapes::closestPoint(ShapeRef s, Vec2 p) const {
     switch (s.kind) {
-    case ShapeKind::Segment: return phys::closestPoint(segments[s.index], p);
-    case ShapeKind::Circle: return phys::closestPoint(circles[s.index], p);
-    case ShapeKind::Polygon: return phys::closestPoint(polygons[s.index], p);
+    case ShapeKind::Segment:
+        return phys::closestPoint(segments[s.index], p);
+    case ShapeKind::Circle:
+        return phys::closestPoint(circles[s.index], p);
+    case ShapeKind::Polygon:
+        return phys::closestPoint(polygons[s.index], p);
     }
     return {};
 }
 
 Aabb StaticShapes::bounds(ShapeRef s) const {
     switch (s.kind) {
-    case ShapeKind::Segment: return phys::bounds(segments[s.index]);
-    case ShapeKind::Circle: return phys::bounds(circles[s.index]);
-    case ShapeKind::Polygon: return phys::bounds(polygons[s.index]);
+    case ShapeKind::Segment:
+        return phys::bounds(segments[s.index]);
+    case ShapeKind::Circle:
+        return phys::bounds(circles[s.index]);
+    case ShapeKind::Polygon:
+        return phys::bounds(polygons[s.index]);
     }
     return {};
 }
 
 MaterialId StaticShapes::material(ShapeRef s) const {
     switch (s.kind) {
-    case ShapeKind::Segment: return segments[s.index].material;
-    case ShapeKind::Circle: return circles[s.index].material;
-    case ShapeKind::Polygon: return polygons[s.index].material;
+    case ShapeKind::Segment:
+        return segments[s.index].material;
+    case ShapeKind::Circle:
+        return circles[s.index].material;
+    case ShapeKind::Polygon:
+        return polygons[s.index].material;
     }
     return material::kDefault;
 }
@@ -149,6 +175,7 @@ void StaticShapes::clear() {
     segments.clear();
     circles.clear();
     polygons.clear();
+    touch();
 }
 
 } // namespace phys

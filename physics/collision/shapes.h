@@ -92,6 +92,16 @@ struct StaticShapes {
     Aabb bounds(ShapeRef s) const;
     MaterialId material(ShapeRef s) const;
     void clear();
+
+    /// Changes whenever a shape is added or the set is cleared, and is unique across all
+    /// StaticShapes (a copy keeps it: same version, same shapes). The broad phase keeps its
+    /// index of the static shapes until the version changes. Code that edits the vectors
+    /// above directly must call touch() afterwards.
+    std::uint64_t version() const { return version_; }
+    void touch();
+
+  private:
+    std::uint64_t version_ = 0;
 };
 
 } // namespace phys

@@ -432,6 +432,70 @@ void RigidWorld::destroyBody(BodyId id) {
     freeBodies_.push_back(id.index);
 }
 
+void RigidWorld::forEachShape(const std::function<void(const RigidShapeView&)>& fn) const {
+    auto world = [](const b2Transform& xf, const b2Vec2& v) {
+        const b2Vec2 w = b2Mul(xf, v);
+        return Vec2{w.x, w.y};
+    };
+    for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
+        const b2Body* body = bodies_[i].body;
+        if (!body) continue;
+        RigidShapeView view;
+        view.body = {i, bodies_[i].generation};
+        view.type = body->GetType() == b2_staticBody      ? BodyType::Static
+                    : body->GetType() == b2_kinematicBody ? BodyType::Kinematic
+                                                          : BodyType::Dynamic;
+        view.awake = body->IsAwake();
+        view.angle = body->GetAngle();
+        const b2Transform& xf = body->GetTransform();
+        for (const b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext()) {
+            const b2Shape* shape = f->GetShape();
+            scratchVertices_.clear();
+            view.loop = false;
+            switch (shape->GetType()) {
+            case b2Shape::e_circle: {
+                const auto* c = static_cast<const b2CircleShape*>(shape);
+                view.kind = RigidShapeView::Kind::Circle;
+                view.center = world(xf, c->m_p);
+                view.radius = c->m_radius;
+                break;
+            }
+            case b2Shape::e_polygon: {
+                const auto* p = static_cast<const b2PolygonShape*>(shape);
+                view.kind = RigidShapeView::Kind::Polygon;
+                for (int k = 0; k < p->m_count; ++k)
+                    scratchVertices_.push_back(world(xf, p->m_vertices[k]));
+                break;
+            }
+            case b2Shape::e_edge: {
+                const auto* e = static_cast<const b2EdgeShape*>(shape);
+                view.kind = RigidShapeView::Kind::Chain;
+                scratchVertices_.push_back(world(xf, e->m_vertex1));
+                scratchVertices_.push_back(world(xf, e->m_vertex2));
+                break;
+            }
+            case b2Shape::e_chain: {
+                const auto* c = static_cast<const b2ChainShape*>(shape);
+                view.kind = RigidShapeView::Kind::Chain;
+                // Box2D stores a loop with its first vertex repeated at the end.
+                int count = c->m_count;
+                if (count > 1 && c->m_vertices[0] == c->m_vertices[count - 1]) {
+                    view.loop = true;
+                    --count;
+                }
+                for (int k = 0; k < count; ++k)
+                    scratchVertices_.push_back(world(xf, c->m_vertices[k]));
+                break;
+            }
+            default:
+                continue;
+            }
+            view.vertices = scratchVertices_;
+            fn(view);
+        }
+    }
+}
+
 std::vector<BodyId> RigidWorld::bodies() const {
     std::vector<BodyId> out;
     for (std::uint32_t i = 0; i < bodies_.size(); ++i)

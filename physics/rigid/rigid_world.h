@@ -41,6 +41,7 @@
 #include "physics/vec2.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -53,6 +54,20 @@ class b2Joint;
 class b2Fixture;
 
 namespace phys {
+
+/// One fixture of a body, in world coordinates, for drawing (forEachShape). The span
+/// points into scratch storage that is valid only during the callback.
+struct RigidShapeView {
+    enum class Kind { Polygon, Circle, Chain } kind = Kind::Polygon;
+    BodyId body;
+    BodyType type = BodyType::Static;
+    bool awake = false;
+    std::span<const Vec2> vertices; ///< polygon (counter-clockwise) or chain points, world m
+    bool loop = false;              ///< chain: closed
+    Vec2 center;                    ///< circle centre, world m
+    double radius = 0.0;            ///< circle, m
+    double angle = 0.0;             ///< the body's angle, rad (marks a circle's spin)
+};
 
 /// "" when the definition is usable at this tick length (s), else what is wrong and the
 /// allowed range.
@@ -115,6 +130,10 @@ class RigidWorld {
     /// Every live body, in slot order (deterministic).
     std::vector<BodyId> bodies() const;
     int bodyCount() const;
+    /// Calls `fn` for every fixture of every live body (slot order, then fixture order),
+    /// transformed to world coordinates: what a renderer needs without seeing b2Body.
+    /// Edges are reported as two-point chains.
+    void forEachShape(const std::function<void(const RigidShapeView&)>& fn) const;
 
     // ---- joints ---------------------------------------------------------------------
     JointId createRevolute(const RevoluteJointDef& def, std::string* error = nullptr);
@@ -219,6 +238,7 @@ class RigidWorld {
     // warm. (Queries are therefore not safe to call from two threads at once.)
     mutable std::vector<const b2Body*> scratchBodies_;
     mutable std::vector<BodyId> scratchIds_;
+    mutable std::vector<Vec2> scratchVertices_;
 };
 
 } // namespace phys

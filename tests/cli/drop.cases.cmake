@@ -14,7 +14,7 @@ cli_test(drop_plastic 0 "came to rest" "drop;--height;1;--material;perfectly-pla
 cli_test(drop_euler_shows_error 0 "explicit-euler.*1 +0\\.278[0-9]* +0\\.25 +\\+11\\.2"
          "drop;--height;1;--cor;0.5;--integrator;explicit-euler;--dt;0.0166666667;--bounces;1")
 cli_test(drop_help 0 "usage: artillery drop --height H \\(--cor E \\| --material NAME\\)" "drop;--help")
-cli_test(drop_rigid_not_yet 2 "rigid bodies are not yet available" "drop;--height;1;--material;golf;--model;rigid")
+cli_test(drop_rigid 0 "\"apex_m\".*\"model\":\"rigid\"" "drop;--height;1;--material;golf;--model;rigid;--json")
 cli_test(drop_bad_model 2 "--model expects particle or rigid" "drop;--height;1;--material;golf;--model;soft")
 cli_test(drop_bad_material 2 "--material expects one of default, floor, .*golf" "drop;--height;1;--material;pluto")
 cli_test(drop_both_cor_and_material 2 "give exactly one of --cor E or --material NAME"
@@ -25,3 +25,9 @@ cli_test(drop_missing_height 2 "--height is required" "drop;--material;golf")
 cli_test(drop_bad_bounces 2 "--bounces" "drop;--height;1;--material;golf;--bounces;0")
 cli_test(drop_too_many_steps 2 "more than 5e7 steps" "drop;--height;10000;--material;golf;--dt;0.000001")
 cli_test(drop_moon 0 "\"apex_m\":0\\.73616" "drop;--height;1;--material;golf;--planet;moon;--bounces;1;--json")
+# The penalty model: it sinks centimetres into the floor, and at w dt > 2 it explodes.
+cli_test(drop_penalty 0 "penalty contact at 10 Hz: the ball sank up to 0\\.0688[0-9]* m.*1 +0\\.72746"
+         "drop;--height;1;--material;golf;--contact;penalty")
+cli_test(drop_penalty_unstable 0 "w dt = 2\\.09; unstable above 2.*1 +7\\.8[0-9]* +0\\.736164 +\\+963"
+         "drop;--height;1;--material;golf;--contact;penalty;--stiffness;40;--bounces;1")
+cli_test(drop_bad_contact 2 "--contact expects impulse or penalty" "drop;--height;1;--material;golf;--contact;soft")

@@ -123,6 +123,7 @@ TEST(ExplicitEulerTable, OneStepReproducesTheNotes) {
     const Vec2 momentum{19.2, 72.5}, p0{10, 2};
     for (const Row& r : rows) {
         WorldDef def;
+        def.model = ModelPolicy::Integrate;
         def.tickSeconds = r.dt;
         def.integrator = Integrator::ExplicitEuler;
         World w(def);

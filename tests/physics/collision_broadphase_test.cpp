@@ -27,7 +27,9 @@ Scene randomScene(std::mt19937_64& rng, int n, double w) {
         if (unit(rng) < 0.1) ext.y = 0.0; // horizontal floor
         s.boxes.push_back({lo, lo + ext});
         const double k = unit(rng);
-        s.kinds.push_back(k < 0.6 ? ProxyKind::Moving : k < 0.95 ? ProxyKind::Resting : ProxyKind::None);
+        s.kinds.push_back(k < 0.6    ? ProxyKind::Moving
+                          : k < 0.95 ? ProxyKind::Resting
+                                     : ProxyKind::None);
     }
     return s;
 }
@@ -44,9 +46,13 @@ TEST(BroadPhase, GridAndSortAndSweepFindExactlyTheAllPairsPairs) {
         const int n = 1 + scene * 7;
         Scene s = randomScene(rng, n, scene % 2 ? 10.0 : 100.0);
         // A few boxes far too big for the grid (floors, walls), and some far away.
-        if (scene % 3 == 0) s.boxes.push_back({{-1.0, 2.0}, {200.0, 2.5}}), s.kinds.push_back(ProxyKind::Resting);
-        if (scene % 5 == 0) s.boxes.push_back({{-1e9, -1e9}, {-1e9 + 1.0, -1e9 + 1.0}}), s.kinds.push_back(ProxyKind::Moving);
-        if (scene % 4 == 0) s.boxes.push_back({{3.0, -5.0}, {3.0, 500.0}}), s.kinds.push_back(ProxyKind::Moving);
+        if (scene % 3 == 0)
+            s.boxes.push_back({{-1.0, 2.0}, {200.0, 2.5}}), s.kinds.push_back(ProxyKind::Resting);
+        if (scene % 5 == 0)
+            s.boxes.push_back({{-1e9, -1e9}, {-1e9 + 1.0, -1e9 + 1.0}}),
+                s.kinds.push_back(ProxyKind::Moving);
+        if (scene % 4 == 0)
+            s.boxes.push_back({{3.0, -5.0}, {3.0, 500.0}}), s.kinds.push_back(ProxyKind::Moving);
         sweep.findPairs(s.boxes, s.kinds, fast);
         allPairs(s.boxes, s.kinds, slow);
         ASSERT_EQ(fast, slow) << "scene " << scene;
@@ -56,7 +62,8 @@ TEST(BroadPhase, GridAndSortAndSweepFindExactlyTheAllPairsPairs) {
         }
         total += slow.size();
         // Move everything a little (the next frame) and check again.
-        for (auto& b : s.boxes) b.lo.x += 0.5, b.hi.x += 0.5;
+        for (auto& b : s.boxes)
+            b.lo.x += 0.5, b.hi.x += 0.5;
         sweep.findPairs(s.boxes, s.kinds, fast);
         allPairs(s.boxes, s.kinds, slow);
         ASSERT_EQ(fast, slow) << "scene " << scene << " moved";
@@ -68,8 +75,10 @@ TEST(BroadPhase, GridAndSortAndSweepFindExactlyTheAllPairsPairs) {
 
 // Two resting proxies never pair, and None is skipped; touching boxes do pair.
 TEST(BroadPhase, PairingRules) {
-    const std::vector<Aabb> boxes{{{0, 0}, {1, 1}}, {{1, 0}, {2, 1}}, {{0.5, 0.5}, {1.5, 1.5}}, {{0, 0}, {3, 3}}};
-    const std::vector<ProxyKind> kinds{ProxyKind::Resting, ProxyKind::Resting, ProxyKind::Moving, ProxyKind::None};
+    const std::vector<Aabb> boxes{
+        {{0, 0}, {1, 1}}, {{1, 0}, {2, 1}}, {{0.5, 0.5}, {1.5, 1.5}}, {{0, 0}, {3, 3}}};
+    const std::vector<ProxyKind> kinds{ProxyKind::Resting, ProxyKind::Resting, ProxyKind::Moving,
+                                       ProxyKind::None};
     std::vector<ProxyPair> out;
     SortAndSweep().findPairs(boxes, kinds, out);
     EXPECT_EQ(out, (std::vector<ProxyPair>{{0, 2}, {1, 2}}));
@@ -102,7 +111,8 @@ TEST(BroadPhase, WorldWithManyParticlesIsDeterministicAndLeavesNoOverlaps) {
             pd.material = static_cast<MaterialId>(material::kGolf + i % 9);
             w.particles.add(pd);
         }
-        for (int i = 0; i < 400; ++i) w.step();
+        for (int i = 0; i < 400; ++i)
+            w.step();
         return w;
     };
     const World a = run(BroadPhase::Grid), b = run(BroadPhase::Grid);

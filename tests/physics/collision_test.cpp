@@ -46,7 +46,8 @@ TEST(HeadOn, ElasticEqualMassesSwapVelocities) {
     const auto a = addBall(w, {-1.0, 0.0}, {3.0, 0.0}, 2.0, 0.1, m);
     const auto b = addBall(w, {1.0, 0.0}, {-1.0, 0.0}, 2.0, 0.1, m);
     const Vec2 p0 = momentum(w.particles);
-    for (int i = 0; i < 120; ++i) w.step();
+    for (int i = 0; i < 120; ++i)
+        w.step();
     EXPECT_DOUBLE_EQ(w.particles.vx[a], -1.0);
     EXPECT_DOUBLE_EQ(w.particles.vx[b], 3.0);
     EXPECT_EQ(w.particles.vy[a], 0.0);
@@ -66,7 +67,8 @@ TEST(HeadOn, PlasticEqualMassesMoveTogether) {
     const MaterialId m = ballOf(w, 0.0);
     const auto a = addBall(w, {-1.0, 0.0}, {3.0, 0.0}, 2.0, 0.1, m);
     const auto b = addBall(w, {1.0, 0.0}, {-1.0, 0.0}, 2.0, 0.1, m);
-    for (int i = 0; i < 120; ++i) w.step();
+    for (int i = 0; i < 120; ++i)
+        w.step();
     EXPECT_DOUBLE_EQ(w.particles.vx[a], 1.0);
     EXPECT_DOUBLE_EQ(w.particles.vx[b], 1.0);
     EXPECT_NEAR(w.particles.px[b] - w.particles.px[a], 0.2, 1e-8); // touching
@@ -83,7 +85,8 @@ TEST(HeadOn, MomentumConservedAndSeparationIsETimesApproach) {
             const auto a = addBall(w, {-1.0, 0.2}, {5.0, 0.0}, 1.5, 0.1, m);
             const auto b = addBall(w, {1.0, 0.2}, {-2.0, 0.0}, mb, 0.15, m);
             const Vec2 p0 = momentum(w.particles);
-            for (int i = 0; i < 60; ++i) w.step();
+            for (int i = 0; i < 60; ++i)
+                w.step();
             const Vec2 p1 = momentum(w.particles);
             EXPECT_NEAR(p1.x, p0.x, 1e-14 * (1.5 * 5.0 + mb * 2.0)) << e << " " << mb;
             EXPECT_EQ(p1.y, 0.0);
@@ -99,7 +102,8 @@ TEST(HeadOn, GlancingElasticImpactKeepsEnergyAndTangentialVelocity) {
     const auto a = addBall(w, {-1.0, 0.1}, {4.0, 0.0}, 1.0, 0.1, m);
     const auto b = addBall(w, {0.0, 0.0}, {0.0, 0.0}, 1.0, 0.1, m);
     const double ke0 = energy(w.particles, w.springs, w.def().forces).kinetic;
-    for (int i = 0; i < 240; ++i) w.step();
+    for (int i = 0; i < 240; ++i)
+        w.step();
     const double ke1 = energy(w.particles, w.springs, w.def().forces).kinetic;
     EXPECT_NEAR(ke1, ke0, 1e-12 * ke0);
     // Equal masses, e = 1: the velocities leave at right angles.
@@ -166,7 +170,8 @@ TEST(Shapes, ReboundFollowsTheSurfaceNormal) {
     const auto c = addBall(w, {2.0, 2.0}, {-1.0, -1.0}, 1.0, 0.1, m);
     // Onto the square's top face at an angle: vy flips, vx stays.
     const auto f = addBall(w, {10.5, 2.0}, {1.0, -2.0}, 1.0, 0.1, m);
-    for (int i = 0; i < 360; ++i) w.step(); // the circle is hit at t = (2 sqrt 2 - 1.1) / sqrt 2
+    for (int i = 0; i < 360; ++i)
+        w.step(); // the circle is hit at t = (2 sqrt 2 - 1.1) / sqrt 2
     EXPECT_NEAR(w.particles.vx[c], 1.0, 1e-12);
     EXPECT_NEAR(w.particles.vy[c], 1.0, 1e-12);
     EXPECT_DOUBLE_EQ(w.particles.vx[f], 1.0);
@@ -202,7 +207,8 @@ TEST(Friction, SlidingStopsAfterTheCoulombDistance) {
     w.materials.setPair(m, material::kFloor, {0.0, 0.5, 0.3});
     w.shapes.addSegment({-10.0, 0.0}, {100.0, 0.0}, material::kFloor);
     const auto id = addBall(w, {0.0, 0.1}, {6.0, 0.0}, 1.0, 0.1, m);
-    for (int i = 0; i < 600; ++i) w.step();
+    for (int i = 0; i < 600; ++i)
+        w.step();
     EXPECT_DOUBLE_EQ(w.particles.vx[id], 0.0);
     EXPECT_NEAR(w.particles.px[id], 36.0 / (2.0 * 0.3 * 9.81), 1e-9);
     EXPECT_NEAR(w.particles.py[id], 0.1, 1e-12);
@@ -220,7 +226,8 @@ TEST(Friction, StaticFrictionHoldsOnAGentleSlopeOnly) {
         const Vec2 dir{std::cos(th), -std::sin(th)}, n{std::sin(th), std::cos(th)};
         w.shapes.addSegment(dir * -50.0, dir * 50.0, material::kFloor);
         const auto id = addBall(w, n * 0.1, {}, 1.0, 0.1, m);
-        for (int i = 0; i < 120; ++i) w.step();
+        for (int i = 0; i < 120; ++i)
+            w.step();
         const Vec2 p = w.particles.position(id);
         if (deg < std::atan(0.5) * 180.0 / std::numbers::pi) {
             EXPECT_NEAR(length(p - n * 0.1), 0.0, 1e-12) << deg;
@@ -237,36 +244,38 @@ TEST(Friction, StaticFrictionHoldsOnAGentleSlopeOnly) {
 // and a blast wakes it.
 TEST(Resting, StaysPutForTenMinutesThenWakesOnABlast) {
     for (const bool sleep : {true, false})
-    for (const Integrator method : {Integrator::VelocityVerlet, Integrator::RK4, Integrator::SymplecticEuler}) {
-        SCOPED_TRACE(sleep ? "sleep on" : "sleep off (the contact alone holds it)");
-        WorldDef d;
-        d.integrator = method;
-        d.collision.sleep = sleep;
-        World w(d);
-        w.shapes.addSegment({-10.0, 0.0}, {10.0, 0.0}, material::kFloor);
-        const Vec2 slope[] = {{-10.0, 0.0}, {-10.0, 5.0}, {-20.0, 0.0}};
-        w.shapes.addPolyline(slope, material::kFloor);
-        ParticleDef pd;
-        pd.position = {0.5, 1.0};
-        pd.velocity = {0.3, 0.0};
-        pd.radius = 0.05;
-        pd.material = material::kTennis;
-        const auto id = w.particles.add(pd);
-        for (int i = 0; i < 120 * 20; ++i) w.step(); // 20 s to settle
-        const Vec2 settled = w.particles.position(id);
-        EXPECT_NEAR(settled.y, 0.05, 1e-8) << info(method).name;
-        double worst = 0.0;
-        for (int i = 0; i < 120 * 600; ++i) {
+        for (const Integrator method :
+             {Integrator::VelocityVerlet, Integrator::RK4, Integrator::SymplecticEuler}) {
+            SCOPED_TRACE(sleep ? "sleep on" : "sleep off (the contact alone holds it)");
+            WorldDef d;
+            d.integrator = method;
+            d.collision.sleep = sleep;
+            World w(d);
+            w.shapes.addSegment({-10.0, 0.0}, {10.0, 0.0}, material::kFloor);
+            const Vec2 slope[] = {{-10.0, 0.0}, {-10.0, 5.0}, {-20.0, 0.0}};
+            w.shapes.addPolyline(slope, material::kFloor);
+            ParticleDef pd;
+            pd.position = {0.5, 1.0};
+            pd.velocity = {0.3, 0.0};
+            pd.radius = 0.05;
+            pd.material = material::kTennis;
+            const auto id = w.particles.add(pd);
+            for (int i = 0; i < 120 * 20; ++i)
+                w.step(); // 20 s to settle
+            const Vec2 settled = w.particles.position(id);
+            EXPECT_NEAR(settled.y, 0.05, 1e-8) << info(method).name;
+            double worst = 0.0;
+            for (int i = 0; i < 120 * 600; ++i) {
+                w.step();
+                worst = std::max(worst, length(w.particles.position(id) - settled));
+            }
+            EXPECT_LE(worst, 1e-6) << info(method).name;
+            EXPECT_EQ((w.particles.flags[id] & kSleeping) != 0, sleep) << info(method).name;
+            applyBlast(w.particles, {{settled.x - 1.0, 0.0}, 1.0, 2.0});
+            EXPECT_FALSE(w.particles.flags[id] & kSleeping);
             w.step();
-            worst = std::max(worst, length(w.particles.position(id) - settled));
+            EXPECT_GT(length(w.particles.position(id) - settled), 1e-3);
         }
-        EXPECT_LE(worst, 1e-6) << info(method).name;
-        EXPECT_EQ((w.particles.flags[id] & kSleeping) != 0, sleep) << info(method).name;
-        applyBlast(w.particles, {{settled.x - 1.0, 0.0}, 1.0, 2.0});
-        EXPECT_FALSE(w.particles.flags[id] & kSleeping);
-        w.step();
-        EXPECT_GT(length(w.particles.position(id) - settled), 1e-3);
-    }
 }
 
 // A stack of resting particles on the floor stays put too (particle-particle resting).
@@ -280,11 +289,13 @@ TEST(Resting, ABallOnABallSettles) {
     const auto low = w.particles.add(pd);
     pd.position = {0.0, 0.35};
     const auto high = w.particles.add(pd);
-    for (int i = 0; i < 120 * 5; ++i) w.step();
+    for (int i = 0; i < 120 * 5; ++i)
+        w.step();
     const Vec2 settled = w.particles.position(high);
     EXPECT_NEAR(settled.y, 0.3, 1e-6);
     EXPECT_NEAR(settled.x, 0.0, 1e-12);
-    for (int i = 0; i < 120 * 60; ++i) w.step();
+    for (int i = 0; i < 120 * 60; ++i)
+        w.step();
     EXPECT_LE(length(w.particles.position(high) - settled), 1e-6);
     EXPECT_NEAR(w.particles.py[low], 0.1, 1e-9);
 }
@@ -303,7 +314,8 @@ TEST(Penalty, SinksByGOverOmegaSquaredAndBlowsUpWhenStiff) {
     pd.radius = 0.05;
     pd.material = material::kTennis;
     const auto id = w.particles.add(pd);
-    for (int i = 0; i < 120 * 20; ++i) w.step();
+    for (int i = 0; i < 120 * 20; ++i)
+        w.step();
     // The continuous spring would rest at d = g / w^2. The explicit step (integrate, then
     // the impulse F h) has its fixed point where the step's own fall, v h - g h^2/2, is
     // zero, v = g h / 2, and there the damper adds zeta w g h: d = g (1 - zeta w h) / w^2.
@@ -340,4 +352,21 @@ TEST(CollisionDef, ValidateSaysWhatIsWrong) {
     EXPECT_EQ(validate(d), "grid cell size must be >= 0 m (0: automatic)");
     EXPECT_STREQ(contactModelName(ContactModel::Penalty), "penalty");
     EXPECT_STREQ(broadPhaseName(BroadPhase::Grid), "grid");
+}
+
+// A sleeper whose support is removed (a crater) falls once the world is woken.
+TEST(Resting, WakeAllAfterTheTerrainChanges) {
+    World w;
+    w.shapes.addSegment({-1.0, 0.0}, {1.0, 0.0}, material::kFloor);
+    ParticleDef pd;
+    pd.position = {0.0, 0.1};
+    const auto id = w.particles.add(pd);
+    for (int i = 0; i < 120; ++i) w.step();
+    ASSERT_TRUE(w.particles.flags[id] & kSleeping);
+    w.shapes.clear();
+    w.step();
+    EXPECT_EQ(w.particles.py[id], 0.1); // asleep: it does not notice
+    w.wakeAll();
+    for (int i = 0; i < 12; ++i) w.step(); // 0.1 s of free fall: 4.905 cm
+    EXPECT_NEAR(w.particles.py[id], 0.1 - 0.5 * 9.81 * 0.01, 1e-12);
 }

@@ -50,7 +50,8 @@ double ropeLength(const World& w) {
 // A rope of 20 rods, 2 m long, swinging down from horizontal under gravity for 10 s:
 // every link, and so the whole rope, keeps its length within 0.1 %.
 TEST(Rods, RopeKeepsItsLengthWithinATenthOfAPercent) {
-    for (const Integrator m : {Integrator::VelocityVerlet, Integrator::RK4, Integrator::SymplecticEuler}) {
+    for (const Integrator m :
+         {Integrator::VelocityVerlet, Integrator::RK4, Integrator::SymplecticEuler}) {
         WorldDef d;
         d.integrator = m;
         World w(d);
@@ -58,18 +59,21 @@ TEST(Rods, RopeKeepsItsLengthWithinATenthOfAPercent) {
         double worstLink = 0.0, worstRope = 0.0, lowest = 10.0;
         for (int i = 0; i < 1200; ++i) {
             w.step();
-            for (const auto& c : w.constraints) worstLink = std::max(worstLink, lengthError(c, w.particles));
+            for (const auto& c : w.constraints)
+                worstLink = std::max(worstLink, lengthError(c, w.particles));
             worstRope = std::max(worstRope, std::abs(ropeLength(w) - 2.0) / 2.0);
             lowest = std::min(lowest, w.particles.py[ids.back()]);
         }
         std::printf("%s: 20-rod rope, worst link error %.2e, worst rope-length error %.2e\n",
                     info(m).name, worstLink, worstRope);
-        EXPECT_LE(worstLink, 1e-3) << info(m).name;                      // the 0.1 %
-        EXPECT_LE(worstLink, 2.0 * d.collision.constraintTolerance) << info(m).name; // what CG gives
+        EXPECT_LE(worstLink, 1e-3) << info(m).name; // the 0.1 %
+        EXPECT_LE(worstLink, 2.0 * d.collision.constraintTolerance)
+            << info(m).name; // what CG gives
         EXPECT_LE(worstRope, 1e-3) << info(m).name;
         EXPECT_DOUBLE_EQ(w.constraintError(), [&] {
             double e = 0.0;
-            for (const auto& c : w.constraints) e = std::max(e, lengthError(c, w.particles));
+            for (const auto& c : w.constraints)
+                e = std::max(e, lengthError(c, w.particles));
             return e;
         }()) << info(m).name;
         EXPECT_LT(lowest, 8.5) << info(m).name; // it really swung down (the end can reach 8 m)
@@ -114,11 +118,14 @@ TEST(Cables, SlackThenTaut) {
     pd.radius = 0.01;
     const auto id = w.particles.add(pd);
     w.constraints.push_back({ConstraintKind::Cable, id, kNoParticle, {0.0, 10.0}, 1.0});
-    for (int i = 0; i < 24; ++i) w.step(); // 0.2 s: falls 0.196 m, still slack
+    for (int i = 0; i < 24; ++i)
+        w.step(); // 0.2 s: falls 0.196 m, still slack
     EXPECT_NEAR(w.particles.py[id], 9.5 - 0.5 * 9.81 * 0.04, 1e-12);
-    for (int i = 0; i < 240; ++i) w.step();
+    for (int i = 0; i < 240; ++i)
+        w.step();
     EXPECT_NEAR(w.particles.py[id], 9.0, 1e-9);
     EXPECT_NEAR(w.particles.vy[id], 0.0, 1e-9);
-    EXPECT_EQ(lengthError(w.constraints[0], w.particles), 0.0 * lengthError(w.constraints[0], w.particles));
+    EXPECT_EQ(lengthError(w.constraints[0], w.particles),
+              0.0 * lengthError(w.constraints[0], w.particles));
     EXPECT_NE(validate(DistanceConstraint{ConstraintKind::Rod, id, id, {}, 1.0}, w.particles), "");
 }

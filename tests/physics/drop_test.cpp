@@ -30,9 +30,11 @@ DropResult drop(MaterialId m, Integrator method, double dt, double H = 0.92, int
 TEST(Drop, EveryPresetMatchesESquaredKHAtBothSteps) {
     for (const RestitutionPreset& p : kRestitutionPresets)
         for (const double dt : {1.0 / 60.0, 1.0 / 240.0})
-            for (const Integrator m : {Integrator::VelocityVerlet, Integrator::Midpoint, Integrator::RK4}) {
+            for (const Integrator m :
+                 {Integrator::VelocityVerlet, Integrator::Midpoint, Integrator::RK4}) {
                 const DropResult r = drop(p.id, m, dt);
-                SCOPED_TRACE(std::string(p.name) + " " + info(m).name + " dt=" + std::to_string(dt));
+                SCOPED_TRACE(std::string(p.name) + " " + info(m).name +
+                             " dt=" + std::to_string(dt));
                 EXPECT_DOUBLE_EQ(r.restitution, p.restitution);
                 ASSERT_EQ(r.bounces.size(), 3u);
                 for (int k = 0; k < 3; ++k) {
@@ -59,7 +61,8 @@ TEST(Drop, DefaultsAndOverlapTestingMatchToo) {
             ASSERT_EQ(r.bounces.size(), 3u) << p.name;
             for (int k = 0; k < 3; ++k) {
                 const double expected = std::pow(p.restitution, 2 * (k + 1)) * d.height;
-                EXPECT_NEAR(r.bounces[k].apex, expected, 0.005 * expected + 1e-9) << p.name << " " << k;
+                EXPECT_NEAR(r.bounces[k].apex, expected, 0.005 * expected + 1e-9)
+                    << p.name << " " << k;
             }
         }
 }
@@ -90,7 +93,8 @@ TEST(Drop, EulerMethodsShowTheirFirstOrderError) {
         ASSERT_EQ(fine.bounces.size(), 3u);
         const double ec = std::abs(coarse.bounces[0].relativeError);
         const double ef = std::abs(fine.bounces[0].relativeError);
-        std::printf("%s golf first apex error: dt=1/60 %.4f %%, dt=1/240 %.4f %%, velocity-verlet %.2e %%\n",
+        std::printf("%s golf first apex error: dt=1/60 %.4f %%, dt=1/240 %.4f %%, velocity-verlet "
+                    "%.2e %%\n",
                     info(m).name, 100 * coarse.bounces[0].relativeError,
                     100 * fine.bounces[0].relativeError, 100 * exact.bounces[0].relativeError);
         EXPECT_GT(ec, 100.0 * std::abs(exact.bounces[0].relativeError));

@@ -21,6 +21,7 @@ struct Oscillator {
                double c = 0.0)
         : world([&] {
               WorldDef d;
+              d.model = ModelPolicy::Integrate; // every particle through the integrator
               d.tickSeconds = dt;
               d.integrator = method;
               d.forces.gravity = {0, 0};
@@ -54,6 +55,7 @@ double oscillatorError(Integrator method, double dt, double T = 2.0) {
 // A projectile with quadratic drag and wind: nonlinear and velocity-dependent.
 Vec2 dragShot(Integrator method, double dt, double T = 2.0) {
     WorldDef d;
+    d.model = ModelPolicy::Integrate; // every particle through the integrator
     d.tickSeconds = dt;
     d.integrator = method;
     d.forces.drag = DragModel::Quadratic;
@@ -102,6 +104,7 @@ TEST_P(EveryIntegrator, ConvergenceOrderWithQuadraticDragAndWind) {
 TEST_P(EveryIntegrator, ExactUnderConstantAccelerationWhenItClaimsToBe) {
     const Integrator m = GetParam();
     WorldDef d;
+    d.model = ModelPolicy::Integrate; // every particle through the integrator
     d.tickSeconds = 0.05;
     d.integrator = m;
     World w(d);
@@ -129,6 +132,7 @@ INSTANTIATE_TEST_SUITE_P(Integrators, EveryIntegrator,
 TEST(Verlet, EqualsExplicitEulerUnderConstantAcceleration) {
     auto run = [](Integrator m) {
         WorldDef d;
+        d.model = ModelPolicy::Integrate; // every particle through the integrator
         d.tickSeconds = 0.1;
         d.integrator = m;
         World w(d);
@@ -258,6 +262,7 @@ TEST(SpringEnergy, ImplicitEulerDecaysAtAnyDt) {
 TEST(ImplicitEuler, StableForSpringsFarTooStiffForExplicitMethods) {
     auto chain = [](Integrator m) {
         WorldDef d;
+        d.model = ModelPolicy::Integrate; // every particle through the integrator
         d.integrator = m; // default tick 1/120 s
         // Springs only: the beads (radius 0.1 m, 0.1 m apart) overlap from the start, so
         // contacts would push them apart and this would no longer test the springs.
@@ -319,6 +324,7 @@ TEST(Integrators, NamesAndAliasesParse) {
 TEST(Integrators, FixedParticlesNeverMove) {
     for (const auto& i : integrators()) {
         WorldDef d;
+        d.model = ModelPolicy::Integrate; // every particle through the integrator
         d.integrator = i.id;
         World w(d);
         ParticleDef pd;
@@ -341,6 +347,7 @@ void PrintTo(Integrator m, std::ostream* os) { *os << info(m).name; }
 TEST(ImplicitEuler, PointGravityIsTreatedImplicitly) {
     auto orbit = [](Integrator m) {
         WorldDef d;
+        d.model = ModelPolicy::Integrate; // every particle through the integrator
         d.integrator = m;
         d.tickSeconds = 0.02;
         d.forces.gravity = {0, 0};

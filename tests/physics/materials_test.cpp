@@ -12,11 +12,20 @@ using namespace phys;
 // Notes 001: restitution of balls dropped from 92 cm onto a floor.
 TEST(Materials, NotesPresetsAgainstTheFloor) {
     const MaterialTable t;
-    const struct { const char* name; double e; } notes[] = {
-        {"golf", 0.858}, {"tennis", 0.712}, {"billiard", 0.804}, {"hand-ball", 0.752},
-        {"wooden", 0.603}, {"steel-bearing", 0.597}, {"glass-marble", 0.658},
-        {"rubber-band-ball", 0.828}, {"hollow-hard-plastic", 0.688},
-        {"perfectly-elastic", 1.0}, {"perfectly-plastic", 0.0}};
+    const struct {
+        const char* name;
+        double e;
+    } notes[] = {{"golf", 0.858},
+                 {"tennis", 0.712},
+                 {"billiard", 0.804},
+                 {"hand-ball", 0.752},
+                 {"wooden", 0.603},
+                 {"steel-bearing", 0.597},
+                 {"glass-marble", 0.658},
+                 {"rubber-band-ball", 0.828},
+                 {"hollow-hard-plastic", 0.688},
+                 {"perfectly-elastic", 1.0},
+                 {"perfectly-plastic", 0.0}};
     ASSERT_EQ(std::size(kRestitutionPresets), std::size(notes));
     for (std::size_t i = 0; i < std::size(notes); ++i) {
         const auto id = t.find(notes[i].name);
@@ -37,8 +46,10 @@ TEST(Materials, CombineRuleForPairsWithoutAnEntry) {
     EXPECT_DOUBLE_EQ(t.pair(golf, steel).restitution, 0.858 * 0.597);
     EXPECT_DOUBLE_EQ(t.pair(steel, golf).restitution, 0.858 * 0.597);
     EXPECT_DOUBLE_EQ(t.pair(golf, golf).restitution, 0.858 * 0.858);
-    EXPECT_DOUBLE_EQ(t.pair(golf, steel).staticFriction, std::sqrt(t[golf].staticFriction * t[steel].staticFriction));
-    EXPECT_DOUBLE_EQ(t.pair(golf, steel).dynamicFriction, std::sqrt(t[golf].dynamicFriction * t[steel].dynamicFriction));
+    EXPECT_DOUBLE_EQ(t.pair(golf, steel).staticFriction,
+                     std::sqrt(t[golf].staticFriction * t[steel].staticFriction));
+    EXPECT_DOUBLE_EQ(t.pair(golf, steel).dynamicFriction,
+                     std::sqrt(t[golf].dynamicFriction * t[steel].dynamicFriction));
     // Perfectly plastic wins against anything; perfectly elastic is neutral.
     EXPECT_EQ(t.pair(material::kPerfectlyPlastic, material::kRubberBandBall).restitution, 0.0);
     EXPECT_DOUBLE_EQ(t.pair(material::kPerfectlyElastic, material::kTennis).restitution, 0.712);
@@ -57,8 +68,8 @@ TEST(Materials, PairEntryOverridesTheRule) {
     EXPECT_DOUBLE_EQ(t.pair(material::kWooden, material::kGolf).restitution, 0.9);
     EXPECT_DOUBLE_EQ(t.pair(*clay, material::kFloor).restitution, 0.1);
     // Bad materials are refused, with a reason.
-    EXPECT_FALSE(t.add({"clay", 0.2, 0.5, 0.4}));     // name taken
-    EXPECT_FALSE(t.add({"rubber", 1.2, 0.5, 0.4}));   // e > 1
+    EXPECT_FALSE(t.add({"clay", 0.2, 0.5, 0.4}));   // name taken
+    EXPECT_FALSE(t.add({"rubber", 1.2, 0.5, 0.4})); // e > 1
     EXPECT_EQ(validate(Material{"ice", 0.5, 0.1, 0.2}),
               "material 'ice': dynamic friction must be in [0, static friction]");
 }
@@ -87,5 +98,6 @@ TEST(Projectiles, PresetsPairMaterialWithMassSizeAndDrag) {
     EXPECT_NEAR(c.mass, 12.0 * 0.45359237, 1e-3);
     // Every preset's material is a real entry of the table.
     const MaterialTable t;
-    for (const auto& p : projectilePresets()) EXPECT_LT(p.material, t.size()) << p.name;
+    for (const auto& p : projectilePresets())
+        EXPECT_LT(p.material, t.size()) << p.name;
 }

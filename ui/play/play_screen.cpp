@@ -242,6 +242,12 @@ bool PlayScreen::takeScreenshotRequest() {
     return r;
 }
 
+void PlayScreen::warmUp(double seconds) {
+    const int ticks = static_cast<int>(seconds / scene_.world.def().tickSeconds);
+    for (int i = 0; i < ticks; ++i)
+        scene_.tick();
+}
+
 void PlayScreen::setMeasuredFrameMs(double ms) {
     // Smoothed so the number can be read while it changes every frame; the first frame
     // (shader compilation, font upload) is not typical and is replaced by the second.

@@ -9,6 +9,7 @@
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
 #include "ui/play/physics_panel.h"
+#include "ui/play/screen.h"
 #include "ui/render/render_target.h"
 #include "ui/render/renderer2d.h"
 #include "ui/render/screenshot.h"
@@ -32,7 +33,7 @@ struct PlayScreenDef {
     DemoDef demo;
 };
 
-class PlayScreen {
+class PlayScreen final : public Screen {
   public:
     /// Loads GL from `context` and sets up ImGui, the renderer and the scene. `window` is
     /// null headless. Throws std::runtime_error when GL 3.3 core is not there.
@@ -40,19 +41,21 @@ class PlayScreen {
 
     /// Advances the clock by `wallSeconds`, runs the ticks it hands out, and draws the
     /// frame into the context's framebuffer (not yet presented).
-    void frame(double wallSeconds);
+    void frame(double wallSeconds) override;
     /// Handles one window event (keys, mouse). Returns false when the player quits.
-    bool handleEvent(const SDL_Event& event);
+    bool handleEvent(const SDL_Event& event) override;
 
     /// The picture of the frame just drawn (call after frame(), before present()).
     Image capture() const;
     /// Writes the frame just drawn as PNG; reports the outcome in the stats line.
     /// Returns "" on success, else the error.
-    std::string saveScreenshot(const std::string& path);
+    std::string saveScreenshot(const std::string& path) override;
     /// True once when the player asked for a screenshot (F12) since the last call.
-    bool takeScreenshotRequest();
+    bool takeScreenshotRequest() override;
 
-    void setMeasuredFrameMs(double ms);
+    void setMeasuredFrameMs(double ms) override;
+    /// Simulates `seconds` of the demo in ticks, without drawing.
+    void warmUp(double seconds) override;
     DemoScene& scene() { return scene_; }
     Camera& camera() { return camera_; }
     const FrameStats& stats() const { return stats_; }

@@ -1,5 +1,6 @@
 #include "ui/play/play_verb.h"
 
+#include "ui/game/game_screen.h"
 #include "ui/platform/sdl_window.h"
 #include "ui/play/play_screen.h"
 
@@ -25,18 +26,20 @@ using Clock = std::chrono::steady_clock;
 constexpr const char* kPlayUsage =
     R"(usage: artillery play [LEVEL] [--frames N] [--screenshot FILE.png] [--size WxH]
                       [--headless] [--context auto|osmesa|egl] [--warmup SECONDS]
-                      [--msaa N] [--no-panel] [--integrator NAME] [--planet NAME |
-                      --gravity G] [--wind VX] [--no-drag] [--velocities] [--json]
+                      [--msaa N] [--no-panel] [--difficulty easy|normal|hard]
+                      [--hotseat] [--demo] [--json]
 
-Opens the game window. Until level files are loaded (issue 5), every level opens the
-built-in demo: a cannon firing a shell every 2.5 s (with a drag-free reference shell
-beside it while air drag is on), and a spring chain swinging from a gallows. The panel
-sets the integrator, tick rate, sub-steps, gravity, drag and wind live, and shows the
-frame and physics times.
+Plays LEVEL in a window; without LEVEL the level select screen opens (every level in
+levels/ with its lesson and your best result). Aim by dragging from the cannon
+(direction = angle, length = power) or with the arrow keys, hold Space to charge and
+release to fire, 1-8 pick the projectile. Every change you make, physics settings
+included, is a command the session records, so each game is a replay. Results, choices
+and the panel layout are kept in $XDG_CONFIG_HOME/artillery (~/.config/artillery).
 
 options:
-  LEVEL                 a level file (must exist; shown as the demo for now)
-  --frames N            run N frames, then exit (default: until the window closes)
+  LEVEL                 a level file (levels/*.json)
+  --frames N            run N frames, then exit (default: until the window closes);
+                        such check runs leave no settings or replays behind
   --screenshot FILE     save the last frame as PNG (headless, the last frame is always
                         saved: by default to $TMPDIR/artillery-demo.png)
   --size WxH            window or picture size in pixels (default 1280x720)
@@ -45,17 +48,21 @@ options:
   --warmup SECONDS      simulate this long before the first frame (default 0)
   --msaa N              anti-aliasing samples, 0..16 (default 0 = auto: 4 on a GPU,
                         off on software renderers such as llvmpipe, where it is slow)
-  --no-panel            hide the ImGui panel
-  --integrator NAME     start with this integrator (default velocity-verlet)
-  --planet NAME         earth, moon, mars or jupiter gravity; or --gravity G in m/s^2
-  --wind VX             horizontal wind, m/s (drag acts on v - wind)
-  --no-drag             start with air drag off (on by default)
-  --velocities          draw velocity arrows
+  --no-panel            hide the ImGui physics panel
+  --difficulty NAME     the computer's aim in duels: easy, normal (default) or hard
+  --hotseat             a duel's computer cannon is played by a second person
+  --demo                the physics demo scene instead of a level (a cannon with a
+                        drag-free twin and a swinging spring chain); with it:
+                        --integrator NAME, --planet NAME | --gravity G, --wind VX,
+                        --no-drag, --velocities
   --json                print the run's figures as JSON
 
-keys:  Esc quit   Space pause   S or . single step   F fire   R reset
-       1/2/3 speed x0.1/x0.25/x1   V velocities   T trails   F12 screenshot
-mouse: wheel zooms at the pointer, drag pans, Home re-frames
+keys:  mouse drag aim   arrows angle/power   hold Space charge, release fire
+       Enter/F fire   1-8 projectile   E end turn   P preview   H hint
+       Esc pause menu   F1 or ? help   F2 physics panel   . one tick
+       [ ] slower/faster   R restart   L levels   F12 screenshot
+mouse: wheel zooms at the pointer, right drag pans, Home re-frames
+controller: left stick aims, triggers set power, A fires, B ends the turn
 
 Headless, frames advance 1/60 s each, so a run gives the same picture every time.
 Exit codes: 0 ok, 1 the frame could not be drawn or saved, 2 bad input.
@@ -74,6 +81,10 @@ struct PlayOptions {
     bool json = false;
     bool velocities = false;
     phys::WorldDef world = demoWorldDef();
+    std::string level;  ///< "" = level select (window) or the demo (headless)
+    bool demo = false;
+    std::optional<game::Difficulty> difficulty;
+    std::optional<bool> hotseat;
 };
 
 struct RunReport {
@@ -125,23 +136,25 @@ PlayOptions parseOptions(const Args& args) {
     o.world.forces.wind = {args.number("wind", 0.0, -100.0, 100.0, "m/s"), 0.0};
     if (args.flag("no-drag")) o.world.forces.drag = phys::DragModel::None;
     o.json = args.flag("json");
+    args.text("<positional>"); // LEVEL may be given
     const auto& pos = args.positionals();
     if (pos.size() > 1) args.fail("expects at most one LEVEL, got " + std::to_string(pos.size()));
     if (!pos.empty() && !std::filesystem::exists(pos[0]))
         args.fail("level file '" + pos[0] + "' does not exist");
+    if (!pos.empty()) o.level = pos[0];
+    o.demo = args.flag("demo");
+    if (args.has("difficulty")) {
+        const std::string d = args.text("difficulty", "normal");
+        o.difficulty = game::difficultyFromName(d);
+        if (!o.difficulty) args.fail("--difficulty expects easy, normal or hard, got '" + d + "'");
+    }
+    if (args.flag("hotseat")) o.hotseat = true;
     args.rejectUnknown();
     return o;
 }
 
 double msSince(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-/// Simulates `seconds` without drawing, in frames of 1/60 s (the headless frame).
-void warmUp(PlayScreen& screen, double seconds) {
-    const int ticks = static_cast<int>(seconds / screen.scene().world.def().tickSeconds);
-    for (int i = 0; i < ticks; ++i)
-        screen.scene().tick();
 }
 
 PlayScreenDef screenDef(const PlayOptions& o) {
@@ -151,6 +164,35 @@ PlayScreenDef screenDef(const PlayOptions& o) {
     d.view.velocities = o.velocities;
     d.world = o.world;
     return d;
+}
+
+/// Where the level select screen finds levels: ./levels when run from the project, else
+/// the source tree's (the build knows where it is).
+std::string levelsFolder() {
+    if (std::filesystem::is_directory("levels")) return "levels";
+#ifdef ARTILLERY_LEVELS_DIR
+    return ARTILLERY_LEVELS_DIR;
+#else
+    return "levels";
+#endif
+}
+
+/// The game for a level (or the level select screen in a window); the physics demo with
+/// --demo, or headless without a level.
+std::unique_ptr<Screen> makeScreen(GLContext& context, SdlWindow* window, const PlayOptions& o) {
+    const bool demo = o.demo || (o.level.empty() && !window);
+    if (demo) return std::make_unique<PlayScreen>(context, window, screenDef(o));
+    GameScreenDef d;
+    d.levelFile = o.level;
+    d.levelsFolder = levelsFolder();
+    d.msaaSamples = o.msaa;
+    d.panel = o.panel;
+    d.difficulty = o.difficulty;
+    d.hotseat = o.hotseat;
+    // A person playing keeps results and layout; check runs (--frames) and headless
+    // pictures leave nothing behind.
+    if (window && !o.frames) d.settingsFolder = configFolder();
+    return std::make_unique<GameScreen>(context, window, d);
 }
 
 /// The first frame compiles shaders and uploads the font; it is reported apart, and the
@@ -172,7 +214,7 @@ std::string absolute(const std::string& path) {
 }
 
 /// Saves the last frame if asked; returns false (and says why) when it cannot.
-bool saveIfAsked(PlayScreen& screen, const PlayOptions& o, RunReport& report) {
+bool saveIfAsked(Screen& screen, const PlayOptions& o, RunReport& report) {
     if (o.screenshot.empty()) return true;
     const std::string error = screen.saveScreenshot(o.screenshot);
     if (!error.empty()) {
@@ -191,8 +233,9 @@ int runHeadless(const PlayOptions& o, RunReport& report) {
         return game::cli::kCheckFailed;
     }
     report.context = context->name();
-    PlayScreen screen(*context, nullptr, screenDef(o));
-    warmUp(screen, o.warmupSeconds);
+    const auto screenPtr = makeScreen(*context, nullptr, o);
+    Screen& screen = *screenPtr;
+    screen.warmUp(o.warmupSeconds);
     const long long frames = o.frames.value_or(1);
     for (long long f = 0; f < frames; ++f) {
         const auto t0 = Clock::now();
@@ -214,14 +257,16 @@ int runWindow(const PlayOptions& o, RunReport& report) {
         return -1;
     }
     report.context = window->name();
-    PlayScreen screen(*window, window.get(), screenDef(o));
-    warmUp(screen, o.warmupSeconds);
+    const auto screenPtr = makeScreen(*window, window.get(), o);
+    Screen& screen = *screenPtr;
+    screen.warmUp(o.warmupSeconds);
     auto last = Clock::now();
     bool running = true;
     for (long long f = 0; running && (!o.frames || f < *o.frames); ++f) {
         SDL_Event e;
         while (SDL_PollEvent(&e))
             running = screen.handleEvent(e) && running;
+        running = running && screen.running();
         const auto now = Clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();
         last = now;
@@ -271,10 +316,14 @@ PlayOptions headlessDemo(PlayOptions o) {
     o.headless = true;
     if (!o.frames) {
         o.frames = 5;
-        if (o.warmupSeconds == 0.0) o.warmupSeconds = 2.0;
+        if (o.warmupSeconds == 0.0 && o.level.empty()) o.warmupSeconds = 2.0;
     }
-    if (o.screenshot.empty())
-        o.screenshot = (std::filesystem::temp_directory_path() / "artillery-demo.png").string();
+    if (o.screenshot.empty()) {
+        const std::string name = o.level.empty() || o.demo
+                                     ? std::string("artillery-demo.png")
+                                     : "artillery-" + std::filesystem::path(o.level).stem().string() + ".png";
+        o.screenshot = (std::filesystem::temp_directory_path() / name).string();
+    }
     return o;
 }
 
@@ -307,7 +356,8 @@ const game::cli::Verb& playVerb() {
     static const game::cli::Verb verb{"play",
                                       "play in a window (headless picture without a display)",
                                       kPlayUsage,
-                                      {"headless", "no-panel", "no-drag", "velocities"},
+                                      {"headless", "no-panel", "no-drag", "velocities", "demo",
+                                       "hotseat"},
                                       runPlay};
     return verb;
 }

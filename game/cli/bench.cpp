@@ -1,0 +1,464 @@
+#include "game/cli/bench.h"
+
+#include "game/bench/choose.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <ostream>
+
+namespace game::cli {
+
+using namespace game::bench;
+using nlohmann::json;
+
+const char* const kBenchUsage =
+    R"(usage: artillery bench work-precision [--scene NAME] --csv FILE --png FILE [--full|--quick] [--json]
+       artillery bench stability --csv FILE --png FILE [--full|--quick] [--json]
+       artillery bench scaling --csv FILE --png FILE [--full|--quick] [--json]
+       artillery bench choose --scene NAME --tolerance M [--full|--quick] [--json]
+
+Speed against accuracy. Each measuring sub-command prints progress on stderr, writes
+its measurements as CSV and a chart as PNG (drawn headless by the game's renderer),
+and prints its key figures. By default each finishes in well under 30 s on 2 cores;
+--full runs longer sweeps (finer dt, larger N, more repeats), --quick tiny ones (tests).
+Times are medians of repeats; the machine's load shows in them.
+
+work-precision  for each integrator and dt = largest, /2, /4, ...: the error against the
+                scene's exact or reference solution and the CPU time per simulated
+                second, log-log, one line per integrator; also the convergence slope
+                (the order) and the cheapest method within 1e-2, 1e-4 and 1e-6 m.
+  --scene NAME  projectile-drag, spring, orbit, pendulum, cloth (default: all, one
+                panel each)
+stability       per integrator: the largest stable w dt on an undamped spring (energy
+                growth criterion, bisection) against theory, the energy growth across
+                w dt, and the stiffest spring a 20-link rope survives at 1/120 s.
+scaling         step cost against N: particles in flight, a particle pile with contacts,
+                cloth springs, Box2D circles; the same pile of 2,000 balls as particles
+                and as Box2D circles; the 1M-particle flight update against a streaming
+                kernel over the same arrays; a 64x64 cloth frame (8 sub-steps).
+choose          "accurate enough, fastest": measures the scene's sweep and prints the
+                integrator and dt of least cost whose error is at most the tolerance.
+  --tolerance M error tolerance, m (> 0)
+
+  --csv FILE    measurements as CSV (header row first)
+  --png FILE    the chart as PNG
+  --json        the key figures as one JSON object on stdout
+)";
+
+std::set<std::string> benchFlags() { return {"full", "quick"}; }
+
+namespace {
+
+enum class Size { Quick, Default, Full };
+
+Size sizeOption(const Args& args) {
+    const bool full = args.flag("full"), quick = args.flag("quick");
+    if (full && quick) args.fail("--full and --quick cannot be combined");
+    return full ? Size::Full : quick ? Size::Quick : Size::Default;
+}
+
+/// Progress on stderr ("\r" so it updates in place on a terminal).
+std::function<void(int, int)> progressLine(const std::string& what) {
+    return [what](int done, int total) {
+        std::fprintf(stderr, "\r%s: %d/%d", what.c_str(), done, total);
+        if (done == total) std::fprintf(stderr, "\n");
+        std::fflush(stderr);
+    };
+}
+
+/// An output path whose folder exists; checked before any long measurement.
+std::string outputPath(const Args& args, const std::string& name) {
+    const std::string path = args.text(name).value_or("");
+    if (!args.has(name)) args.fail("--" + name + " FILE is required");
+    if (path.empty()) args.fail("--" + name + " expects a file name");
+    const auto parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent))
+        args.fail("--" + name + ": folder '" + parent.string() + "' does not exist");
+    return path;
+}
+
+void writeText(const Args& args, const std::string& path, const std::string& text) {
+    // Written to a temporary file and renamed, so a reader never sees half a CSV.
+    const std::string tmp = path + ".tmp";
+    {
+        std::ofstream f(tmp, std::ios::binary);
+        f << text;
+        if (!f) args.fail("cannot write '" + path + "'");
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) args.fail("cannot write '" + path + "': " + ec.message());
+}
+
+std::optional<AccuracyScene> sceneOption(const Args& args, bool required) {
+    const auto name = args.text("scene");
+    if (!name) {
+        if (required) args.fail("--scene NAME is required (projectile-drag, spring, orbit, pendulum, cloth)");
+        return std::nullopt;
+    }
+    const auto s = accuracySceneFromName(*name);
+    if (!s)
+        args.fail("--scene expects one of projectile-drag, spring, orbit, pendulum, cloth (got '" +
+                  *name + "')");
+    return s;
+}
+
+/// The dt sweep of a scene at a size: starts where every method is at least stable
+/// enough to plot, ends where the best ones meet rounding.
+WorkPrecisionDef sweepFor(AccuracyScene scene, Size size) {
+    WorkPrecisionDef d = choiceSweep(scene);
+    if (scene == AccuracyScene::Cloth || scene == AccuracyScene::PendulumRods) d.largestDt = 0.02;
+    switch (size) {
+    case Size::Quick: d.halvings = 3, d.repeats = 1; break;
+    case Size::Default: d.halvings = scene == AccuracyScene::Cloth ? 6 : 7, d.repeats = 3; break;
+    case Size::Full: d.halvings = 10, d.repeats = 5; break;
+    }
+    return d;
+}
+
+json jnum(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+// ---- work-precision -------------------------------------------------------------------
+
+int runWorkPrecisionCommand(const Args& args, std::ostream& out, const BenchPlots* plots) {
+    const auto only = sceneOption(args, false);
+    const Size size = sizeOption(args);
+    const bool asJson = args.flag("json");
+    const std::string csv = outputPath(args, "csv"), png = outputPath(args, "png");
+    args.rejectUnknown();
+
+    std::vector<WorkPrecisionPoint> points;
+    for (const auto& s : accuracyScenes()) {
+        if (only && s.id != *only) continue;
+        auto part = runWorkPrecision(sweepFor(s.id, size),
+                                     progressLine(std::string("work-precision ") + s.name));
+        points.insert(points.end(), part.begin(), part.end());
+    }
+    writeText(args, csv, toCsv(points));
+    std::string plotError = plots && plots->workPrecision ? plots->workPrecision(points, png)
+                                                          : "no renderer for --png";
+
+    json j;
+    j["csv"] = csv;
+    j["png"] = png;
+    j["scenes"] = json::array();
+    for (const auto& s : accuracyScenes()) {
+        if (only && s.id != *only) continue;
+        std::vector<WorkPrecisionPoint> ofScene;
+        for (const auto& p : points)
+            if (p.scene == s.id) ofScene.push_back(p);
+        if (!asJson) {
+            out << "\n" << s.name << " (" << s.reference << ", " << s.seconds << " s)\n";
+            out << "  integrator        order  slope   best error m   cost at best  cheapest <= 1e-4 m\n";
+        }
+        json js;
+        js["scene"] = s.name;
+        js["integrators"] = json::array();
+        for (const auto& m : phys::integrators()) {
+            std::vector<WorkPrecisionPoint> mine;
+            for (const auto& p : ofScene)
+                if (p.integrator == m.id) mine.push_back(p);
+            if (mine.empty()) continue;
+            // The order shows where errors are small; runs that blew up or are still far
+            // from converged (error above 5 cm) would only bend the fitted line.
+            std::vector<WorkPrecisionPoint> converged;
+            for (const auto& p : mine)
+                if (p.error < 0.05) converged.push_back(p);
+            const double slope = convergenceSlope(converged, m.id);
+            const WorkPrecisionPoint* best = nullptr;
+            for (const auto& p : mine)
+                if (std::isfinite(p.error) && (!best || p.error < best->error)) best = &p;
+            const WorkPrecisionPoint* within = cheapestWithin(mine, 1e-4);
+            if (!asJson) {
+                char line[200];
+                std::snprintf(line, sizeof line, "  %-17s %5d  %6.2f  %12.3g  %10.3g s/s  %s\n",
+                              m.name, m.order, slope, best ? best->error : NAN,
+                              best ? best->cpuSecondsPerSimSecond : NAN,
+                              within ? (std::to_string(within->cpuSecondsPerSimSecond * 1e3).substr(0, 6) +
+                                        " ms/s at dt " + std::to_string(within->dt).substr(0, 8))
+                                           .c_str()
+                                     : "-");
+                out << line;
+            }
+            js["integrators"].push_back({{"integrator", m.name},
+                                         {"order", m.order},
+                                         {"slope", jnum(slope)},
+                                         {"best_error_m", best ? jnum(best->error) : json(nullptr)},
+                                         {"cpu_s_per_sim_s_at_best",
+                                          best ? jnum(best->cpuSecondsPerSimSecond) : json(nullptr)}});
+        }
+        js["cheapest"] = json::array();
+        for (double tol : {1e-2, 1e-4, 1e-6}) {
+            const auto c = chooseCheapest(s.id, tol, ofScene);
+            if (!asJson) {
+                char line[200];
+                if (c)
+                    std::snprintf(line, sizeof line,
+                                  "  cheapest within %.0e m: %-16s dt %-10.4g error %.3g m, "
+                                  "%.3g ms CPU per simulated s\n",
+                                  tol, phys::info(c->integrator).name, c->dt, c->error,
+                                  1e3 * c->cpuSecondsPerSimSecond);
+                else
+                    std::snprintf(line, sizeof line, "  cheapest within %.0e m: none in this sweep\n", tol);
+                out << line;
+            }
+            js["cheapest"].push_back(
+                c ? json{{"tolerance_m", tol},
+                         {"integrator", phys::info(c->integrator).name},
+                         {"dt_s", c->dt},
+                         {"error_m", jnum(c->error)},
+                         {"cpu_s_per_sim_s", jnum(c->cpuSecondsPerSimSecond)}}
+                  : json{{"tolerance_m", tol}, {"integrator", nullptr}});
+        }
+        j["scenes"].push_back(js);
+    }
+    if (asJson) out << j.dump() << "\n";
+    else out << "\nwrote " << csv << (plotError.empty() ? " and " + png : "") << "\n";
+    if (!plotError.empty()) {
+        std::cerr << "artillery bench: cannot draw " << png << ": " << plotError << "\n";
+        return kCheckFailed;
+    }
+    return kOk;
+}
+
+// ---- stability ------------------------------------------------------------------------
+
+int runStabilityCommand(const Args& args, std::ostream& out, const BenchPlots* plots) {
+    const Size size = sizeOption(args);
+    const bool asJson = args.flag("json");
+    const std::string csv = outputPath(args, "csv"), png = outputPath(args, "png");
+    args.rejectUnknown();
+
+    StabilityReport report;
+    RopeDef rope;
+    if (size == Size::Quick) rope.seconds = 0.5;
+    if (size == Size::Full) rope.seconds = 5.0;
+    report.rows = runStability(progressLine("stability limits"), rope);
+    const int samples = size == Size::Quick ? 6 : size == Size::Full ? 61 : 25;
+    report.curves = energyGrowthCurves(1e-2, 10.0, samples, progressLine("energy growth curves"));
+    // The CSV holds both tables, one after the other, each with its header.
+    std::string text = toCsv(report.rows) + "\nintegrator,omega_dt,energy_growth\n";
+    char line[128];
+    for (const auto& c : report.curves)
+        for (std::size_t k = 0; k < c.omegaDt.size(); ++k) {
+            std::snprintf(line, sizeof line, "%s,%.6g,%.6g\n", phys::info(c.integrator).name,
+                          c.omegaDt[k], c.growth[k]);
+            text += line;
+        }
+    writeText(args, csv, text);
+    std::string plotError = plots && plots->stability ? plots->stability(report, png)
+                                                      : "no renderer for --png";
+
+    json j;
+    j["csv"] = csv;
+    j["png"] = png;
+    j["integrators"] = json::array();
+    if (!asJson)
+        out << "integrator         max stable w dt   theory    off by   stiffest rope spring at 1/120 s\n";
+    for (const auto& r : report.rows) {
+        const bool bothFinite = std::isfinite(r.maxOmegaDt) && std::isfinite(r.theoryOmegaDt) &&
+                                r.theoryOmegaDt > 0;
+        const double off = bothFinite ? 100.0 * (r.maxOmegaDt / r.theoryOmegaDt - 1.0) : NAN;
+        if (!asJson) {
+            std::snprintf(line, sizeof line, "%-18s %15.4g %8.4g %8s %14.3g N/m\n",
+                          phys::info(r.integrator).name, r.maxOmegaDt, r.theoryOmegaDt,
+                          bothFinite ? (std::to_string(off).substr(0, 5) + " %").c_str()
+                          : (r.maxOmegaDt == r.theoryOmegaDt) ? "agree"
+                          : r.theoryOmegaDt == 0.0            ? "slow *"
+                                                              : "DIFFER",
+                          r.ropeStiffness);
+            out << line;
+        }
+        j["integrators"].push_back({{"integrator", phys::info(r.integrator).name},
+                                    {"max_omega_dt", jnum(r.maxOmegaDt)},
+                                    {"theory_omega_dt", jnum(r.theoryOmegaDt)},
+                                    {"rope_max_stiffness_n_per_m", jnum(r.ropeStiffness)}});
+    }
+    if (asJson) out << j.dump() << "\n";
+    else out << "(0: unstable at any dt; inf: never unstable; * theory says unstable at any dt, "
+                "but below this w dt the growth per step, e.g. (w dt)^4/4 for midpoint, stays "
+                "under the 0.3 % test over the run)\nwrote " << csv
+             << (plotError.empty() ? " and " + png : "") << "\n";
+    if (!plotError.empty()) {
+        std::cerr << "artillery bench: cannot draw " << png << ": " << plotError << "\n";
+        return kCheckFailed;
+    }
+    return kOk;
+}
+
+// ---- scaling --------------------------------------------------------------------------
+
+int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plots) {
+    const Size size = sizeOption(args);
+    const bool asJson = args.flag("json");
+    const std::string csv = outputPath(args, "csv"), png = outputPath(args, "png");
+    args.rejectUnknown();
+
+    ScalingReport report;
+    ScalingDef light, heavy;
+    long pileBalls = 2000, bandwidthN = 1000000;
+    switch (size) {
+    case Size::Quick:
+        light.sizes = {500, 1000, 2000};
+        light.steps = 3, light.repeats = 1;
+        heavy = light;
+        pileBalls = 200, bandwidthN = 20000;
+        break;
+    case Size::Default:
+        light.sizes = {1000, 3000, 10000, 30000, 100000};
+        light.steps = 10, light.repeats = 3;
+        // Piles settle for kPileSettleTicks before each timing, which costs more than
+        // the timing itself: one run of 20 steps per size keeps the verb under 30 s.
+        heavy.sizes = {250, 500, 1000, 2000, 4000};
+        heavy.steps = 20, heavy.repeats = 1;
+        break;
+    case Size::Full:
+        light.sizes = {1000, 3000, 10000, 30000, 100000, 300000};
+        light.steps = 20, light.repeats = 5;
+        heavy.sizes = {250, 500, 1000, 2000, 4000, 8000, 16000};
+        heavy.steps = 20, heavy.repeats = 3;
+        break;
+    }
+    auto add = [&](const std::string& name, const Workload& w, const ScalingDef& d) {
+        auto pts = measureScaling(name, w, d, progressLine("scaling " + name));
+        report.points.insert(report.points.end(), pts.begin(), pts.end());
+    };
+    add("flight", flightWorkload, light);
+    add("cloth", clothWorkload, light);
+    add("pile", pileWorkload, heavy);
+    add("box2d", rigidPileWorkload, heavy);
+    std::fprintf(stderr, "pile of %ld balls, particles and Box2D side by side...\n", pileBalls);
+    report.pile = comparePiles(pileBalls, size == Size::Quick ? 5 : 30, 3);
+    std::fprintf(stderr, "%ld particles in flight against the streaming kernel...\n", bandwidthN);
+    report.bandwidth = measureBandwidth(bandwidthN, size == Size::Quick ? 3 : 10,
+                                        size == Size::Full ? 9 : 5);
+    report.clothMs = clothFrameMs(64, size == Size::Quick ? 3 : 30);
+
+    writeText(args, csv, toCsv(report.points));
+    std::string plotError = plots && plots->scaling ? plots->scaling(report, png)
+                                                    : "no renderer for --png";
+
+    json j;
+    j["csv"] = csv;
+    j["png"] = png;
+    j["workloads"] = json::array();
+    char line[200];
+    if (!asJson) out << "workload   scaling exponent (1 = linear)   us/step at largest N\n";
+    for (const char* name : {"flight", "cloth", "pile", "box2d"}) {
+        std::vector<ScalingPoint> pts;
+        for (const auto& p : report.points)
+            if (p.workload == name) pts.push_back(p);
+        const double e = scalingExponent(pts);
+        if (!asJson) {
+            std::snprintf(line, sizeof line, "%-10s %10.2f over N = %ld..%ld %18.4g\n", name, e,
+                          pts.front().items, pts.back().items, pts.back().usPerStep);
+            out << line;
+        }
+        j["workloads"].push_back({{"workload", name},
+                                  {"exponent", jnum(e)},
+                                  {"largest_n", pts.back().items},
+                                  {"us_per_step_at_largest", jnum(pts.back().usPerStep)}});
+    }
+    const auto& p = report.pile;
+    const auto& b = report.bandwidth;
+    if (!asJson) {
+        std::snprintf(line, sizeof line,
+                      "pile of %ld balls: particles %.3g ms/step, Box2D %.3g ms/step: "
+                      "particles %.2fx faster (target >= 5x: %s)\n",
+                      p.balls, p.particleMs, p.rigidMs, p.speedup(), p.speedup() >= 5 ? "met" : "NOT met");
+        out << line;
+        std::snprintf(line, sizeof line,
+                      "%ld in flight: update %.3g ms/step, streaming kernel %.3g ms: ratio %.2f "
+                      "(target <= 1.5: %s)\n",
+                      b.n, b.particleMs, b.streamMs, b.ratio(), b.ratio() <= 1.5 ? "met" : "NOT met");
+        out << line;
+        std::snprintf(line, sizeof line,
+                      "  of which the integrate phase %.3g ms: ratio %.2f (the rest: World::step's "
+                      "per-tick sleep and spring passes)\n",
+                      b.integrateMs, b.integrateRatio());
+        out << line;
+        std::snprintf(line, sizeof line,
+                      "cloth 64x64, 8 sub-steps: %.3g ms per 1/60 s frame (target < 2 ms: %s)\n",
+                      report.clothMs, report.clothMs < 2.0 ? "met" : "NOT met");
+        out << line << "wrote " << csv << (plotError.empty() ? " and " + png : "") << "\n";
+    } else {
+        j["pile"] = {{"balls", p.balls}, {"particle_ms", p.particleMs}, {"box2d_ms", p.rigidMs},
+                     {"speedup", p.speedup()}};
+        j["bandwidth"] = {{"particles", b.n}, {"update_ms", b.particleMs}, {"stream_ms", b.streamMs},
+                          {"integrate_ms", b.integrateMs}, {"ratio", b.ratio()},
+                          {"integrate_ratio", b.integrateRatio()}};
+        j["cloth_64_frame_ms"] = report.clothMs;
+        out << j.dump() << "\n";
+    }
+    if (!plotError.empty()) {
+        std::cerr << "artillery bench: cannot draw " << png << ": " << plotError << "\n";
+        return kCheckFailed;
+    }
+    return kOk;
+}
+
+// ---- choose ---------------------------------------------------------------------------
+
+int runChooseCommand(const Args& args, std::ostream& out) {
+    const AccuracyScene scene = *sceneOption(args, true);
+    const double tol = args.requiredNumber("tolerance", 1e-15, 1e6, "m");
+    const Size size = sizeOption(args);
+    const bool asJson = args.flag("json");
+    args.rejectUnknown();
+    const auto points = runWorkPrecision(sweepFor(scene, size),
+                                         progressLine(std::string("measuring ") + info(scene).name));
+    const auto c = chooseCheapest(scene, tol, points);
+    double bestError = std::numeric_limits<double>::infinity();
+    for (const auto& p : points) bestError = std::min(bestError, p.error);
+    if (asJson) {
+        json j{{"scene", info(scene).name}, {"tolerance_m", tol}};
+        if (c) {
+            j["integrator"] = phys::info(c->integrator).name;
+            j["dt_s"] = c->dt;
+            j["substeps_at_120_hz"] = c->substepsPerTick(1.0 / 120.0);
+            j["error_m"] = jnum(c->error);
+            j["cpu_s_per_sim_s"] = jnum(c->cpuSecondsPerSimSecond);
+        } else {
+            j["integrator"] = nullptr;
+            j["best_error_m"] = jnum(bestError);
+        }
+        out << j.dump() << "\n";
+    } else if (c) {
+        char line[256];
+        std::snprintf(line, sizeof line,
+                      "%s within %.3g m: %s at dt = %.4g s (%d sub-steps per 1/120 s tick)\n"
+                      "  measured error %.3g m, cost %.3g ms CPU per simulated second\n",
+                      info(scene).name, tol, phys::info(c->integrator).name, c->dt,
+                      c->substepsPerTick(1.0 / 120.0), c->error, 1e3 * c->cpuSecondsPerSimSecond);
+        out << line;
+    } else {
+        out << info(scene).name << ": no integrator and dt of the sweep is within " << tol
+            << " m (best error measured: " << bestError << " m); try --full or a looser tolerance\n";
+    }
+    // No setting meets the tolerance: the check the user asked for failed.
+    return c ? kOk : kCheckFailed;
+}
+
+} // namespace
+
+int runBench(const Args& args, std::ostream& out, const BenchPlots* plots) {
+    args.text("<positional>");
+    const auto& pos = args.positionals();
+    if (pos.empty())
+        args.fail("which bench? expected work-precision, stability, scaling or choose");
+    if (pos.size() > 1) args.fail("unexpected argument '" + pos[1] + "'");
+    const std::string& what = pos[0];
+    if (what == "work-precision") return runWorkPrecisionCommand(args, out, plots);
+    if (what == "stability") return runStabilityCommand(args, out, plots);
+    if (what == "scaling") return runScalingCommand(args, out, plots);
+    if (what == "choose") return runChooseCommand(args, out);
+    args.fail("unknown bench '" + what + "': expected work-precision, stability, scaling or choose");
+}
+
+} // namespace game::cli

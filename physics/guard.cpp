@@ -1,0 +1,102 @@
+#include "physics/guard.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <vector>
+
+namespace phys {
+
+double stableOmegaDt(Integrator m) {
+    switch (m) {
+    case Integrator::ExplicitEuler:
+    case Integrator::Midpoint: return 0.0;
+    case Integrator::SymplecticEuler:
+    case Integrator::Verlet:
+    case Integrator::VelocityVerlet:
+    case Integrator::Leapfrog: return 2.0;
+    case Integrator::RK4: return 2.0 * std::sqrt(2.0);
+    case Integrator::ImplicitEuler: return std::numeric_limits<double>::infinity();
+    }
+    return 0.0;
+}
+
+GuardReport guardWorld(World& w, const GuardDef& def) {
+    GuardReport r;
+    ParticleSet& s = w.particles;
+    std::vector<ParticleId> bad;
+    for (std::size_t i = 0; i < s.slots(); ++i) {
+        if (!(s.flags[i] & kAlive)) continue;
+        const double v[4] = {s.px[i], s.py[i], s.vx[i], s.vy[i]};
+        const bool finite = std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) &&
+                            std::isfinite(v[3]);
+        if (!finite) {
+            ++r.nonFinite;
+        } else if (v[2] * v[2] + v[3] * v[3] > def.maxSpeed * def.maxSpeed ||
+                   std::abs(v[0]) > def.maxCoordinate || std::abs(v[1]) > def.maxCoordinate) {
+            ++r.runaway;
+        } else {
+            continue;
+        }
+        bad.push_back(static_cast<ParticleId>(i));
+    }
+    if (bad.empty()) return r;
+
+    // Diagnose before cutting: the stiffest spring on an offender, in units of w dt.
+    const double h = w.def().tickSeconds / w.def().substeps;
+    std::vector<char> isBad(s.slots(), 0);
+    for (ParticleId id : bad) isBad[id] = 1;
+    double worstOmegaDt = 0.0, worstK = 0.0;
+    for (const Spring& sp : w.springs) {
+        if (sp.broken) continue;
+        const bool touches = isBad[sp.a] || (sp.b != kNoParticle && isBad[sp.b]);
+        if (!touches) continue;
+        const double im = s.invMass[sp.a] + (sp.b != kNoParticle ? s.invMass[sp.b] : 0.0);
+        const double wdt = std::sqrt(sp.stiffness * im) * h;
+        if (wdt > worstOmegaDt || !std::isfinite(wdt)) {
+            worstOmegaDt = wdt;
+            worstK = sp.stiffness;
+        }
+    }
+    const Integrator m = w.def().integrator;
+    char buf[400];
+    if (worstK > 0.0 && !(worstOmegaDt < stableOmegaDt(m))) {
+        std::snprintf(buf, sizeof buf,
+                      "%s with springs of %g N/m is unstable at dt = %.3g ms (w dt = %.3g; it "
+                      "needs w dt < %.3g): add sub-steps, lower the stiffness or use implicit-euler",
+                      info(m).name, worstK, 1e3 * h, worstOmegaDt, stableOmegaDt(m));
+    } else if (w.def().collision.model == ContactModel::Penalty) {
+        std::snprintf(buf, sizeof buf,
+                      "penalty contacts at %g Hz are too stiff for dt = %.3g ms with %s: lower "
+                      "the contact frequency, add sub-steps or use impulse contacts",
+                      w.def().collision.penaltyHertz, 1e3 * h, info(m).name);
+    } else if (worstK > 0.0) {
+        std::snprintf(buf, sizeof buf,
+                      "springs of %g N/m blew up with %s at dt = %.3g ms (w dt = %.3g): add "
+                      "sub-steps or use implicit-euler",
+                      worstK, info(m).name, 1e3 * h, worstOmegaDt);
+    } else {
+        std::snprintf(buf, sizeof buf,
+                      "%d particle(s) became %s with %s at dt = %.3g ms: lower the time step or "
+                      "the forces acting on them",
+                      static_cast<int>(bad.size()), r.nonFinite ? "non-finite" : "too fast",
+                      info(m).name, 1e3 * h);
+    }
+    r.cause = buf;
+
+    // Cut what held the offenders, then remove them.
+    const auto before = w.springs.size() + w.constraints.size();
+    std::erase_if(w.springs, [&](const Spring& sp) {
+        return isBad[sp.a] || (sp.b != kNoParticle && isBad[sp.b]);
+    });
+    std::erase_if(w.constraints, [&](const DistanceConstraint& c) {
+        return isBad[c.a] || (c.b != kNoParticle && isBad[c.b]);
+    });
+    r.springsCut = static_cast<int>(before - w.springs.size() - w.constraints.size());
+    for (ParticleId id : bad) s.remove(id);
+    r.removed = static_cast<int>(bad.size());
+    return r;
+}
+
+} // namespace phys

@@ -1,0 +1,73 @@
+// "Accurate enough, fastest" and the scaling workloads: the choice is the cheapest
+// measured setting within the tolerance, its sub-steps cover its dt; the scaling
+// helpers report what they measured.
+#include "game/bench/choose.h"
+#include "game/bench/scaling.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace game::bench;
+using phys::Integrator;
+
+TEST(Choose, PicksTheCheapestPointOfTheSceneWithinTolerance) {
+    const std::vector<WorkPrecisionPoint> pts = {
+        {AccuracyScene::Spring, Integrator::RK4, 0.02, 100, 1e-6, 4.0, 0},
+        {AccuracyScene::Spring, Integrator::SymplecticEuler, 0.001, 2000, 5e-4, 2.0, 0},
+        // Cheaper and accurate, but another scene: never chosen for the spring.
+        {AccuracyScene::Orbit, Integrator::Leapfrog, 0.01, 200, 1e-9, 0.1, 0},
+    };
+    auto c = chooseCheapest(AccuracyScene::Spring, 1e-3, pts);
+    ASSERT_TRUE(c);
+    EXPECT_EQ(c->integrator, Integrator::SymplecticEuler);
+    EXPECT_EQ(c->error, 5e-4);
+    EXPECT_EQ(c->cpuSecondsPerSimSecond, 2.0);
+    EXPECT_EQ(c->tolerance, 1e-3);
+    c = chooseCheapest(AccuracyScene::Spring, 1e-5, pts);
+    ASSERT_TRUE(c);
+    EXPECT_EQ(c->integrator, Integrator::RK4);
+    EXPECT_FALSE(chooseCheapest(AccuracyScene::Spring, 1e-7, pts));
+}
+
+TEST(Choose, SubstepsMakeTheStepNoLongerThanTheChosenDt) {
+    MethodChoice c;
+    c.dt = 1.0 / 480.0;
+    EXPECT_EQ(c.substepsPerTick(1.0 / 120.0), 4);
+    c.dt = 0.003;
+    EXPECT_EQ(c.substepsPerTick(1.0 / 120.0), 3); // 1/360 s <= 0.003 s
+    c.dt = 0.05;
+    EXPECT_EQ(c.substepsPerTick(1.0 / 120.0), 1);
+}
+
+TEST(Choose, MeasuredChoiceMeetsTheToleranceOnTheSpring) {
+    // A real (small) sweep: whatever wins, its measured error is within the tolerance,
+    // and no point of the sweep within it is cheaper.
+    WorkPrecisionDef d = choiceSweep(AccuracyScene::Spring);
+    d.halvings = 3;
+    d.repeats = 1;
+    const auto pts = runWorkPrecision(d);
+    const auto c = chooseCheapest(AccuracyScene::Spring, 1e-3, pts);
+    ASSERT_TRUE(c);
+    EXPECT_LE(c->error, 1e-3);
+    for (const auto& p : pts)
+        if (p.error <= 1e-3) {
+            EXPECT_GE(p.cpuSecondsPerSimSecond, c->cpuSecondsPerSimSecond);
+        }
+}
+
+TEST(ScalingWorkloads, PileComparisonStepsBothPilesOfTheSameSize) {
+    const PileComparison r = comparePiles(100, 2, 1);
+    EXPECT_EQ(r.balls, 100);
+    EXPECT_GT(r.particleMs, 0.0);
+    EXPECT_GT(r.rigidMs, 0.0);
+    EXPECT_NEAR(r.speedup(), r.rigidMs / r.particleMs, 1e-12);
+}
+
+TEST(ScalingWorkloads, ExponentOfExactlyLinearCostIsOne) {
+    std::vector<ScalingPoint> pts;
+    for (long n : {1000L, 10000L, 100000L}) pts.push_back({"x", n, 0.02 * n, 20.0});
+    EXPECT_NEAR(scalingExponent(pts), 1.0, 1e-12);
+    pts.back().usPerStep *= 10.0; // quadratic at the end
+    EXPECT_GT(scalingExponent(pts), 1.3);
+}

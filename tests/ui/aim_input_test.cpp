@@ -1,0 +1,206 @@
+// Input -> commands without a window: a drag from the cannon, held keys, a Space charge,
+// projectile keys and the physics panel all become the commands a replay records.
+#include "game/files/json_reader.h"
+#include "game/level.h"
+#include "game/match.h"
+#include "game/session.h"
+#include "ui/game/aim_input.h"
+#include "ui/game/player_settings.h"
+#include "ui/game/settings_commands.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+namespace {
+
+using game::Command;
+using game::CommandKind;
+
+std::string sourceDir() {
+    return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path().string();
+}
+
+game::CannonState cannon(double angle = 45.0, double speed = 30.0, double maxSpeed = 60.0) {
+    game::CannonState c;
+    c.def.maxSpeedMps = maxSpeed;
+    c.def.projectiles = {"cannonball", "golf-ball", "tennis-ball"};
+    c.angleDeg = angle;
+    c.speedMps = speed;
+    return c;
+}
+
+TEST(AimFromDrag, DirectionIsTheAngleAndLengthIsThePower) {
+    // Pivot at (100, 500) px; pointer 130 px right and 130 px up (screen y runs down):
+    // 45 degrees, half of the 260 px that mean full power.
+    const double d = 130.0 / std::sqrt(2.0);
+    const ui::PendingAim a = ui::aimFromDrag({100, 500}, {100 + d, 500 - d}, 60.0, 260.0);
+    EXPECT_NEAR(a.angleDeg, 45.0, 0.05);
+    EXPECT_NEAR(a.speedMps, 30.0, 0.05);
+    // Straight left and far: 180 degrees, clamped to full power.
+    const ui::PendingAim b = ui::aimFromDrag({100, 500}, {-900, 500}, 60.0, 260.0);
+    EXPECT_DOUBLE_EQ(b.angleDeg, 180.0);
+    EXPECT_DOUBLE_EQ(b.speedMps, 60.0);
+}
+
+TEST(AimInput, DragGivesAimAndPowerCommandsOnRelease) {
+    ui::AimInput in;
+    const game::CannonState c = cannon();
+    in.sync(c);
+    in.beginDrag({200, 400}, {200, 400}, c.def.maxSpeedMps);
+    in.dragTo({200, 400}, {200 + 104, 400 - 180}, c.def.maxSpeedMps); // 60 deg, 207.8 px
+    EXPECT_TRUE(in.editing());
+    const std::vector<Command> cmds = in.endDrag(c);
+    ASSERT_EQ(cmds.size(), 2u);
+    EXPECT_EQ(cmds[0].kind, CommandKind::Aim);
+    EXPECT_NEAR(cmds[0].number, 60.0, 0.05);
+    EXPECT_EQ(cmds[1].kind, CommandKind::Power);
+    EXPECT_NEAR(cmds[1].number, 60.0 * std::hypot(104.0, 180.0) / 260.0, 0.05);
+    EXPECT_FALSE(in.editing());
+}
+
+TEST(AimInput, UnchangedAimSendsNothingAndFireSendsFire) {
+    ui::AimInput in;
+    const game::CannonState c = cannon(30.0, 25.0);
+    in.sync(c);
+    EXPECT_TRUE(in.commit(c).empty());
+    const auto fire = in.fire(c);
+    ASSERT_EQ(fire.size(), 1u);
+    EXPECT_EQ(fire[0].kind, CommandKind::Fire);
+}
+
+TEST(AimInput, HeldKeysMoveThePendingAimAndCommitOnce) {
+    ui::AimInput in; // 40 deg/s, 15 m/s per s
+    const game::CannonState c = cannon(45.0, 30.0);
+    in.sync(c);
+    for (int i = 0; i < 30; ++i) in.hold(1.0, -1.0, 1.0 / 60.0, c.def.maxSpeedMps); // 0.5 s
+    EXPECT_NEAR(in.pending().angleDeg, 65.0, 1e-9);
+    EXPECT_NEAR(in.pending().speedMps, 22.5, 1e-9);
+    const auto cmds = in.commit(c);
+    ASSERT_EQ(cmds.size(), 2u);
+    EXPECT_DOUBLE_EQ(cmds[0].number, 65.0);
+    EXPECT_DOUBLE_EQ(cmds[1].number, 22.5);
+}
+
+TEST(AimInput, SpaceChargeFiresAtTheChargedPower) {
+    ui::AimInput in; // full power after 1.5 s
+    const game::CannonState c = cannon(45.0, 20.0, 60.0);
+    in.sync(c);
+    in.startCharge();
+    for (int i = 0; i < 45; ++i) in.updateCharge(1.0 / 60.0); // 0.75 s: half
+    ASSERT_TRUE(in.chargeFraction());
+    EXPECT_NEAR(*in.chargeFraction(), 0.5, 1e-9);
+    const auto cmds = in.releaseCharge(c);
+    ASSERT_EQ(cmds.size(), 2u); // the angle is unchanged: power, then fire
+    EXPECT_EQ(cmds[0].kind, CommandKind::Power);
+    EXPECT_DOUBLE_EQ(cmds[0].number, 30.0);
+    EXPECT_EQ(cmds[1].kind, CommandKind::Fire);
+    EXPECT_FALSE(in.charging());
+}
+
+TEST(AimInput, ChargeBeyondFullIsClampedAndSendsPowerThenFire) {
+    ui::AimInput in;
+    const game::CannonState c = cannon(45.0, 10.0, 50.0);
+    in.sync(c);
+    in.startCharge();
+    in.updateCharge(5.0);
+    const auto cmds = in.releaseCharge(c);
+    ASSERT_EQ(cmds.size(), 2u);
+    EXPECT_EQ(cmds[0].kind, CommandKind::Power);
+    EXPECT_DOUBLE_EQ(cmds[0].number, 50.0);
+    EXPECT_EQ(cmds[1].kind, CommandKind::Fire);
+}
+
+TEST(AimInput, StickBeyondDeadZoneSetsTheAngle) {
+    ui::AimInput in;
+    in.sync(cannon());
+    in.stick(0.1, -0.1); // inside the dead zone
+    EXPECT_DOUBLE_EQ(in.pending().angleDeg, 45.0);
+    in.stick(0.0, -1.0); // straight up (SDL's y runs down)
+    EXPECT_DOUBLE_EQ(in.pending().angleDeg, 90.0);
+}
+
+TEST(AimInput, ProjectileKeysSelectByIndex) {
+    const game::CannonState c = cannon();
+    const auto s = ui::AimInput::select(c, 1);
+    ASSERT_TRUE(s);
+    EXPECT_EQ(s->kind, CommandKind::Select);
+    EXPECT_EQ(s->text, "golf-ball");
+    EXPECT_FALSE(ui::AimInput::select(c, 7));
+}
+
+TEST(SettingCommands, PanelEditsBecomeSetCommandsByName) {
+    phys::WorldDef before;
+    phys::WorldDef after = before;
+    after.integrator = phys::Integrator::RK4;
+    after.forces.gravity = {0.0, -1.62};
+    const auto cmds = ui::settingCommands(before, after);
+    ASSERT_EQ(cmds.size(), 2u);
+    EXPECT_EQ(cmds[0].kind, CommandKind::Set);
+    EXPECT_EQ(cmds[0].text, "integrator");
+    EXPECT_EQ(std::get<std::string>(cmds[0].value), "rk4");
+    EXPECT_EQ(cmds[1].text, "gravity");
+    EXPECT_DOUBLE_EQ(std::get<double>(cmds[1].value), 1.62);
+    EXPECT_TRUE(ui::settingCommands(before, before).empty());
+}
+
+TEST(GestureToSession, ADragAndAChargedShotAreRecordedAndFireTheShell) {
+    game::Session session(game::loadLevel(sourceDir() + "/levels/01_earth_basics.json"));
+    ui::AimInput in;
+    const game::Match& m = session.match();
+    in.sync(m.cannon());
+    in.beginDrag({100, 600}, {100, 600}, m.cannon().def.maxSpeedMps);
+    in.dragTo({100, 600}, {200, 600 - 173.205}, m.cannon().def.maxSpeedMps); // 60 deg, 200 px
+    for (const Command& c : in.endDrag(m.cannon())) EXPECT_EQ(session.submit(c), "");
+    EXPECT_DOUBLE_EQ(m.cannon().angleDeg, 60.0);
+    EXPECT_DOUBLE_EQ(m.cannon().speedMps, 46.2); // 200 / 260 of 60 m/s, to 0.1
+    for (int i = 0; i < 10; ++i) session.step();
+    in.startCharge();
+    in.updateCharge(0.9); // 60 % of 60 m/s
+    for (const Command& c : in.releaseCharge(m.cannon())) EXPECT_EQ(session.submit(c), "");
+    EXPECT_DOUBLE_EQ(m.cannon().speedMps, 36.0);
+    EXPECT_TRUE(m.shell().has_value());
+    // The recording holds the gesture's commands at the ticks they were made.
+    const auto& cmds = session.recording().commands;
+    ASSERT_EQ(cmds.size(), 4u);
+    EXPECT_EQ(cmds[0].kind, CommandKind::Aim);
+    EXPECT_EQ(cmds[0].tick, 0u);
+    EXPECT_EQ(cmds[1].kind, CommandKind::Power);
+    EXPECT_EQ(cmds[2].kind, CommandKind::Power);
+    EXPECT_EQ(cmds[2].tick, 10u);
+    EXPECT_EQ(cmds[3].kind, CommandKind::Fire);
+    EXPECT_EQ(cmds[3].tick, 10u);
+}
+
+TEST(PlayerSettings, ResultsRoundTripAndKeepTheBest) {
+    const auto dir = std::filesystem::temp_directory_path() / "artillery-settings-test";
+    std::filesystem::remove_all(dir);
+    const std::string file = (dir / "settings.json").string();
+    ui::PlayerSettings s;
+    s.difficulty = game::Difficulty::Hard;
+    s.hotseat = true;
+    EXPECT_TRUE(s.record("levels/01_earth_basics.json", 400, 2, false));
+    EXPECT_FALSE(s.record("elsewhere/01_earth_basics.json", 300, 1, false)); // same level, worse
+    ASSERT_EQ(ui::savePlayerSettings(file, s), "");
+    std::string warning;
+    const ui::PlayerSettings back = ui::loadPlayerSettings(file, warning);
+    EXPECT_EQ(warning, "");
+    EXPECT_EQ(back.difficulty, game::Difficulty::Hard);
+    EXPECT_TRUE(back.hotseat);
+    const ui::LevelResult* r = back.result("01_earth_basics.json");
+    ASSERT_NE(r, nullptr);
+    EXPECT_EQ(r->bestScore, 400);
+    EXPECT_EQ(r->stars, 2);
+    EXPECT_EQ(r->plays, 2);
+    // A damaged file gives the defaults and a warning, never a crash.
+    std::filesystem::create_directories(dir);
+    game::writeFileAtomically(file, "{not json");
+    const ui::PlayerSettings broken = ui::loadPlayerSettings(file, warning);
+    EXPECT_NE(warning, "");
+    EXPECT_TRUE(broken.results.empty());
+    std::filesystem::remove_all(dir);
+}
+
+} // namespace

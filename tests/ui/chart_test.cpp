@@ -1,0 +1,171 @@
+// Charts: ticks and the data-to-pixel mapping are right, and a chart rendered headless
+// has its axes, its line and its markers exactly where the mapping says.
+#include "ui/charts/bench_charts.h"
+#include "ui/charts/chart.h"
+#include "ui/charts/chart_png.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+namespace {
+
+using namespace ui::charts;
+using phys::Color;
+using phys::Vec2;
+
+struct Rgb {
+    int r, g, b;
+};
+Rgb at(const ui::Image& img, Vec2 px) {
+    const auto* p = img.pixel(static_cast<int>(px.x), static_cast<int>(px.y));
+    return {p[0], p[1], p[2]};
+}
+Rgb rgb(Color c) {
+    return {static_cast<int>(std::lround(c.r * 255)), static_cast<int>(std::lround(c.g * 255)),
+            static_cast<int>(std::lround(c.b * 255))};
+}
+bool near(Rgb a, Rgb b, int tol = 12) {
+    return std::abs(a.r - b.r) <= tol && std::abs(a.g - b.g) <= tol && std::abs(a.b - b.b) <= tol;
+}
+/// True when some pixel within `radius` of px has colour c (lines are anti-aliased and
+/// a pixel centre may sit on an edge).
+bool colourNear(const ui::Image& img, Vec2 px, Rgb c, int radius = 1, int tol = 12) {
+    for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx)
+            if (near(at(img, {px.x + dx, px.y + dy}), c, tol)) return true;
+    return false;
+}
+
+const Color kRed = Color::hex(0xff2020);
+
+Chart lineChart() {
+    Chart c;
+    c.title = "test";
+    c.x = {"x", Scale::Log, 1.0, 1000.0};
+    c.y = {"y", Scale::Log, 1e-3, 1.0};
+    c.legend = false;
+    Series s;
+    s.name = "line";
+    s.color = kRed;
+    s.marker = Marker::Square;
+    s.widthPx = 3.0f;
+    // From (1, 1e-3) to (1000, 1): a straight diagonal on log-log axes.
+    s.points = {{1.0, 1e-3}, {1000.0, 1.0}};
+    c.series.push_back(s);
+    return c;
+}
+
+} // namespace
+
+TEST(ChartTicks, LogAxesTickEveryDecadeAndLinearOnesOnNiceSteps) {
+    const auto t = ticks(1e-3, 1e2, Scale::Log);
+    ASSERT_EQ(t.size(), 6u);
+    EXPECT_DOUBLE_EQ(t.front(), 1e-3);
+    EXPECT_DOUBLE_EQ(t.back(), 1e2);
+    // 20 decades: every third one so labels do not collide.
+    EXPECT_EQ(ticks(1e-16, 1e4, Scale::Log).size(), 7u);
+    const auto l = ticks(0.0, 10.0, Scale::Linear);
+    ASSERT_EQ(l.size(), 6u);
+    EXPECT_DOUBLE_EQ(l[1], 2.0);
+    EXPECT_EQ(tickLabel(1e-2, Scale::Log), "0.01");
+    EXPECT_EQ(tickLabel(1e-6, Scale::Log), "1e-6");
+    EXPECT_EQ(tickLabel(2.5, Scale::Linear), "2.5");
+}
+
+TEST(ChartMapping, LogAxesMapDecadesToEqualSteps) {
+    const ChartMapping m = layoutChart(lineChart(), {0, 0, 800, 600});
+    // Corners of the data range are the corners of the plot (y down in pixels).
+    EXPECT_NEAR(m.xPixel(1.0), m.plot.x, 1e-9);
+    EXPECT_NEAR(m.xPixel(1000.0), m.plot.x + m.plot.w, 1e-9);
+    EXPECT_NEAR(m.yPixel(1e-3), m.plot.y + m.plot.h, 1e-9);
+    EXPECT_NEAR(m.yPixel(1.0), m.plot.y, 1e-9);
+    // 10 is a third of the way along three decades.
+    EXPECT_NEAR(m.xPixel(10.0), m.plot.x + m.plot.w / 3.0, 1e-9);
+    // Auto ranges widen to whole decades around the data.
+    Chart c = lineChart();
+    c.x.min = c.x.max = c.y.min = c.y.max = NAN;
+    c.series[0].points = {{3.0, 0.002}, {420.0, 0.5}};
+    const ChartMapping a = layoutChart(c, {0, 0, 800, 600});
+    EXPECT_DOUBLE_EQ(a.xMin, 1.0);
+    EXPECT_DOUBLE_EQ(a.xMax, 1000.0);
+    EXPECT_NEAR(a.yMin, 1e-3, 1e-18);
+    EXPECT_DOUBLE_EQ(a.yMax, 1.0);
+}
+
+TEST(ChartRender, AxesLineAndMarkersLandWhereTheMappingSays) {
+    const Chart chart = lineChart();
+    const ChartStyle style;
+    const Rect area{0, 0, 640, 480};
+    std::string error;
+    ChartMapping m;
+    const ui::Image img = renderChartImage(
+        640, 480, [&](ui::Renderer2D& r, Rect a) { m = drawChart(r, chart, a, style); }, error);
+    ASSERT_EQ(error, "") << "headless GL (OSMesa, else EGL) must work here";
+    ASSERT_EQ(img.width, 640);
+    EXPECT_EQ(m.plot.x, layoutChart(chart, area).plot.x);
+
+    // Axes: the x axis runs along the bottom of the plot, the y axis up its left side,
+    // in the axis colour (away from the line and the tick marks).
+    const Rgb axis = rgb(style.axis);
+    EXPECT_TRUE(colourNear(img, {m.plot.x + 0.62 * m.plot.w, m.plot.y + m.plot.h}, axis));
+    EXPECT_TRUE(colourNear(img, {m.plot.x, m.plot.y + 0.55 * m.plot.h}, axis));
+    // Left of the y tick labels, the chart background; inside the plot, away from the
+    // line, grid and labels, the plot fill.
+    EXPECT_TRUE(near(at(img, {4.0, m.plot.y + 0.5 * m.plot.h}), rgb(style.background), 4));
+    EXPECT_TRUE(near(at(img, {m.plot.x + 0.8 * m.plot.w + 3, m.plot.y + 0.72 * m.plot.h + 3}),
+                     rgb(style.plot), 4));
+
+    // The line: red on the diagonal at data points the mapping places, e.g. (10, 0.01)
+    // and (31.6, 0.0316), and not red a little off it.
+    for (double x : {10.0, 31.6227766, 100.0}) {
+        const Vec2 p = m.toPixel({x, x * 1e-3});
+        EXPECT_TRUE(colourNear(img, p, rgb(kRed))) << "line missing at x = " << x;
+        EXPECT_FALSE(colourNear(img, p + Vec2{0.0, 12.0}, rgb(kRed), 1, 60))
+            << "red below the line at x = " << x;
+    }
+    // A square marker at the lower-left end: red 2 px off the point in both directions
+    // (a bare 3 px line would not cover that corner).
+    const Vec2 end = m.toPixel({1.0, 1e-3});
+    EXPECT_TRUE(colourNear(img, end + Vec2{2.0, -2.0}, rgb(kRed), 0, 30));
+}
+
+TEST(ChartRender, PointsOutsideTheRangeAreClippedToThePlot) {
+    Chart chart = lineChart();
+    chart.series[0].points = {{10.0, 1e-2}, {1e6, 1e4}}; // leaves through the top right
+    std::string error;
+    ChartMapping m;
+    const ui::Image img = renderChartImage(
+        400, 300, [&](ui::Renderer2D& r, Rect a) { m = drawChart(r, chart, a); }, error);
+    ASSERT_EQ(error, "");
+    int redOutside = 0, redInside = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const auto* p = img.pixel(x, y);
+            if (!(p[0] > 200 && p[1] < 80 && p[2] < 80)) continue;
+            const bool in = x >= m.plot.x - 2 && x <= m.plot.x + m.plot.w + 2 &&
+                            y >= m.plot.y - 2 && y <= m.plot.y + m.plot.h + 2;
+            (in ? redInside : redOutside)++;
+        }
+    EXPECT_GT(redInside, 50);
+    EXPECT_EQ(redOutside, 0);
+}
+
+TEST(BenchCharts, WorkPrecisionDrawsOneChartPerSceneWithALinePerIntegrator) {
+    using game::bench::AccuracyScene;
+    std::vector<game::bench::WorkPrecisionPoint> pts;
+    for (const auto& m : phys::integrators())
+        for (double dt : {0.01, 0.005}) {
+            pts.push_back({AccuracyScene::Spring, m.id, dt, 0, dt * dt, 1.0 / dt, 0});
+            pts.push_back({AccuracyScene::Orbit, m.id, dt, 0, INFINITY, 1.0 / dt, 0});
+        }
+    const auto charts = workPrecisionCharts(pts);
+    ASSERT_EQ(charts.size(), 2u);
+    EXPECT_EQ(charts[0].title, "spring");
+    EXPECT_EQ(charts[0].series.size(), phys::integrators().size());
+    // Sorted by cost, so the line runs from big dt (cheap, left) to small dt.
+    EXPECT_LT(charts[0].series[0].points[0].x, charts[0].series[0].points[1].x);
+    // Blown-up runs are kept (drawn off the top) and the axis stops at 100 m.
+    EXPECT_EQ(charts[1].y.max, 1e2);
+}

@@ -1,0 +1,288 @@
+#include "ui/charts/bench_charts.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace ui::charts {
+
+using game::bench::AccuracyScene;
+using phys::Integrator;
+
+namespace {
+
+std::string format(const char* fmt, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, fmt, v);
+    return buf;
+}
+
+/// Colours for the scaling workloads, by name.
+Color workloadColor(const std::string& name) {
+    if (name == "flight") return Color::hex(0x4aa3ff);
+    if (name == "pile") return Color::hex(0xf0b429);
+    if (name == "cloth") return Color::hex(0x57c46a);
+    if (name == "box2d") return Color::hex(0xff6b6b);
+    return Color::hex(0xb0b7c3);
+}
+
+Marker workloadMarker(const std::string& name) {
+    if (name == "flight") return Marker::Circle;
+    if (name == "pile") return Marker::Square;
+    if (name == "cloth") return Marker::Triangle;
+    return Marker::Diamond;
+}
+
+std::string workloadName(const std::string& name) {
+    if (name == "flight") return "particles in flight";
+    if (name == "pile") return "particle pile (contacts)";
+    if (name == "cloth") return "cloth springs (8 sub-steps)";
+    if (name == "box2d") return "Box2D circles pile";
+    return name;
+}
+
+} // namespace
+
+Color integratorColor(Integrator m) {
+    switch (m) {
+    case Integrator::ExplicitEuler: return Color::hex(0xe5534b);
+    case Integrator::SymplecticEuler: return Color::hex(0x4aa3ff);
+    case Integrator::Verlet: return Color::hex(0x57c46a);
+    case Integrator::VelocityVerlet: return Color::hex(0x2dd4bf);
+    case Integrator::Leapfrog: return Color::hex(0xa78bfa);
+    case Integrator::Midpoint: return Color::hex(0xf0b429);
+    case Integrator::RK4: return Color::hex(0xff7ab6);
+    case Integrator::ImplicitEuler: return Color::hex(0xc4cad4);
+    }
+    return Color::hex(0xffffff);
+}
+
+Marker integratorMarker(Integrator m) {
+    switch (m) {
+    case Integrator::ExplicitEuler: return Marker::Cross;
+    case Integrator::SymplecticEuler: return Marker::Circle;
+    case Integrator::Verlet: return Marker::Square;
+    case Integrator::VelocityVerlet: return Marker::Diamond;
+    case Integrator::Leapfrog: return Marker::Triangle;
+    case Integrator::Midpoint: return Marker::Square;
+    case Integrator::RK4: return Marker::Circle;
+    case Integrator::ImplicitEuler: return Marker::Triangle;
+    }
+    return Marker::Circle;
+}
+
+std::vector<Series> integratorLegend() {
+    std::vector<Series> out;
+    for (const auto& i : phys::integrators()) {
+        Series s;
+        s.name = i.name;
+        s.color = integratorColor(i.id);
+        s.marker = integratorMarker(i.id);
+        out.push_back(s);
+    }
+    return out;
+}
+
+std::vector<Chart> workPrecisionCharts(const std::vector<game::bench::WorkPrecisionPoint>& points) {
+    std::vector<Chart> out;
+    for (const auto& scene : game::bench::accuracyScenes()) {
+        Chart c;
+        c.title = scene.name;
+        c.subtitle = std::string("error vs ") + scene.reference + ", " +
+                     format("%g s simulated", scene.seconds);
+        c.x = {"CPU seconds per simulated second", Scale::Log};
+        c.y = {"error, m", Scale::Log};
+        c.legend = false;
+        double largest = 0.0;
+        for (const auto& i : phys::integrators()) {
+            Series s;
+            s.name = i.name;
+            s.color = integratorColor(i.id);
+            s.marker = integratorMarker(i.id);
+            for (const auto& p : points)
+                if (p.scene == scene.id && p.integrator == i.id) {
+                    // A run that blew up is drawn off the top, where it failed.
+                    const double e = std::isfinite(p.error) ? p.error : 1e300;
+                    largest = std::max(largest, e);
+                    s.points.push_back({p.cpuSecondsPerSimSecond, std::max(e, 1e-16)});
+                }
+            // Cheapest first, so the line runs from big dt (left) to small dt (right).
+            std::sort(s.points.begin(), s.points.end(),
+                      [](Vec2 a, Vec2 b) { return a.x < b.x; });
+            if (!s.points.empty()) c.series.push_back(std::move(s));
+        }
+        if (c.series.empty()) continue;
+        // Errors beyond 100 m mean the run diverged; the chart stops there.
+        if (largest > 1e2) c.y.max = 1e2;
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+std::vector<Chart> stabilityCharts(const std::vector<game::bench::StabilityRow>& rows,
+                                   const std::vector<game::bench::GrowthCurve>& curves) {
+    std::vector<Chart> out;
+    if (!curves.empty()) {
+        Chart g;
+        g.title = "energy growth on an undamped spring";
+        g.subtitle = "mean energy, 2nd half / 1st half of >= 20 periods; above 1 = unstable";
+        g.x = {"w dt", Scale::Log};
+        g.y = {"energy growth", Scale::Log, 1e-2, 1e3};
+        g.legend = false;
+        for (const auto& c : curves) {
+            Series s;
+            s.name = phys::info(c.integrator).name;
+            s.color = integratorColor(c.integrator);
+            s.marker = integratorMarker(c.integrator);
+            for (std::size_t k = 0; k < c.omegaDt.size(); ++k)
+                // Overflowed energy is drawn far above the top, so the line leaves the plot.
+                s.points.push_back({c.omegaDt[k], std::isfinite(c.growth[k]) ? c.growth[k] : 1e30});
+            g.series.push_back(std::move(s));
+        }
+        const Color mark = Color::hex(0xe7eaf0, 0.7f);
+        g.marks.push_back({2.0, true, "2", mark});
+        g.marks.push_back({2.0 * std::sqrt(2.0), true, "2.83", mark});
+        g.marks.push_back({1.0, false, "stable", mark});
+        out.push_back(std::move(g));
+    }
+    Chart w;
+    w.kind = ChartKind::Bars;
+    w.title = "largest stable w dt";
+    w.subtitle = "bisection on the energy criterion; white tick: theory";
+    w.x = {"w dt (spring of w = sqrt(k/m) stepped at dt)", Scale::Log, game::bench::kMinOmegaDt,
+           game::bench::kMaxOmegaDt};
+    Chart k;
+    k.kind = ChartKind::Bars;
+    k.title = "stiffest rope spring at the game tick";
+    k.subtitle = "20 links of 0.1 m and 0.1 kg, released horizontal, dt = 1/120 s";
+    k.x = {"spring stiffness, N/m", Scale::Log, 1.0, 1e12};
+    for (const auto& row : rows) {
+        const char* name = phys::info(row.integrator).name;
+        Bar b{name, row.maxOmegaDt, row.theoryOmegaDt, integratorColor(row.integrator), ""};
+        if (row.maxOmegaDt == 0.0) b.note = "unstable at any dt";
+        else if (std::isinf(row.maxOmegaDt)) b.note = "never unstable";
+        else if (row.theoryOmegaDt == 0.0)
+            b.note = format("%.3g: grows too slowly below it for the test", row.maxOmegaDt);
+        else b.note = format("%.3g", row.maxOmegaDt);
+        if (std::isinf(row.theoryOmegaDt) || row.theoryOmegaDt == 0.0) b.reference = NAN;
+        w.bars.push_back(b);
+        Bar r{name, row.ropeStiffness, NAN, integratorColor(row.integrator), ""};
+        if (row.ropeStiffness == 0.0) r.note = "fails even at 1 N/m";
+        else if (std::isinf(row.ropeStiffness)) r.note = "survives 1e12 N/m";
+        else r.note = format("%.3g N/m", row.ropeStiffness);
+        k.bars.push_back(r);
+    }
+    out.push_back(std::move(w));
+    out.push_back(std::move(k));
+    return out;
+}
+
+std::vector<Chart> scalingCharts(const game::bench::ScalingReport& report) {
+    std::map<std::string, std::vector<const game::bench::ScalingPoint*>> byWorkload;
+    std::vector<std::string> order;
+    for (const auto& p : report.points) {
+        if (!byWorkload.count(p.workload)) order.push_back(p.workload);
+        byWorkload[p.workload].push_back(&p);
+    }
+    Chart cost;
+    cost.title = "step cost against N";
+    cost.subtitle = "median wall time of one 1/120 s step; dashed: linear growth";
+    cost.x = {"particles or bodies, N", Scale::Log};
+    cost.y = {"time per step, us", Scale::Log};
+    Chart per;
+    per.title = "cost per item";
+    per.subtitle = "flat = linear in N";
+    per.x = {"particles or bodies, N", Scale::Log};
+    per.y = {"ns per item per step", Scale::Log};
+    per.legend = false;
+    for (const auto& name : order) {
+        Series s;
+        s.name = workloadName(name);
+        s.color = workloadColor(name);
+        s.marker = workloadMarker(name);
+        Series q = s;
+        for (const auto* p : byWorkload[name]) {
+            s.points.push_back({static_cast<double>(p->items), p->usPerStep});
+            q.points.push_back({static_cast<double>(p->items), p->nsPerItem});
+        }
+        // A slope-1 guide through the first point of the workload.
+        if (!s.points.empty()) {
+            Series guide;
+            guide.name = "";
+            guide.color = s.color.withAlpha(0.45f);
+            guide.marker = Marker::None;
+            guide.dashed = true;
+            guide.widthPx = 1.5f;
+            const Vec2 a = s.points.front();
+            const double nMax = s.points.back().x;
+            guide.points = {a, {nMax, a.y * nMax / a.x}};
+            cost.series.push_back(std::move(guide));
+        }
+        cost.series.push_back(std::move(s));
+        per.series.push_back(std::move(q));
+    }
+    Chart ratios;
+    ratios.kind = ChartKind::Bars;
+    ratios.title = "side by side, one run";
+    ratios.subtitle = "ms per step (per frame for cloth); white tick: the target";
+    ratios.referenceName = "target";
+    ratios.x = {"milliseconds", Scale::Log};
+    const auto& pile = report.pile;
+    const auto& bw = report.bandwidth;
+    const Color particle = Color::hex(0x4aa3ff), rigid = Color::hex(0xff6b6b),
+                stream = Color::hex(0x8d97ab), cloth = Color::hex(0x57c46a);
+    char note[96];
+    if (pile.balls > 0) {
+        std::snprintf(note, sizeof note, "%.3g ms, %.1fx faster", pile.particleMs, pile.speedup());
+        ratios.bars.push_back({format("pile of %.0f: particles", static_cast<double>(pile.balls)),
+                               pile.particleMs, pile.rigidMs / 5.0, particle, note});
+        ratios.bars.push_back({format("pile of %.0f: Box2D", static_cast<double>(pile.balls)),
+                               pile.rigidMs, NAN, rigid, format("%.3g ms", pile.rigidMs)});
+    }
+    if (bw.n > 0) {
+        std::snprintf(note, sizeof note, "%.3g ms, %.2fx the stream", bw.particleMs, bw.ratio());
+        ratios.bars.push_back({format("%.0fM in flight: update", bw.n / 1e6), bw.particleMs,
+                               1.5 * bw.streamMs, particle, note});
+        ratios.bars.push_back({format("%.0fM: streaming kernel", bw.n / 1e6), bw.streamMs, NAN,
+                               stream, format("%.3g ms", bw.streamMs)});
+    }
+    if (report.clothMs > 0)
+        ratios.bars.push_back({"cloth 64x64, 8 sub-steps", report.clothMs, 2.0, cloth,
+                               format("%.3g ms per frame", report.clothMs)});
+    // One spare decade on the right so every note fits after its bar; one below the
+    // cheapest workload so the legend (bottom right) covers no line.
+    double largest = 0.0, cheapest = INFINITY;
+    for (const Bar& b : ratios.bars) largest = std::max(largest, b.value);
+    for (const auto& p : report.points) cheapest = std::min(cheapest, p.usPerStep);
+    if (largest > 0.0) ratios.x.max = std::pow(10.0, std::ceil(std::log10(largest)) + 1.0);
+    if (std::isfinite(cheapest) && cheapest > 0.0)
+        cost.y.min = std::pow(10.0, std::floor(std::log10(cheapest)) - 1.0);
+    std::vector<Chart> out{cost, per};
+    if (!ratios.bars.empty()) out.push_back(std::move(ratios));
+    return out;
+}
+
+void drawWorkPrecision(Renderer2D& r, Rect area,
+                       const std::vector<game::bench::WorkPrecisionPoint>& points) {
+    const auto charts = workPrecisionCharts(points);
+    const auto legend = integratorLegend();
+    const int columns = charts.size() <= 1 ? 2 : 3;
+    drawChartGrid(r, charts, area, columns, legend,
+                  "Work-precision: error against cost, one line per integrator (dt halves "
+                  "along each line, left to right)");
+}
+
+void drawStability(Renderer2D& r, Rect area, const std::vector<game::bench::StabilityRow>& rows,
+                   const std::vector<game::bench::GrowthCurve>& curves) {
+    const auto charts = stabilityCharts(rows, curves);
+    const auto legend = integratorLegend();
+    drawChartGrid(r, charts, area, 2, legend, "Stability: where each integrator fails");
+}
+
+void drawScaling(Renderer2D& r, Rect area, const game::bench::ScalingReport& report) {
+    const auto charts = scalingCharts(report);
+    drawChartGrid(r, charts, area, 3, {}, "Scaling: step cost against the size of the scene");
+}
+
+} // namespace ui::charts

@@ -1,0 +1,57 @@
+// The in-game Charts panel: the bench's diagrams (work-precision for the current scene,
+// stability, scaling) measured on request and drawn with the same chart code as the
+// PNGs, plus the "accurate enough, fastest" choice for a tolerance.
+//
+// Two calls per frame, like the rest of the game's UI:
+//   drawChartsPanel(renderer, state, rect)  in the geometry pass (after the world,
+//                                           before flush): the chart in a screen rect;
+//   chartsPanel(state)                      between ImGuiLayer::newFrame and render: the
+//                                           controls window; returns what was asked.
+#pragma once
+
+#include "game/bench/choose.h"
+#include "game/bench/scaling.h"
+#include "game/bench/stability.h"
+#include "ui/charts/chart.h"
+
+#include <optional>
+#include <vector>
+
+namespace ui::charts {
+
+enum class ChartsView { WorkPrecision, Stability, Scaling };
+
+struct ChartsPanelState {
+    bool open = true;
+    ChartsView view = ChartsView::WorkPrecision;
+    game::bench::AccuracyScene scene = game::bench::AccuracyScene::ProjectileDrag;
+    double tolerance = 1e-3; ///< m, for "accurate enough, fastest"
+    // Measurements (empty until measured; measuring runs on the UI thread for about a
+    // second: the quick sweeps of the bench).
+    std::vector<game::bench::WorkPrecisionPoint> points;
+    std::vector<game::bench::StabilityRow> stability;
+    std::vector<game::bench::GrowthCurve> growth;
+    game::bench::ScalingReport scaling;
+    std::optional<game::bench::MethodChoice> choice;
+    bool choiceSearched = false; ///< a search ran (so "none within tolerance" can be said)
+};
+
+struct ChartsPanelRequests {
+    /// The user pressed "use it": apply choice->integrator and
+    /// choice->substepsPerTick(tick) to the world's settings.
+    bool applyChoice = false;
+};
+
+/// The ImGui controls window. Measures when asked (or when the shown view has no data).
+ChartsPanelRequests chartsPanel(ChartsPanelState& state);
+
+/// Draws the current view's charts into `area` (pixels) with the game's renderer.
+void drawChartsPanel(Renderer2D& r, const ChartsPanelState& state, Rect area);
+
+/// Measures what the current view needs (quick sweeps), without any UI.
+void measure(ChartsPanelState& state);
+/// Runs "accurate enough, fastest" for state.scene and state.tolerance on state.points
+/// (measuring them first when needed).
+void choose(ChartsPanelState& state);
+
+} // namespace ui::charts

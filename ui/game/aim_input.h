@@ -1,0 +1,87 @@
+// Player gestures -> commands. The aim being edited (mouse drag, held arrow keys, a
+// game controller's stick, a Space charge) is kept here as a pending aim and sent as
+// `aim` / `power` commands only when it settles (drag released, key released, fire),
+// so a replay records what the player chose rather than every mouse motion, and the
+// match itself only ever changes through Session::submit.
+//
+// No SDL here: positions are pixels, times are wall seconds of the UI (they shape the
+// gesture, never the simulation; the commands are stamped with ticks by the session).
+// That keeps the mapping testable without a window (tests/ui/aim_input_test.cpp).
+#pragma once
+
+#include "game/command.h"
+#include "game/match.h"
+#include "ui/game/match_view.h"
+
+#include <optional>
+#include <vector>
+
+namespace ui {
+
+struct AimInputDef {
+    double fullPowerPixels = 260.0; ///< drag length from the cannon that means full power, px
+    double chargeSeconds = 1.5;     ///< holding Space this long charges from 0 to full power, s
+    double angleRate = 40.0;        ///< deg/s while an arrow key is held (x0.2 with Shift)
+    double powerRate = 15.0;        ///< m/s per s while up/down is held
+    double stickDeadzone = 0.3;     ///< stick deflection (0..1) under which it is ignored
+};
+
+/// The aim a drag from the cannon's pivot to the pointer gives: direction = angle
+/// (screen y runs down, so it is flipped), length = power (full at `fullPowerPixels`,
+/// clamped to the cannon's maximum).
+PendingAim aimFromDrag(phys::Vec2 pivotPx, phys::Vec2 pointerPx, double maxSpeedMps,
+                       double fullPowerPixels);
+
+class AimInput {
+  public:
+    explicit AimInput(const AimInputDef& def = {}) : def_(def) {}
+
+    /// Adopts the cannon's committed aim unless an edit is in progress (call every frame:
+    /// a turn change or a command from elsewhere then shows at once).
+    void sync(const game::CannonState& cannon);
+    const PendingAim& pending() const { return pending_; }
+    /// True while the pending aim differs from what was last committed.
+    bool editing() const { return dirty_ || dragging_ || charge_.has_value(); }
+
+    // Mouse: press starts aiming, motion follows the pointer, release commits.
+    void beginDrag(phys::Vec2 pivotPx, phys::Vec2 pointerPx, double maxSpeedMps);
+    void dragTo(phys::Vec2 pivotPx, phys::Vec2 pointerPx, double maxSpeedMps);
+    std::vector<game::Command> endDrag(const game::CannonState& cannon);
+    bool dragging() const { return dragging_; }
+
+    /// Continuous adjustment from held keys or a controller: `angleAxis` and `powerAxis`
+    /// in -1..1 for `dt` seconds. Commit with commit() when the keys are released.
+    void hold(double angleAxis, double powerAxis, double dt, double maxSpeedMps);
+    /// A controller stick (x right, y down as SDL reports it, -1..1): beyond the dead
+    /// zone its direction is the angle.
+    void stick(double x, double y);
+
+    /// Space pressed: the power starts from zero and rises while held.
+    void startCharge();
+    void updateCharge(double dt);
+    bool charging() const { return charge_.has_value(); }
+    /// 0..1 of full power, while charging.
+    std::optional<double> chargeFraction() const { return charge_; }
+    /// Space released: power = charge x maximum, then aim, power and fire.
+    std::vector<game::Command> releaseCharge(const game::CannonState& cannon);
+    /// Drops a charge without firing (Esc, or the turn passed).
+    void cancelCharge() { charge_.reset(); }
+
+    /// The aim and power commands that bring the cannon to the pending aim (none when
+    /// they already match).
+    std::vector<game::Command> commit(const game::CannonState& cannon);
+    /// commit() then fire.
+    std::vector<game::Command> fire(const game::CannonState& cannon);
+
+    /// The select command for projectile `index` (0-based) of the cannon, if it has one.
+    static std::optional<game::Command> select(const game::CannonState& cannon, std::size_t index);
+
+  private:
+    AimInputDef def_;
+    PendingAim pending_;
+    bool dirty_ = false;
+    bool dragging_ = false;
+    std::optional<double> charge_;
+};
+
+} // namespace ui

@@ -1,0 +1,529 @@
+// Section index
+//   set-up       GameScreen(), openLevel, restart, persistence
+//   commands     submit: the only way the window changes the match
+//   time         simulate: fixed ticks from the clock, held keys and the controller
+//   drawing      frame, drawPlaying, drawPanels
+//   events       handleEvent: mouse aim, keys, controller buttons
+#include "ui/game/game_screen.h"
+
+#include "game/files/json_reader.h"
+#include "ui/game/match_frame.h"
+#include "ui/game/settings_commands.h"
+#include "ui/platform/sdl_window.h"
+#include "ui/render/gl.h"
+
+#include <SDL.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <iterator>
+#include <stdexcept>
+
+namespace ui {
+
+namespace {
+
+bool loadGLOrThrow(GLContext& context) {
+    if (const char* missing = gl::loadGL(context.procAddress()); *missing)
+        throw std::runtime_error(std::string(context.name()) + ": OpenGL 3.3 core is needed; " +
+                                 missing + " is missing");
+    return true;
+}
+
+int autoSamples(int requested) {
+    if (requested > 0) return requested;
+    const auto* renderer = reinterpret_cast<const char*>(gl::fn.GetString(GL_RENDERER));
+    const std::string name = renderer ? renderer : "";
+    const bool software = name.find("llvmpipe") != std::string::npos ||
+                          name.find("softpipe") != std::string::npos;
+    return software ? 1 : 4;
+}
+
+/// Hotseat: the computer's cannon is handed to a second person. The level is data, so
+/// this is a copy with the player renamed; the session then never runs the AI for it.
+game::Level withHotseat(game::Level level) {
+    for (game::Cannon& c : level.cannons)
+        if (c.player == "cpu") c.player = "2";
+    return level;
+}
+
+/// Time scales the [ and ] keys step through.
+constexpr float kSpeeds[] = {1.0f / 16, 0.125f, 0.25f, 0.5f, 1.0f, 2.0f, 4.0f};
+
+} // namespace
+
+// ---- set-up ---------------------------------------------------------------------------
+GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDef& def)
+    : context_(context), window_(window), def_(def), glLoaded_(loadGLOrThrow(context)),
+      imgui_(context, window) {
+    stats_.context = context.name();
+    samples_ = autoSamples(def_.msaaSamples);
+    msaa_.resize(context.width(), context.height(), samples_);
+    if (!def_.settingsFolder.empty()) {
+        settingsFile_ = (std::filesystem::path(def_.settingsFolder) / "settings.json").string();
+        iniFile_ = (std::filesystem::path(def_.settingsFolder) / "imgui.ini").string();
+        std::string warning;
+        settings_ = loadPlayerSettings(settingsFile_, warning);
+        if (!warning.empty()) std::cerr << "artillery: " << warning << "\n";
+        std::error_code ec;
+        if (std::filesystem::exists(iniFile_, ec)) {
+            const std::string ini = game::readFile(iniFile_);
+            ImGui::LoadIniSettingsFromMemory(ini.data(), ini.size());
+        }
+    }
+    if (def_.difficulty) settings_.difficulty = *def_.difficulty;
+    if (def_.hotseat) settings_.hotseat = *def_.hotseat;
+    if (!def_.panel) settings_.physicsPanel = false;
+    levels_ = listLevels(def_.levelsFolder);
+    if (window_ && SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER) == 0) {
+        for (int i = 0; i < SDL_NumJoysticks() && !pad_; ++i)
+            if (SDL_IsGameController(i)) pad_ = SDL_GameControllerOpen(i);
+    }
+    if (def_.levelFile.empty()) {
+        overlay_ = Overlay::LevelSelect;
+        for (const LevelEntry& e : levels_) {
+            if (!e.error.empty()) continue;
+            backdrop_ = std::make_unique<game::Match>(game::loadLevel(e.file));
+            camera_ = levelCamera(*backdrop_, context.width(), context.height());
+            break;
+        }
+    }
+    else
+        openLevel(def_.levelFile); // throws with the loader's message
+}
+
+GameScreen::~GameScreen() {
+    persist();
+    if (pad_) SDL_GameControllerClose(pad_);
+}
+
+void GameScreen::persist() {
+    if (settingsFile_.empty()) return;
+    if (const std::string err = savePlayerSettings(settingsFile_, settings_); !err.empty())
+        std::cerr << "artillery: settings not saved: " << err << "\n";
+    std::size_t size = 0;
+    const char* ini = ImGui::SaveIniSettingsToMemory(&size);
+    try {
+        game::writeFileAtomically(iniFile_, std::string(ini, size));
+    } catch (const std::exception& e) {
+        std::cerr << "artillery: window layout not saved: " << e.what() << "\n";
+    }
+}
+
+void GameScreen::openLevel(const std::string& file) {
+    level_ = game::loadLevel(file);
+    backdrop_.reset();
+    restart();
+    overlay_ = Overlay::None;
+}
+
+void GameScreen::restart() {
+    game::SessionOptions o;
+    o.difficulty = settings_.difficulty;
+    o.cpuSeed = level_.seed;
+    // Every match is recorded (issue 6); the session saves at each turn's end.
+    if (!def_.settingsFolder.empty())
+        o.recordFile = (std::filesystem::path(def_.settingsFolder) / "replays" /
+                        (std::filesystem::path(level_.file).stem().string() + "-last.json"))
+                           .string();
+    if (!o.recordFile.empty())
+        std::filesystem::create_directories(std::filesystem::path(o.recordFile).parent_path());
+    const bool hotseat = settings_.hotseat && level_.mode == game::Mode::Duel;
+    session_ = std::make_unique<game::Session>(hotseat ? withHotseat(level_) : level_, o);
+    phys::ClockDef cd;
+    cd.tickSeconds = session_->match().world().def().tickSeconds;
+    clock_ = phys::FixedClock(cd);
+    matchView_.reset();
+    aim_ = AimInput();
+    resultRecorded_ = newBest_ = false;
+    cameraMoved_ = false;
+    camera_ = levelCamera(session_->match(), context_.width(), context_.height());
+}
+
+// ---- commands -------------------------------------------------------------------------
+void GameScreen::submit(const game::Command& command) {
+    if (!session_) return;
+    const std::string why = session_->submit(command);
+    if (!why.empty()) stats_.status = std::string(game::commandName(command.kind)) + ": " + why;
+}
+
+void GameScreen::submit(const std::vector<game::Command>& commands) {
+    for (const game::Command& c : commands) submit(c);
+}
+
+bool GameScreen::humanTurn() const {
+    if (!session_) return false;
+    const game::Match& m = session_->match();
+    return !m.over() && m.cannon().def.player != "cpu";
+}
+
+void GameScreen::recordResultOnce() {
+    const game::Match& m = session_->match();
+    if (!m.over() || resultRecorded_) return;
+    resultRecorded_ = true;
+    const bool humanWon = m.winner() >= 0 &&
+                          m.cannons()[static_cast<std::size_t>(m.winner())].def.player != "cpu";
+    newBest_ = settings_.record(level_.file, m.score(), m.stars(), humanWon);
+    persist();
+}
+
+// ---- time -----------------------------------------------------------------------------
+void GameScreen::pollHeldInput(double dt) {
+    const game::Match& m = session_->match();
+    const game::CannonState& c = m.cannon();
+    if (!humanTurn() || m.shell()) {
+        aim_.cancelCharge();
+        aim_.sync(c);
+        return;
+    }
+    double angleAxis = 0.0, powerAxis = 0.0;
+    if (!imgui_.wantsKeyboard() && window_ && overlay_ == Overlay::None) {
+        const Uint8* keys = SDL_GetKeyboardState(nullptr);
+        const double fine = (keys[SDL_SCANCODE_LSHIFT] || keys[SDL_SCANCODE_RSHIFT]) ? 0.2 : 1.0;
+        angleAxis = fine * ((keys[SDL_SCANCODE_LEFT] ? 1.0 : 0.0) - (keys[SDL_SCANCODE_RIGHT] ? 1.0 : 0.0));
+        powerAxis = fine * ((keys[SDL_SCANCODE_UP] ? 1.0 : 0.0) - (keys[SDL_SCANCODE_DOWN] ? 1.0 : 0.0));
+    }
+    if (pad_) {
+        const double sx = SDL_GameControllerGetAxis(pad_, SDL_CONTROLLER_AXIS_LEFTX) / 32767.0;
+        const double sy = SDL_GameControllerGetAxis(pad_, SDL_CONTROLLER_AXIS_LEFTY) / 32767.0;
+        aim_.stick(sx, sy);
+        const double rt = SDL_GameControllerGetAxis(pad_, SDL_CONTROLLER_AXIS_TRIGGERRIGHT) / 32767.0;
+        const double lt = SDL_GameControllerGetAxis(pad_, SDL_CONTROLLER_AXIS_TRIGGERLEFT) / 32767.0;
+        powerAxis += rt - lt;
+    }
+    if (angleAxis != 0.0 || powerAxis != 0.0) {
+        aim_.hold(angleAxis, powerAxis, dt, c.def.maxSpeedMps);
+    } else if (aim_.editing() && !aim_.dragging() && !aim_.charging()) {
+        // Keys released (or the stick let go): the aim settles and becomes commands.
+        submit(aim_.commit(c));
+    }
+    aim_.updateCharge(dt);
+    aim_.sync(c);
+}
+
+void GameScreen::simulate(double wallSeconds) {
+    const bool menuPause = overlay_ != Overlay::None || helpOpen_;
+    clock_.setPaused(time_.paused || menuPause);
+    clock_.setTimeScale(time_.timeScale);
+    if (time_.stepRequested) {
+        clock_.requestSingleStep();
+        time_.stepRequested = false;
+    }
+    const int ticks = clock_.advance(wallSeconds);
+    double physicsUs = 0.0;
+    for (int i = 0; i < ticks; ++i) {
+        session_->step();
+        matchView_.observe(session_->match());
+        physicsUs += session_->match().world().profile().totalUs;
+    }
+    const game::Match& m = session_->match();
+    stats_.ticksThisFrame = ticks;
+    if (ticks > 0) stats_.physicsUs = physicsUs / ticks;
+    stats_.integrateUs = m.world().profile().integrateUs;
+    stats_.springsUs = m.world().profile().springsUs;
+    stats_.tick = m.tick();
+    stats_.simSeconds = m.time();
+    stats_.particles = m.world().particles.count();
+    stats_.springs = m.world().springs.size();
+    recordResultOnce();
+}
+
+void GameScreen::warmUp(double seconds) {
+    if (!session_) return;
+    const auto ticks = static_cast<long long>(seconds / session_->match().world().def().tickSeconds);
+    for (long long i = 0; i < ticks; ++i) {
+        session_->step();
+        matchView_.observe(session_->match());
+    }
+}
+
+// ---- drawing --------------------------------------------------------------------------
+phys::Vec2 GameScreen::pivotPixels() const {
+    return camera_.toPixel(session_->match().cannon().def.position);
+}
+
+void GameScreen::drawPlaying() {
+    const game::Match& m = session_->match();
+    MatchViewOptions o;
+    o.trajectoryPreview = settings_.trajectoryPreview && humanTurn();
+    o.solutionHint = settings_.solutionHint && humanTurn();
+    o.trails = view_.trails;
+    if (humanTurn() && aim_.editing()) o.pending = aim_.pending();
+    o.charge = aim_.chargeFraction();
+    for (const game::CannonState& c : m.cannons()) o.playerNames.push_back(defaultPlayerName(c.def.player));
+    char banner[64] = "";
+    if (time_.paused)
+        std::snprintf(banner, sizeof banner, "PAUSED  (. steps one tick)");
+    else if (time_.timeScale != 1.0f)
+        std::snprintf(banner, sizeof banner, "speed x%g", static_cast<double>(time_.timeScale));
+    else if (!m.over() && m.cannon().def.player == "cpu" && !m.shell())
+        std::snprintf(banner, sizeof banner, "the computer is aiming...");
+    else if (m.over() && newBest_)
+        std::snprintf(banner, sizeof banner, "new best for this level!");
+    o.banner = banner;
+    drawMatchFrame(renderer_, matchView_, m, camera_, o);
+}
+
+void GameScreen::drawPanels() {
+    MenuChoice choice;
+    if (overlay_ == Overlay::LevelSelect) choice = levelSelectScreen(levels_, settings_);
+    if (overlay_ == Overlay::Pause) choice = pauseMenu(settings_);
+    if (helpOpen_) helpOverlay(helpOpen_);
+    if (session_ && overlay_ == Overlay::None) {
+        game::Match& m = session_->match();
+        const MatchPanelRequests req = matchPanel(m, humanTurn(), settings_, settings_.difficulty,
+                                                  settings_.hotseat && level_.mode == game::Mode::Duel);
+        if (req.projectile)
+            if (auto c = AimInput::select(m.cannon(), *req.projectile)) submit(*c);
+        if (req.fire && humanTurn()) submit(aim_.fire(m.cannon()));
+        if (req.endTurn && humanTurn()) {
+            game::Command c;
+            c.kind = game::CommandKind::EndTurn;
+            submit(c);
+        }
+        if (settings_.physicsPanel) {
+            const phys::WorldDef before = m.world().def();
+            phys::WorldDef edited = before;
+            SceneRequests scene;
+            // Folded at first: the sky is where the shells fly. Its layout persists.
+            ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+            if (physicsPanel(edited, time_, view_, scene, stats_)) submit(settingCommands(before, edited));
+            if (scene.fire && humanTurn()) submit(aim_.fire(m.cannon()));
+            if (scene.reset) restart();
+        }
+    }
+    if (choice.openLevel) openLevel(*choice.openLevel);
+    if (choice.resume) overlay_ = Overlay::None;
+    if (choice.restart && session_) {
+        restart();
+        overlay_ = Overlay::None;
+    }
+    if (choice.levelSelect) overlay_ = Overlay::LevelSelect;
+    if (choice.help) helpOpen_ = true;
+    if (choice.quit) running_ = false;
+    if (choice.settingsChanged) persist();
+}
+
+void GameScreen::frame(double wallSeconds) {
+    if (session_) {
+        pollHeldInput(wallSeconds);
+        simulate(wallSeconds);
+    }
+    const int w = context_.width(), h = context_.height();
+    if (w != camera_.width || h != camera_.height) {
+        if (cameraMoved_ || !session_)
+            camera_.width = w, camera_.height = h;
+        else
+            camera_ = levelCamera(session_->match(), w, h);
+        msaa_.resize(w, h, samples_);
+    }
+    imgui_.newFrame(wallSeconds);
+    msaa_.bind(context_.framebuffer());
+    if (session_) {
+        drawPlaying();
+    } else if (backdrop_) {
+        // The select screen over the first level's landscape.
+        MatchViewOptions o;
+        o.hud = false;
+        o.trajectoryPreview = false;
+        drawMatchFrame(renderer_, matchView_, *backdrop_, camera_, o);
+    } else {
+        gl::fn.Viewport(0, 0, w, h);
+        gl::fn.ClearColor(0.07f, 0.12f, 0.2f, 1.0f);
+        gl::fn.Clear(GL_COLOR_BUFFER_BIT);
+        renderer_.begin(camera_);
+        renderer_.flush();
+    }
+    stats_.vertices = renderer_.stats().vertices;
+    msaa_.resolveInto(context_.framebuffer());
+    drawPanels();
+    imgui_.drawLabels(renderer_.labels());
+    imgui_.render();
+}
+
+std::string GameScreen::saveScreenshot(const std::string& path) {
+    const std::string error =
+        writePng(path, readFramebuffer(context_.framebuffer(), context_.width(), context_.height()));
+    stats_.status = error.empty() ? "saved " + path : error;
+    return error;
+}
+
+bool GameScreen::takeScreenshotRequest() {
+    const bool r = screenshotRequested_;
+    screenshotRequested_ = false;
+    return r;
+}
+
+void GameScreen::setMeasuredFrameMs(double ms) {
+    stats_.frameMs = framesMeasured_ < 2 ? ms : 0.9 * stats_.frameMs + 0.1 * ms;
+    ++framesMeasured_;
+}
+
+// ---- events ---------------------------------------------------------------------------
+phys::Vec2 GameScreen::pointerPixels(int x, int y) const {
+    // Window points to framebuffer pixels (they differ on high-DPI screens).
+    const ImVec2 s = ImGui::GetIO().DisplayFramebufferScale;
+    return {x * s.x, y * s.y};
+}
+
+bool GameScreen::keyDown(const SDL_Event& e) {
+    const SDL_Keycode key = e.key.keysym.sym;
+    if (key == SDLK_F12) {
+        screenshotRequested_ = true;
+        return true;
+    }
+    if (key == SDLK_F1 || key == SDLK_QUESTION || (key == SDLK_SLASH && (e.key.keysym.mod & KMOD_SHIFT))) {
+        helpOpen_ = !helpOpen_;
+        return true;
+    }
+    if (key == SDLK_ESCAPE) {
+        if (helpOpen_)
+            helpOpen_ = false;
+        else if (aim_.charging())
+            aim_.cancelCharge();
+        else if (overlay_ == Overlay::Pause || (overlay_ == Overlay::LevelSelect && session_))
+            overlay_ = Overlay::None;
+        else if (overlay_ == Overlay::None)
+            overlay_ = Overlay::Pause;
+        else
+            running_ = false; // Esc on the first level select screen quits
+        return true;
+    }
+    if (!session_ || overlay_ != Overlay::None || e.key.repeat) return true;
+    game::Match& m = session_->match();
+    const game::CannonState& c = m.cannon();
+    switch (key) {
+    case SDLK_SPACE:
+        if (humanTurn() && !m.shell()) aim_.startCharge();
+        break;
+    case SDLK_RETURN:
+    case SDLK_KP_ENTER:
+    case SDLK_f:
+        if (humanTurn()) submit(aim_.fire(c));
+        break;
+    case SDLK_e: {
+        game::Command end;
+        end.kind = game::CommandKind::EndTurn;
+        if (humanTurn()) submit(end);
+        break;
+    }
+    case SDLK_TAB:
+        if (auto s = AimInput::select(c, (c.projectile + 1) % c.def.projectiles.size())) submit(*s);
+        break;
+    case SDLK_p:
+        settings_.trajectoryPreview = !settings_.trajectoryPreview;
+        break;
+    case SDLK_h:
+        settings_.solutionHint = !settings_.solutionHint;
+        break;
+    case SDLK_F2:
+        settings_.physicsPanel = !settings_.physicsPanel;
+        break;
+    case SDLK_PERIOD:
+        time_.paused = true;
+        time_.stepRequested = true;
+        break;
+    case SDLK_BACKSPACE:
+        time_.paused = !time_.paused;
+        break;
+    case SDLK_LEFTBRACKET:
+    case SDLK_RIGHTBRACKET: {
+        int i = 0;
+        while (i + 1 < static_cast<int>(std::size(kSpeeds)) && kSpeeds[i] < time_.timeScale) ++i;
+        i += key == SDLK_RIGHTBRACKET ? 1 : -1;
+        time_.timeScale = kSpeeds[std::clamp(i, 0, static_cast<int>(std::size(kSpeeds)) - 1)];
+        break;
+    }
+    case SDLK_BACKSLASH:
+        time_.timeScale = 1.0f;
+        break;
+    case SDLK_r:
+        restart();
+        break;
+    case SDLK_l:
+        overlay_ = Overlay::LevelSelect;
+        break;
+    case SDLK_HOME:
+        camera_ = levelCamera(m, context_.width(), context_.height());
+        cameraMoved_ = false;
+        break;
+    default:
+        if (key >= SDLK_1 && key <= SDLK_8)
+            if (auto s = AimInput::select(c, static_cast<std::size_t>(key - SDLK_1))) submit(*s);
+        break;
+    }
+    return true;
+}
+
+bool GameScreen::handleEvent(const SDL_Event& e) {
+    if (e.type == SDL_QUIT) return false;
+    if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_CLOSE) return false;
+    const bool uiWants = imgui_.processEvent(e);
+    if (e.type == SDL_CONTROLLERDEVICEADDED && !pad_) pad_ = SDL_GameControllerOpen(e.cdevice.which);
+    if (e.type == SDL_CONTROLLERDEVICEREMOVED && pad_ &&
+        e.cdevice.which == SDL_JoystickInstanceID(SDL_GameControllerGetJoystick(pad_))) {
+        SDL_GameControllerClose(pad_);
+        pad_ = nullptr;
+    }
+    if (e.type == SDL_KEYDOWN && !imgui_.wantsKeyboard()) return keyDown(e) && running_;
+    if (e.type == SDL_KEYUP && e.key.keysym.sym == SDLK_SPACE && session_ && aim_.charging())
+        submit(aim_.releaseCharge(session_->match().cannon()));
+    if (!session_) return running_;
+    game::Match& m = session_->match();
+    if (e.type == SDL_CONTROLLERBUTTONDOWN) {
+        switch (e.cbutton.button) {
+        case SDL_CONTROLLER_BUTTON_A:
+            if (humanTurn()) submit(aim_.fire(m.cannon()));
+            break;
+        case SDL_CONTROLLER_BUTTON_B:
+            if (humanTurn()) {
+                game::Command end;
+                end.kind = game::CommandKind::EndTurn;
+                submit(end);
+            }
+            break;
+        case SDL_CONTROLLER_BUTTON_X:
+            if (auto s = AimInput::select(m.cannon(), (m.cannon().projectile + 1) %
+                                                          m.cannon().def.projectiles.size()))
+                submit(*s);
+            break;
+        case SDL_CONTROLLER_BUTTON_START:
+            overlay_ = overlay_ == Overlay::Pause ? Overlay::None : Overlay::Pause;
+            break;
+        default:
+            break;
+        }
+    }
+    if (uiWants && imgui_.wantsMouse()) return running_;
+    if (overlay_ != Overlay::None) return running_;
+    if (e.type == SDL_MOUSEWHEEL && e.wheel.y != 0) {
+        int mx = 0, my = 0;
+        SDL_GetMouseState(&mx, &my);
+        camera_.zoomAt(pointerPixels(mx, my), e.wheel.y > 0 ? 1.15 : 1.0 / 1.15);
+        cameraMoved_ = true;
+    } else if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT) {
+        if (humanTurn() && !m.shell())
+            aim_.beginDrag(pivotPixels(), pointerPixels(e.button.x, e.button.y), m.cannon().def.maxSpeedMps);
+    } else if (e.type == SDL_MOUSEBUTTONDOWN) {
+        panning_ = true;
+    } else if (e.type == SDL_MOUSEBUTTONUP && e.button.button == SDL_BUTTON_LEFT) {
+        submit(aim_.endDrag(m.cannon()));
+    } else if (e.type == SDL_MOUSEBUTTONUP) {
+        panning_ = false;
+    } else if (e.type == SDL_MOUSEMOTION) {
+        if (aim_.dragging())
+            aim_.dragTo(pivotPixels(), pointerPixels(e.motion.x, e.motion.y), m.cannon().def.maxSpeedMps);
+        else if (panning_) {
+            const phys::Vec2 d = pointerPixels(e.motion.xrel, e.motion.yrel);
+            camera_.panPixels(d);
+            cameraMoved_ = true;
+        }
+    }
+    return running_;
+}
+
+} // namespace ui

@@ -1,0 +1,102 @@
+// How a match looks: sky, terrain with its craters, water, obstacles, Box2D blocks,
+// ropes, blobs, cannons, targets, the shell and its trail, the trajectory preview, the
+// firing-solution hint, the wind and the HUD. One drawing path for the window and for
+// headless frames (`artillery run --png`, issue 6): everything goes through Renderer2D,
+// the HUD included (boxes in pixel space, text as labels that ImGui draws).
+//
+// The view reads the match and keeps only what a picture needs across frames (the
+// shell's trail, cached previews); it never changes the match.
+//
+// Section index
+//   options      MatchViewOptions: toggles and what the window adds (pending aim, charge)
+//   camera       levelCamera(): the view that frames a level
+//   MatchView    observe() after ticks, draw() per frame
+#pragma once
+
+#include "game/match.h"
+#include "ui/render/camera.h"
+#include "ui/render/renderer2d.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ui {
+
+/// An aim the player is still adjusting (drag, keys, charge), not yet sent as commands.
+struct PendingAim {
+    double angleDeg = 45.0;
+    double speedMps = 30.0;
+};
+
+struct MatchViewOptions {
+    bool trajectoryPreview = true; ///< dotted path the current aim would take
+    bool solutionHint = false;     ///< the computer's aim (aimAt) as a golden ghost barrel
+    bool hud = true;               ///< turn, wind, angle, power, shots, score, stars
+    bool trails = true;            ///< the shell's path so far
+    /// The aim being edited in the window; the barrel, the power bar and the preview
+    /// follow it instead of the cannon's committed aim.
+    std::optional<PendingAim> pending;
+    /// Fraction 0..1 of a Space charge in progress (draws the charge gauge), if any.
+    std::optional<double> charge;
+    /// Name of who plays each cannon, as the HUD shows it ("Player 1", "Computer").
+    std::vector<std::string> playerNames;
+    /// A line in the middle of the top of the screen ("Paused", "x0.25").
+    std::string banner;
+};
+
+/// Seen from far, a 1.5 m barrel is a few pixels: cannons are drawn scaled by this
+/// factor (>= 1) so the barrel is at least 24 px long and the aim reads at a glance.
+/// The shell still leaves from the true muzzle.
+double cannonDrawScale(const Camera& camera);
+
+/// The colour of cannon `index`'s team (its band, carriage, shells' trails, HUD rows).
+phys::Color teamColor(int index);
+/// A target's paint: the red rings, and the white ones.
+phys::Color targetRed();
+phys::Color targetWhite();
+
+/// How the HUD names a cannon's `player` field: "Computer" for "cpu", else "Player N".
+std::string defaultPlayerName(const std::string& player);
+
+/// A camera that shows the level: its whole width, the ground near the bottom, and
+/// every cannon, target and block inside.
+Camera levelCamera(const game::Match& match, int width, int height);
+
+class MatchView {
+  public:
+    /// Call after each tick (or each rendered tick headless): extends the shell's trail.
+    void observe(const game::Match& match);
+    /// Forgets the trails and caches (a new match).
+    void reset();
+    /// Draws the match through `r` (begin() must have been called with the camera).
+    void draw(Renderer2D& r, const game::Match& match, const MatchViewOptions& options);
+
+  private:
+    void drawPreview(Renderer2D& r, const game::Match& match, const PendingAim& aim);
+    void drawHint(Renderer2D& r, const game::Match& match);
+    void drawTrails(Renderer2D& r, const game::Match& match);
+
+    struct Trail {
+        std::vector<phys::Vec2> points;
+        int player = 0;
+    };
+    Trail current_;
+    std::vector<Trail> old_; ///< the last few shots, fading
+    phys::ParticleId trailShell_ = phys::kNoParticle;
+    int trailShot_ = -1;
+
+    // The preview and the hint are re-simulated only when what they depend on changes.
+    struct AimKey {
+        double angle = 0, speed = 0, wind = 0, gravity = 0, tick = 0;
+        int player = -1, shots = -1, integrator = -1, projectile = -1, drag = -1;
+        bool operator==(const AimKey&) const = default;
+    };
+    AimKey previewKey_, hintKey_;
+    std::vector<phys::Vec2> preview_;
+    std::optional<PendingAim> hint_;
+    bool hintExact_ = false;
+};
+
+} // namespace ui

@@ -1,0 +1,44 @@
+// What the game remembers between runs: the best result of every level, the player's
+// choices (difficulty, hotseat, preview and hint toggles) and the ImGui layout. Kept in
+// $XDG_CONFIG_HOME/artillery (else ~/.config/artillery), written atomically (temp file
+// + rename) so a crash never leaves half a file.
+#pragma once
+
+#include "game/ai.h"
+
+#include <map>
+#include <string>
+
+namespace ui {
+
+struct LevelResult {
+    int bestScore = 0;
+    int stars = 0;      ///< 0..3
+    int plays = 0;      ///< matches finished
+    bool won = false;   ///< duel: beaten at least once
+};
+
+struct PlayerSettings {
+    game::Difficulty difficulty = game::Difficulty::Normal;
+    bool hotseat = false;          ///< a duel's "cpu" cannon is played by a second person
+    bool trajectoryPreview = true;
+    bool solutionHint = false;
+    bool physicsPanel = true;
+    /// By level file name (not path), so results survive moving the folder.
+    std::map<std::string, LevelResult> results;
+
+    /// Records a finished match; returns true when it beat the stored best.
+    bool record(const std::string& levelFile, int score, int stars, bool won);
+    const LevelResult* result(const std::string& levelFile) const;
+};
+
+/// The folder settings live in ("" when neither XDG_CONFIG_HOME nor HOME is set).
+std::string configFolder();
+
+/// Reads settings; a missing or unreadable file gives the defaults (and says why in
+/// `warning`, empty when the file was fine or absent).
+PlayerSettings loadPlayerSettings(const std::string& file, std::string& warning);
+/// Writes atomically, creating the folder. Returns "" or why it failed.
+std::string savePlayerSettings(const std::string& file, const PlayerSettings& settings);
+
+} // namespace ui

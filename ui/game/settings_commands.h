@@ -1,0 +1,17 @@
+// Live physics controls as commands: the panel edits a copy of the world's settings, and
+// what changed becomes `set` commands (by the names in game/settings.h) that go through
+// Session::submit, so a replay carries every change the player made.
+#pragma once
+
+#include "game/command.h"
+#include "physics/world.h"
+
+#include <vector>
+
+namespace ui {
+
+/// One `set` command per setting whose value differs between `before` and `after`, in
+/// the settings table's order. "planet" is left out: it is another name for gravity.
+std::vector<game::Command> settingCommands(const phys::WorldDef& before, const phys::WorldDef& after);
+
+} // namespace ui
