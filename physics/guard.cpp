@@ -62,10 +62,15 @@ GuardReport guardWorld(World& w, const GuardDef& def) {
     const Integrator m = w.def().integrator;
     char buf[400];
     if (worstK > 0.0 && !(worstOmegaDt < stableOmegaDt(m))) {
+        char limit[80];
+        if (stableOmegaDt(m) > 0.0)
+            std::snprintf(limit, sizeof limit, "it needs w dt < %.3g", stableOmegaDt(m));
+        else
+            std::snprintf(limit, sizeof limit, "it gains energy on springs at any dt");
         std::snprintf(buf, sizeof buf,
-                      "%s with springs of %g N/m is unstable at dt = %.3g ms (w dt = %.3g; it "
-                      "needs w dt < %.3g): add sub-steps, lower the stiffness or use implicit-euler",
-                      info(m).name, worstK, 1e3 * h, worstOmegaDt, stableOmegaDt(m));
+                      "%s with springs of %g N/m is unstable at dt = %.3g ms (w dt = %.3g; %s): "
+                      "add sub-steps, lower the stiffness or use implicit-euler",
+                      info(m).name, worstK, 1e3 * h, worstOmegaDt, limit);
     } else if (w.def().collision.model == ContactModel::Penalty) {
         std::snprintf(buf, sizeof buf,
                       "penalty contacts at %g Hz are too stiff for dt = %.3g ms with %s: lower "

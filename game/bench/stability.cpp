@@ -1,5 +1,7 @@
 #include "game/bench/stability.h"
 
+#include "physics/guard.h"
+
 #include "physics/world.h"
 
 #include <algorithm>
@@ -110,19 +112,7 @@ double stiffestRopeSpring(Integrator m, const RopeDef& def) {
     return lo;
 }
 
-double theoreticalOmegaDt(Integrator m) {
-    switch (m) {
-    case Integrator::ExplicitEuler:
-    case Integrator::Midpoint: return 0.0;
-    case Integrator::SymplecticEuler:
-    case Integrator::Verlet:
-    case Integrator::VelocityVerlet:
-    case Integrator::Leapfrog: return 2.0;
-    case Integrator::RK4: return 2.0 * std::sqrt(2.0);
-    case Integrator::ImplicitEuler: return std::numeric_limits<double>::infinity();
-    }
-    return 0.0;
-}
+double theoreticalOmegaDt(Integrator m) { return phys::stableOmegaDt(m); } // one table: the guard's
 
 std::vector<StabilityRow> runStability(const std::function<void(int, int)>& progress,
                                        const RopeDef& rope) {
