@@ -105,18 +105,26 @@ Replay loadReplay(const std::string& file) { return parseReplay(file, readFile(f
 void saveReplay(const std::string& file, const Replay& r) { writeFileAtomically(file, replayToJson(r)); }
 
 Level levelForReplay(const std::string& replayFile, const Replay& r) {
-    // A relative level path is looked up beside the replay first, then from here.
+    // A relative level path is looked up from the replay's folder and each folder above
+    // it (a replay in tests/replays finds levels/ at the top), then from here.
     fs::path p = r.levelFile;
     if (p.is_relative()) {
-        const fs::path beside = fs::path(replayFile).parent_path() / p;
-        if (fs::exists(beside)) p = beside;
+        std::error_code ec;
+        for (fs::path dir = fs::absolute(replayFile, ec).parent_path(); !dir.empty();
+             dir = dir.parent_path()) {
+            if (fs::exists(dir / p, ec)) {
+                p = dir / p;
+                break;
+            }
+            if (dir == dir.root_path()) break;
+        }
     }
     std::string text;
     try {
         text = readFile(p.string());
     } catch (const LoadError&) {
         throw LoadError(replayFile, "$.level.file",
-                        "the level \"" + r.levelFile + "\" cannot be opened (looked beside the replay and in the working folder)");
+                        "the level \"" + r.levelFile + "\" cannot be opened (looked in the replay's folder, the folders above it and the working folder)");
     }
     if (contentHash(text) != r.levelHash)
         throw LoadError(replayFile, "$.level.content_hash",

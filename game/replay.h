@@ -38,7 +38,7 @@ struct Checkpoint {
 Checkpoint checkpointOf(const Match& m);
 
 struct Replay {
-    std::string levelFile;         ///< as given when recorded (relative paths resolve from the replay's folder, then the working folder)
+    std::string levelFile;         ///< as given when recorded (relative paths resolve from the replay's folder or one above it, then the working folder)
     std::string levelHash;         ///< content hash of the level file
     std::string difficulty = "normal";
     std::uint64_t cpuSeed = 1;

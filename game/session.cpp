@@ -21,8 +21,8 @@ std::string Session::submit(Command command) {
 
 void Session::step() {
     Match& m = *match_;
-    const bool cpuTurn =
-        !m.over() && !m.shell() && (options_.autoplay || m.cannon().def.player == "cpu");
+    const bool cpuTurn = !options_.hotseat && !m.over() && !m.shell() &&
+                         (options_.autoplay || m.cannon().def.player == "cpu");
     if (cpuTurn) {
         if (!cpuFireTick_) cpuFireTick_ = m.tick() + options_.cpuDelayTicks;
         if (m.tick() >= *cpuFireTick_) {

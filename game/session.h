@@ -24,6 +24,9 @@ struct SessionOptions {
     std::string recordFile;
     /// The computer plays every cannon (demos, golden replays), not only "cpu" ones.
     bool autoplay = false;
+    /// The computer plays no cannon: people take every turn ("cpu" cannons included), or
+    /// a replay supplies every command, the computer's recorded ones among them.
+    bool hotseat = false;
 };
 
 class Session {

@@ -82,6 +82,7 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
     args.rejectUnknown();
     if (args.positionals().size() != 1) args.fail("name one level file");
     if (replayFile && commandsFile) args.fail("give --replay or --commands, not both");
+    if (replayFile && autoplay) args.fail("--autoplay plays new turns; a --replay already has its turns");
     if (!difficultyFromName(difficulty)) args.fail("--difficulty expects easy, normal or hard, got '" + difficulty + "'");
     int width = 0, height = 0;
     if (std::sscanf(size.c_str(), "%dx%d", &width, &height) != 2 || width < 16 || height < 16 ||
@@ -103,6 +104,7 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
                                 "(replay: " + r.levelHash + ", " + args.positionals()[0] + ": " +
                                     level.contentHash + ")");
             o.commands = r.commands;
+            o.session.hotseat = true; // the computer's turns are in the recording
             o.session.difficulty = *difficultyFromName(r.difficulty);
             o.session.cpuSeed = r.cpuSeed;
             if (!hasTicks) o.ticks = r.ticks;
