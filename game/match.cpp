@@ -439,6 +439,12 @@ void Match::step() {
     for (BlockState& b : blocks_) {
         if (!b.def.target || b.toppled || !rigid_->alive(b.body)) continue;
         const RigidBodyState s = rigid_->state(b.body);
+        if (shotsFired_ == 0) {
+            // Settling before the first shot is not toppling: follow the block until then.
+            b.def.position = s.position;
+            b.def.angleDeg = s.angle / kDegToRad;
+            continue;
+        }
         const double moved = length(s.position - b.def.position);
         const double tilt = std::abs(std::remainder(s.angle - b.def.angleDeg * kDegToRad, 2.0 * std::numbers::pi));
         if (moved > std::max(b.def.size.x, b.def.size.y) || tilt > 0.25 * std::numbers::pi) {
@@ -450,6 +456,10 @@ void Match::step() {
     for (BlobState& b : blobs_) {
         if (!b.def.target || b.toppled) continue;
         const Vec2 p = world_.particles.position(b.center);
+        if (shotsFired_ == 0) { // settling before the first shot is not toppling
+            b.def.center = p;
+            continue;
+        }
         if (length(p - b.def.center) > b.def.radius) {
             b.toppled = true;
             shooter.score += kTargetBlobPoints;
