@@ -18,6 +18,10 @@ std::atomic<bool> counting{false};
 std::atomic<long> allocations{0};
 } // namespace
 
+// These replace the global allocation functions, so malloc/free is the matching pair;
+// GCC cannot see that through the replacement and warns (with -O2 and sanitizers).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void* operator new(std::size_t n) {
     if (counting.load(std::memory_order_relaxed))
         allocations.fetch_add(1, std::memory_order_relaxed);
@@ -30,6 +34,7 @@ void operator delete(void* p) noexcept {
 void operator delete(void* p, std::size_t) noexcept {
     std::free(p);
 }
+#pragma GCC diagnostic pop
 
 using namespace phys;
 
