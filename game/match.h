@@ -188,7 +188,6 @@ class Match {
     std::uint64_t shellFiredTick_ = 0;
     double closestMiss_ = 0.0;
     Ammo shellAmmo_;
-    int pendingBonus_ = 0;
 };
 
 /// Applies every command whose tick is the match's current tick, then steps; repeats
