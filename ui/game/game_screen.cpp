@@ -4,6 +4,7 @@
 //   time         simulate: fixed ticks from the clock, held keys and the controller
 //   drawing      frame, drawPlaying, drawPanels
 //   events       handleEvent: mouse aim, keys, controller buttons
+#include "ui/platform/gl_setup.h"
 #include "ui/game/game_screen.h"
 
 #include "game/files/json_reader.h"
@@ -26,22 +27,6 @@
 namespace ui {
 
 namespace {
-
-bool loadGLOrThrow(GLContext& context) {
-    if (const char* missing = gl::loadGL(context.procAddress()); *missing)
-        throw std::runtime_error(std::string(context.name()) + ": OpenGL 3.3 core is needed; " +
-                                 missing + " is missing");
-    return true;
-}
-
-int autoSamples(int requested) {
-    if (requested > 0) return requested;
-    const auto* renderer = reinterpret_cast<const char*>(gl::fn.GetString(GL_RENDERER));
-    const std::string name = renderer ? renderer : "";
-    const bool software = name.find("llvmpipe") != std::string::npos ||
-                          name.find("softpipe") != std::string::npos;
-    return software ? 1 : 4;
-}
 
 /// Hotseat: the computer's cannon is handed to a second person. The level is data, so
 /// this is a copy with the player renamed; the session then never runs the AI for it.
