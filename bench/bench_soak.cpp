@@ -93,8 +93,9 @@ int main(int argc, char** argv) {
                 w.springs.size(), bodies, seconds, 1.0 / tick);
     std::printf("%8s %14s %10s %10s %12s\n", "minute", "energy/E0", "removed", "RSS MiB", "wall s");
     for (long t = 1; t <= ticks; ++t) {
+        coupling.prepare(w, rigid);
         w.step();
-        coupling.exchange(w.particles, w.materials, rigid);
+        coupling.exchange(w, rigid);
         rigid.step(tick);
         removed += guardWorld(w).removed;
         if (t % perMinute == 0 || t == ticks) {

@@ -1,6 +1,7 @@
 #include "game/command.h"
 
 #include "game/files/json_reader.h"
+#include "physics/projectiles.h"
 
 namespace game {
 
@@ -12,17 +13,35 @@ const char* commandName(CommandKind k) {
     case CommandKind::Fire: return "fire";
     case CommandKind::EndTurn: return "end_turn";
     case CommandKind::Set: return "set";
+    case CommandKind::Sandbox: return "sandbox";
+    case CommandKind::Spawn: return "spawn";
+    case CommandKind::Grab: return "grab";
+    case CommandKind::Drag: return "drag";
+    case CommandKind::Release: return "release";
     }
     return "?";
 }
 
+const std::vector<std::string>& spawnKinds() {
+    static const std::vector<std::string> kinds = [] {
+        std::vector<std::string> k{"block", "rope", "cloth", "blob", "spring"};
+        for (const auto& p : phys::projectilePresets()) k.emplace_back(p.name);
+        return k;
+    }();
+    return kinds;
+}
+
 namespace {
+
+/// Largest coordinate a sandbox command may name, m (the level checks its own bounds).
+constexpr double kMaxCoordinate = 1e6;
 
 Command readCommand(const Node& n) {
     Command c;
     c.tick = static_cast<std::uint64_t>(n.at("tick").integer(0, kMaxCommandTick));
     const std::string cmd =
-        n.at("cmd").choice({"aim", "power", "select", "fire", "end_turn", "set"});
+        n.at("cmd").choice({"aim", "power", "select", "fire", "end_turn", "set", "sandbox", "spawn",
+                            "grab", "drag", "release"});
     if (cmd == "aim") {
         c.kind = CommandKind::Aim;
         c.number = n.number("angle_deg", -180.0, 180.0, "degrees");
@@ -36,6 +55,22 @@ Command readCommand(const Node& n) {
         c.kind = CommandKind::Fire;
     } else if (cmd == "end_turn") {
         c.kind = CommandKind::EndTurn;
+    } else if (cmd == "sandbox") {
+        c.kind = CommandKind::Sandbox;
+    } else if (cmd == "spawn") {
+        c.kind = CommandKind::Spawn;
+        c.text = n.at("what").choice(spawnKinds());
+        c.at = n.at("at").vec2(kMaxCoordinate);
+        if (c.text == "rope" || c.text == "spring") {
+            c.to = n.at("to").vec2(kMaxCoordinate);
+            if (c.to == c.at) n.at("to").fail("expected a point other than \"at\"");
+        }
+        c.number = n.number("size", 0.0, 0.0, 20.0, "m");
+    } else if (cmd == "grab" || cmd == "drag") {
+        c.kind = cmd == "grab" ? CommandKind::Grab : CommandKind::Drag;
+        c.at = n.at("at").vec2(kMaxCoordinate);
+    } else if (cmd == "release") {
+        c.kind = CommandKind::Release;
     } else {
         c.kind = CommandKind::Set;
         const Node name = n.at("name");
@@ -93,6 +128,14 @@ std::string commandsToJson(const std::vector<Command>& commands) {
             j["name"] = c.text;
             std::visit([&](const auto& v) { j["value"] = v; }, c.value);
             break;
+        case CommandKind::Spawn:
+            j["what"] = c.text;
+            j["at"] = {c.at.x, c.at.y};
+            if (c.text == "rope" || c.text == "spring") j["to"] = {c.to.x, c.to.y};
+            if (c.number > 0.0) j["size"] = c.number;
+            break;
+        case CommandKind::Grab:
+        case CommandKind::Drag: j["at"] = {c.at.x, c.at.y}; break;
         default: break;
         }
         list.push_back(j);

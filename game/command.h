@@ -9,9 +9,17 @@
 //   {"tick": 10,  "cmd": "fire"}
 //   {"tick": 600, "cmd": "end_turn"}
 //   {"tick": 700, "cmd": "set", "name": "integrator", "value": "rk4"}
+// The sandbox's verbs (refused until the level is a sandbox, or a "sandbox" command
+// has made it one):
+//   {"tick": 0,   "cmd": "sandbox"}                       no budget, no score, tools on
+//   {"tick": 5,   "cmd": "spawn", "what": "block", "at": [40, 10], "size": 1.5}
+//   {"tick": 9,   "cmd": "spawn", "what": "rope", "at": [30, 20], "to": [34, 12]}
+//   {"tick": 20,  "cmd": "grab", "at": [40, 10]}   then "drag" {"at": [..]}, "release"
+// `what` is block, rope, cloth, blob, spring or a projectile preset (a ball).
 #pragma once
 
 #include "game/settings.h"
+#include "physics/vec2.h"
 
 #include <cstdint>
 #include <string>
@@ -19,16 +27,21 @@
 
 namespace game {
 
-enum class CommandKind { Aim, Power, Select, Fire, EndTurn, Set };
+enum class CommandKind { Aim, Power, Select, Fire, EndTurn, Set, Sandbox, Spawn, Grab, Drag, Release };
 const char* commandName(CommandKind k);
 
 struct Command {
     std::uint64_t tick = 0;
     CommandKind kind = CommandKind::Fire;
-    double number = 0.0;     ///< aim: angle_deg; power: speed_mps
-    std::string text;        ///< select: projectile; set: setting name
+    double number = 0.0;     ///< aim: angle_deg; power: speed_mps; spawn: size (m, 0 = default)
+    std::string text;        ///< select: projectile; set: setting name; spawn: what
     SettingValue value;      ///< set: the value
+    phys::Vec2 at;           ///< spawn, grab, drag: where, m
+    phys::Vec2 to;           ///< spawn rope or spring: the other end, m
 };
+
+/// What `spawn` can make: block, rope, cloth, blob, spring and every projectile preset.
+const std::vector<std::string>& spawnKinds();
 
 /// Largest tick a script may name (a day at 1000 Hz); keeps absurd files bounded.
 inline constexpr std::uint64_t kMaxCommandTick = 86'400'000;

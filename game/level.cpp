@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace game {
 
@@ -146,7 +147,15 @@ Block readBlock(const Node& n) {
     return b;
 }
 
-Rope readRope(const Node& n) {
+/// True when `p` lies inside block `b` (in the block's own frame), with a small margin.
+bool insideBlock(const Block& b, Vec2 p) {
+    const double a = -b.angleDeg * std::numbers::pi / 180.0;
+    const Vec2 d = p - b.position;
+    const Vec2 local{d.x * std::cos(a) - d.y * std::sin(a), d.x * std::sin(a) + d.y * std::cos(a)};
+    return std::abs(local.x) <= 0.5 * b.size.x + 1e-6 && std::abs(local.y) <= 0.5 * b.size.y + 1e-6;
+}
+
+Rope readRope(const Node& n, const std::vector<Block>& blocks) {
     Rope r;
     r.from = n.at("from").vec2(kMaxCoordinate);
     r.to = n.at("to").vec2(kMaxCoordinate);
@@ -156,6 +165,17 @@ Rope readRope(const Node& n) {
     r.pinFrom = n.boolean("pin_from", r.pinFrom);
     r.pinTo = n.boolean("pin_to", r.pinTo);
     r.massPerSegment = n.number("mass_per_segment", r.massPerSegment, 1e-3, 1e4, "kg");
+    auto tie = [&](const char* key, const char* end, Vec2 point, int& index) {
+        const auto node = n.find(key);
+        if (!node) return;
+        if (blocks.empty()) node->fail("expected no \"" + std::string(key) + "\": the level has no blocks");
+        index = static_cast<int>(node->integer(0, static_cast<long long>(blocks.size()) - 1));
+        if (!insideBlock(blocks[static_cast<std::size_t>(index)], point))
+            node->fail("expected \"" + std::string(end) + "\" to lie inside block " +
+                       std::to_string(index) + " (the rope is tied there)");
+    };
+    tie("from_block", "from", r.from, r.fromBlock);
+    tie("to_block", "to", r.to, r.toBlock);
     n.finish();
     return r;
 }
@@ -232,7 +252,7 @@ Level parseLevel(const std::string& file, const std::string& text) {
     if (auto list = root.find("blocks"))
         for (const Node& n : list->elements(kMaxBlocks)) l.blocks.push_back(readBlock(n));
     if (auto list = root.find("ropes"))
-        for (const Node& n : list->elements(kMaxRopes)) l.ropes.push_back(readRope(n));
+        for (const Node& n : list->elements(kMaxRopes)) l.ropes.push_back(readRope(n, l.blocks));
     if (auto list = root.find("blobs"))
         for (const Node& n : list->elements(kMaxBlobs)) l.blobs.push_back(readBlob(n));
     l.shots = static_cast<int>(root.integer("shots", l.shots, 1, 100));

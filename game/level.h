@@ -79,6 +79,9 @@ struct Rope {
     double sag = 0.0;            ///< extra length, fraction of the straight distance
     bool pinFrom = true, pinTo = true;
     double massPerSegment = 0.5; ///< kg
+    /// The end tied to a block (index into Level::blocks) instead of pinned: the rope
+    /// holds the block, or the block anchors the rope. -1 = none.
+    int fromBlock = -1, toBlock = -1;
 };
 
 /// A soft blob: a ring of particles held by springs around a centre particle.

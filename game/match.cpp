@@ -120,70 +120,9 @@ void Match::buildWorld() {
             break;
         }
     }
-    for (const Block& b : level_.blocks) {
-        BodyDef bd;
-        bd.position = b.position;
-        bd.angle = b.angleDeg * kDegToRad;
-        const BodyId id = rigid_->createBox(bd, b.size * 0.5, blockMaterial(b));
-        blocks_.push_back({b, id, false});
-    }
-    for (const Rope& r : level_.ropes) {
-        // Points on a parabola whose arc is about (1 + sag) times the span; rods keep
-        // each link at its share of that length.
-        const Vec2 span = r.to - r.from;
-        const double spanLength = length(span);
-        const double depth = spanLength * std::sqrt(3.0 * r.sag / 8.0);
-        const double link = (1.0 + r.sag) * spanLength / r.segments;
-        ParticleId prev = kNoParticle;
-        for (int i = 0; i <= r.segments; ++i) {
-            const double s = static_cast<double>(i) / r.segments;
-            ParticleDef pd;
-            pd.position = r.from + span * s + Vec2{0.0, -4.0 * depth * s * (1.0 - s)};
-            const bool pinned = (i == 0 && r.pinFrom) || (i == r.segments && r.pinTo);
-            pd.mass = pinned ? 0.0 : r.massPerSegment;
-            pd.radius = std::min(0.15, 0.3 * link);
-            pd.material = material::kWooden;
-            const ParticleId id = world_.particles.add(pd);
-            if (prev != kNoParticle) {
-                DistanceConstraint c;
-                c.a = id;
-                c.b = prev;
-                c.length = link;
-                world_.constraints.push_back(c);
-            }
-            prev = id;
-        }
-    }
-    for (const Blob& b : level_.blobs) {
-        const double m = b.mass / (b.points + 1);
-        ParticleDef pd;
-        pd.position = b.center;
-        pd.mass = m;
-        pd.radius = 0.25 * b.radius;
-        pd.material = material::kTennis;
-        const ParticleId center = world_.particles.add(pd);
-        std::vector<ParticleId> ring;
-        for (int i = 0; i < b.points; ++i) {
-            const double a = 2.0 * std::numbers::pi * i / b.points;
-            pd.position = b.center + Vec2{std::cos(a), std::sin(a)} * b.radius;
-            pd.radius = std::min(0.2, std::numbers::pi * b.radius / b.points);
-            ring.push_back(world_.particles.add(pd));
-        }
-        auto spring = [&](ParticleId x, ParticleId y) {
-            Spring s;
-            s.a = x;
-            s.b = y;
-            s.restLength = length(world_.particles.position(x) - world_.particles.position(y));
-            s.stiffness = b.stiffness;
-            s.damping = 0.05 * std::sqrt(b.stiffness * m);
-            world_.springs.push_back(s);
-        };
-        for (int i = 0; i < b.points; ++i) {
-            spring(ring[static_cast<std::size_t>(i)], ring[static_cast<std::size_t>((i + 1) % b.points)]);
-            spring(ring[static_cast<std::size_t>(i)], center);
-        }
-        blobs_.push_back({b, center, ring, false});
-    }
+    for (const Block& b : level_.blocks) addBlock(b);
+    for (const Rope& r : level_.ropes) addRope(r);
+    for (const Blob& b : level_.blobs) addBlob(b);
     for (const Cannon& c : level_.cannons) {
         CannonState s;
         s.def = c;
@@ -194,6 +133,78 @@ void Match::buildWorld() {
         cannons_.push_back(s);
     }
     for (const Target& t : level_.targets) targets_.push_back({t, t.position, false});
+}
+
+BodyId Match::addBlock(const Block& b) {
+    BodyDef bd;
+    bd.position = b.position;
+    bd.angle = b.angleDeg * kDegToRad;
+    const BodyId id = rigid_->createBox(bd, b.size * 0.5, blockMaterial(b));
+    blocks_.push_back({b, id, false});
+    return id;
+}
+
+void Match::addRope(const Rope& r) {
+    // Points on a parabola whose arc is about (1 + sag) times the span; rods keep
+    // each link at its share of that length.
+    const Vec2 span = r.to - r.from;
+    const double spanLength = length(span);
+    const double depth = spanLength * std::sqrt(3.0 * r.sag / 8.0);
+    const double link = (1.0 + r.sag) * spanLength / r.segments;
+    ParticleId prev = kNoParticle;
+    for (int i = 0; i <= r.segments; ++i) {
+        const double s = static_cast<double>(i) / r.segments;
+        ParticleDef pd;
+        pd.position = r.from + span * s + Vec2{0.0, -4.0 * depth * s * (1.0 - s)};
+        // An end tied to a block hangs on it (a joint), else it may be pinned.
+        const int tied = i == 0 ? r.fromBlock : i == r.segments ? r.toBlock : -1;
+        const bool pinned = tied < 0 && ((i == 0 && r.pinFrom) || (i == r.segments && r.pinTo));
+        pd.mass = pinned ? 0.0 : r.massPerSegment;
+        pd.radius = std::min(0.15, 0.3 * link);
+        pd.material = material::kWooden;
+        const ParticleId id = world_.particles.add(pd);
+        if (tied >= 0)
+            coupling_.attach(id, blocks_[static_cast<std::size_t>(tied)].body, pd.position, *rigid_);
+        if (prev != kNoParticle) {
+            DistanceConstraint c;
+            c.a = id;
+            c.b = prev;
+            c.length = link;
+            world_.constraints.push_back(c);
+        }
+        prev = id;
+    }
+}
+
+void Match::addBlob(const Blob& b) {
+    const double m = b.mass / (b.points + 1);
+    ParticleDef pd;
+    pd.position = b.center;
+    pd.mass = m;
+    pd.radius = 0.25 * b.radius;
+    pd.material = material::kTennis;
+    const ParticleId center = world_.particles.add(pd);
+    std::vector<ParticleId> ring;
+    for (int i = 0; i < b.points; ++i) {
+        const double a = 2.0 * std::numbers::pi * i / b.points;
+        pd.position = b.center + Vec2{std::cos(a), std::sin(a)} * b.radius;
+        pd.radius = std::min(0.2, std::numbers::pi * b.radius / b.points);
+        ring.push_back(world_.particles.add(pd));
+    }
+    auto spring = [&](ParticleId x, ParticleId y) {
+        Spring s;
+        s.a = x;
+        s.b = y;
+        s.restLength = length(world_.particles.position(x) - world_.particles.position(y));
+        s.stiffness = b.stiffness;
+        s.damping = 0.05 * std::sqrt(b.stiffness * m);
+        world_.springs.push_back(s);
+    };
+    for (int i = 0; i < b.points; ++i) {
+        spring(ring[static_cast<std::size_t>(i)], ring[static_cast<std::size_t>((i + 1) % b.points)]);
+        spring(ring[static_cast<std::size_t>(i)], center);
+    }
+    blobs_.push_back({b, center, ring, false});
 }
 
 void Match::emit(EventKind kind, int player, Vec2 where, double value, std::string text) {
@@ -253,7 +264,7 @@ std::string Match::apply(const Command& cmd) {
     case CommandKind::Fire:
         if (over_) return refuse("the match is over");
         if (shell_ != kNoParticle) return refuse("a shell is still in flight");
-        if (c.shotsLeft <= 0) return refuse("no shots left");
+        if (c.shotsLeft <= 0 && !sandbox()) return refuse("no shots left");
         fire();
         return "";
     case CommandKind::EndTurn:
@@ -271,6 +282,33 @@ std::string Match::apply(const Command& cmd) {
         emit(EventKind::SettingChanged, current_, {}, 0.0, cmd.text + " = " + describe(cmd.value));
         return "";
     }
+    case CommandKind::Sandbox:
+        if (sandbox()) return refuse("the level is already a sandbox");
+        level_.mode = Mode::Sandbox;
+        over_ = false;
+        emit(EventKind::SettingChanged, current_, {}, 0.0, "mode = sandbox");
+        return "";
+    case CommandKind::Spawn:
+    case CommandKind::Grab:
+    case CommandKind::Drag:
+    case CommandKind::Release: {
+        if (!sandbox())
+            return refuse("only in the sandbox (open the level as a sandbox, or send \"sandbox\" first)");
+        std::string why;
+        switch (cmd.kind) {
+        case CommandKind::Spawn: why = spawn(cmd); break;
+        case CommandKind::Grab: why = grabAt(cmd.at); break;
+        case CommandKind::Drag:
+            if (grab_.kind == GrabState::Kind::None) why = "nothing is grabbed";
+            else dragTo(cmd.at);
+            break;
+        default:
+            if (grab_.kind == GrabState::Kind::None) why = "nothing is grabbed";
+            else release();
+            break;
+        }
+        return why.empty() ? why : refuse(why);
+    }
     }
     return refuse("unknown command");
 }
@@ -285,7 +323,7 @@ void Match::fire() {
     shell_ = world_.particles.add(pd);
     shellFiredTick_ = tick();
     closestMiss_ = INFINITY;
-    --c.shotsLeft;
+    if (!sandbox()) --c.shotsLeft;
     ++shotsFired_;
     emit(EventKind::Fired, current_, pd.position, c.speedMps, shellAmmo_.preset.name);
 }
@@ -419,6 +457,7 @@ void Match::updateTargets() {
 }
 
 void Match::step() {
+    coupling_.prepare(world_, *rigid_);
     world_.step();
     // The guard: nothing non-finite or runaway survives the tick, and the player is told
     // which setting caused it.
@@ -430,7 +469,8 @@ void Match::step() {
             return;
         }
     }
-    coupling_.exchange(world_.particles, world_.materials, *rigid_);
+    coupling_.exchange(world_, *rigid_);
+    pullGrabbed();
     rigid_->step(world_.def().tickSeconds);
     updateTargets();
 

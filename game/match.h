@@ -10,6 +10,7 @@
 //   commands   apply(): aim, power, select, fire, end_turn, set
 //   tick       step(): particles, coupling, rigid bodies, targets, shell, turn
 //   state      cannons, targets, wind, score, stars, events, hash
+//   sandbox    sandbox(), spawn, grab, drag, release (match_sandbox.cpp)
 #pragma once
 
 #include "game/ammo.h"
@@ -88,6 +89,17 @@ struct BlobState {
     bool toppled = false;
 };
 
+/// What the sandbox's hand holds: a block (pulled by a critically damped spring force
+/// toward the pointer) or a particle (on a spring to the pointer).
+struct GrabState {
+    enum class Kind { None, Particle, Body } kind = Kind::None;
+    phys::ParticleId particle = phys::kNoParticle;
+    phys::BodyId body;
+    phys::Vec2 local;  ///< the grabbed point in the body's frame
+    phys::Vec2 target; ///< where the hand is, m
+    std::size_t spring = 0; ///< index of the hand's spring in world().springs (particles)
+};
+
 /// Hit points of a duel cannon, and how close a shell must pass to hit it (m).
 inline constexpr int kCannonHitPoints = 3;
 inline constexpr double kCannonRadius = 1.5;
@@ -152,7 +164,24 @@ class Match {
     /// The ammunition selected on the current cannon.
     Ammo selectedAmmo() const;
 
+    // --- sandbox --------------------------------------------------------------------
+    /// True when the level is a sandbox, or a `sandbox` command made it one: no shot
+    /// budget, no score, and spawn, grab, drag and release are allowed.
+    bool sandbox() const { return level_.mode == Mode::Sandbox; }
+    const GrabState& grab() const { return grab_; }
+
   private:
+    phys::BodyId addBlock(const Block& b);
+    void addRope(const Rope& r);
+    void addBlob(const Blob& b);
+    std::string spawn(const Command& cmd);
+    void addCloth(phys::Vec2 topLeft, double size);
+    std::string grabAt(phys::Vec2 at);
+    void dragTo(phys::Vec2 at);
+    void release();
+    /// Each tick: the hand's force on a grabbed block.
+    void pullGrabbed();
+
     void buildWorld();
     void rebuildStaticShapes();
     void fire();
@@ -188,6 +217,7 @@ class Match {
     std::uint64_t shellFiredTick_ = 0;
     double closestMiss_ = 0.0;
     Ammo shellAmmo_;
+    GrabState grab_;
 };
 
 /// Applies every command whose tick is the match's current tick, then steps; repeats

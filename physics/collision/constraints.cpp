@@ -18,7 +18,12 @@ double wOf(const ParticleSet& s, ParticleId id) {
 // dp = W J^T x over the active constraints.
 void applyJt(const std::vector<DistanceConstraint>& cs, const ParticleSet& s, ConstraintScratch& w,
              const std::vector<double>& x) {
-    std::fill(w.dp.begin(), w.dp.end(), Vec2{});
+    // Only the constraints' ends are ever read: clear those, not every slot (a rope in a
+    // world of thousands of particles costs its own size).
+    for (const auto& c : cs) {
+        w.dp[c.a] = Vec2{};
+        if (c.b != kNoParticle) w.dp[c.b] = Vec2{};
+    }
     for (std::size_t k = 0; k < cs.size(); ++k) {
         if (!w.active[k]) continue;
         const auto& c = cs[k];
@@ -80,6 +85,19 @@ void solve(const std::vector<DistanceConstraint>& cs, const ParticleSet& s, Cons
     applyJt(cs, s, w, w.x);
 }
 
+// x += dp at every constraint end, once each (an end shared by two links is consumed
+// by the first: its dp is zeroed after use).
+void applyToEnds(const std::vector<DistanceConstraint>& cs, ConstraintScratch& w,
+                 std::vector<double>& x, std::vector<double>& y) {
+    for (const auto& c : cs)
+        for (const ParticleId id : {c.a, c.b}) {
+            if (id == kNoParticle) continue;
+            x[id] += w.dp[id].x;
+            y[id] += w.dp[id].y;
+            w.dp[id] = Vec2{};
+        }
+}
+
 } // namespace
 
 std::string validate(const DistanceConstraint& c, const ParticleSet& set) {
@@ -123,10 +141,7 @@ double solveConstraints(const std::vector<DistanceConstraint>& cs, ParticleSet& 
         }
         if (worst <= tolerance) break;
         solve(cs, set, w);
-        for (std::size_t i = 0; i < set.slots(); ++i) {
-            set.px[i] += w.dp[i].x;
-            set.py[i] += w.dp[i].y;
-        }
+        applyToEnds(cs, w, set.px, set.py);
     }
 
     // Velocity: no relative velocity along a rod, none stretching a taut cable.
@@ -143,10 +158,7 @@ double solveConstraints(const std::vector<DistanceConstraint>& cs, ParticleSet& 
         w.rhs[k] = -u;
     }
     solve(cs, set, w);
-    for (std::size_t i = 0; i < set.slots(); ++i) {
-        set.vx[i] += w.dp[i].x;
-        set.vy[i] += w.dp[i].y;
-    }
+    applyToEnds(cs, w, set.vx, set.vy);
 
     // Anything a constraint moved forgets its multi-step integrator history.
     double worst = 0.0;

@@ -809,6 +809,22 @@ double RigidWorld::inverseEffectiveMass(BodyId id, Vec2 point, Vec2 normal) cons
     return 1.0 / s.mass + rn * rn * invI;
 }
 
+Vec2 RigidWorld::gravityKick(BodyId id, double dt) const {
+    const b2Body* body = lookup(id);
+    if (!body || body->GetType() != b2_dynamicBody) return {};
+    return def_.gravity * (static_cast<double>(body->GetGravityScale()) * dt);
+}
+
+Vec2 RigidWorld::worldPoint(BodyId id, Vec2 local) const {
+    const b2Body* body = lookup(id);
+    return body ? fromB2(body->GetWorldPoint(toB2(local))) : local;
+}
+
+Vec2 RigidWorld::localPoint(BodyId id, Vec2 world) const {
+    const b2Body* body = lookup(id);
+    return body ? fromB2(body->GetLocalPoint(toB2(world))) : world;
+}
+
 int RigidWorld::applyBlast(const Blast& blast) {
     quiet_ = false; // may create, move or wake something: step Box2D again
     if (!(blast.radius > 0.0)) return 0;

@@ -177,6 +177,13 @@ class RigidWorld {
     /// 1/m + (r x n)^2 / I for an impulse along unit n at a world point: the body's
     /// share of the effective mass of a contact. 0 for static/kinematic bodies.
     double inverseEffectiveMass(BodyId body, Vec2 point, Vec2 normal) const;
+    /// The velocity gravity gives the body over `dt`: g x gravity scale x dt (0 unless
+    /// dynamic).
+    Vec2 gravityKick(BodyId body, double dt) const;
+    /// A point fixed to the body: body coordinates <-> world coordinates, m. Stale ids
+    /// map a point to itself.
+    Vec2 worldPoint(BodyId body, Vec2 local) const;
+    Vec2 localPoint(BodyId body, Vec2 world) const;
     /// Radial impulse J(d) = J0 (1 - d/R) (forces.h Blast) on every dynamic body whose
     /// centre of mass is within R, applied at the centre of mass (like the particle
     /// blast: a push, no spin; straight up at d = 0). Returns the bodies pushed.

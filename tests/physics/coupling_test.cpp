@@ -53,7 +53,7 @@ struct Scene {
     // One game tick: particles, exchange, bodies.
     int tick() {
         particles.step();
-        const auto stats = coupling.exchange(particles.particles, particles.materials, rigid);
+        const auto stats = coupling.exchange(particles, rigid);
         rigid.step(particles.def().tickSeconds);
         return stats.impulses;
     }
