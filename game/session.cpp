@@ -76,4 +76,16 @@ void Session::rewindTo(std::uint64_t tick) {
     cpu_ = ComputerPlayer(options_.difficulty, options_.cpuSeed + tick);
 }
 
+void Session::continueAs(const SessionOptions& options) {
+    const std::uint64_t every = options_.checkpointEvery;
+    options_ = options;
+    options_.checkpointEvery = every;
+    replay_.difficulty = difficultyName(options.difficulty);
+    replay_.cpuSeed = options.cpuSeed;
+    // As after a rewind: the computer's generator is seeded from the branch point, so a
+    // branch does not replay the original's aim errors.
+    cpu_ = ComputerPlayer(options.difficulty, options.cpuSeed + match_->tick());
+    cpuFireTick_.reset();
+}
+
 } // namespace game

@@ -52,6 +52,10 @@ class Session {
     /// be copied, but a deterministic re-run can). Commands after `tick` are dropped, so
     /// play continues from there as a new branch.
     void rewindTo(std::uint64_t tick);
+    /// Plays on from the current tick under other options: a replay taken over (the
+    /// computer plays its cannons again unless `hotseat`; the branch is saved to
+    /// `recordFile`). The recording so far is kept, and so is its checkpoint spacing.
+    void continueAs(const SessionOptions& options);
 
   private:
     std::unique_ptr<Match> match_;

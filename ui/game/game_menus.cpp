@@ -2,11 +2,15 @@
 
 #include "game/files/json_reader.h"
 #include "game/level.h"
+#include "game/replay.h"
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <cfloat>
+#include <chrono>
+#include <cmath>
+#include <ctime>
 #include <filesystem>
 
 namespace ui {
@@ -45,6 +49,18 @@ std::string starsText(int stars) {
     return s;
 }
 
+/// A full-screen menu: a fixed window in the middle with a gold heading and a dim line.
+void beginMenuWindow(const char* title, const char* heading, const char* subtitle) {
+    centreNextWindow(760.0f);
+    ImGui::Begin(title, nullptr,
+                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                     ImGuiWindowFlags_NoSavedSettings);
+    ImGui::TextColored(kGoldText, "%s", heading);
+    ImGui::SameLine();
+    ImGui::TextColored(kDimText, "%s", subtitle);
+    ImGui::Separator();
+}
+
 } // namespace
 
 std::vector<LevelEntry> listLevels(const std::string& folder) {
@@ -69,16 +85,49 @@ std::vector<LevelEntry> listLevels(const std::string& folder) {
     return out;
 }
 
+std::vector<ReplayEntry> listReplays(const std::string& folder) {
+    namespace fs = std::filesystem;
+    std::vector<std::pair<fs::file_time_type, ReplayEntry>> found;
+    std::error_code ec;
+    for (const auto& f : fs::directory_iterator(folder, ec)) {
+        if (f.path().extension() != ".json") continue;
+        ReplayEntry e;
+        e.file = f.path().string();
+        const fs::file_time_type when = fs::last_write_time(f.path(), ec);
+        const std::time_t t = std::chrono::system_clock::to_time_t(
+            std::chrono::time_point_cast<std::chrono::system_clock::duration>(
+                std::chrono::file_clock::to_sys(when)));
+        char stamp[32] = "";
+        if (const std::tm* local = std::localtime(&t))
+            std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M", local);
+        e.modified = stamp;
+        try {
+            const game::Replay r = game::loadReplay(e.file);
+            const game::Level level = game::levelForReplay(e.file, r);
+            e.level = level.name;
+            // At the default tick (a `set tick_hz` command may change it on the way).
+            e.seconds = static_cast<double>(r.ticks) * phys::WorldDef{}.tickSeconds;
+            e.shots = static_cast<int>(
+                std::count_if(r.commands.begin(), r.commands.end(), [](const game::Command& c) {
+                    return c.kind == game::CommandKind::Fire;
+                }));
+        } catch (const std::exception& err) {
+            e.level = "?";
+            e.error = err.what();
+        }
+        found.emplace_back(when, std::move(e));
+    }
+    std::sort(found.begin(), found.end(),
+              [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<ReplayEntry> out;
+    for (auto& [when, e] : found)
+        out.push_back(std::move(e));
+    return out;
+}
+
 MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettings& settings) {
     MenuChoice choice;
-    centreNextWindow(760.0f);
-    ImGui::Begin("Choose a level", nullptr,
-                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                     ImGuiWindowFlags_NoSavedSettings);
-    ImGui::TextColored(kGoldText, "ARTILLERY");
-    ImGui::SameLine();
-    ImGui::TextColored(kDimText, "a physics playground: every level shows one idea");
-    ImGui::Separator();
+    beginMenuWindow("Choose a level", "ARTILLERY", "a physics playground: every level shows one idea");
     if (levels.empty()) ImGui::TextWrapped("No level files found (looked for levels/*.json).");
     if (ImGui::BeginTable("levels", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH)) {
         ImGui::TableSetupColumn("level", ImGuiTableColumnFlags_WidthFixed, 190.0f);
@@ -120,6 +169,67 @@ MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettin
     ImGui::PopItemWidth();
     ImGui::SameLine();
     choice.settingsChanged |= ImGui::Checkbox("hotseat (duel against a person)", &settings.hotseat);
+    ImGui::SameLine(ImGui::GetWindowWidth() - 210);
+    if (ImGui::Button("Replays")) choice.replays = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Watch the games you played, and take one over from any moment");
+    ImGui::SameLine();
+    if (ImGui::Button("Help (F1)")) choice.help = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Quit")) choice.quit = true;
+    ImGui::End();
+    return choice;
+}
+
+MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::string& folder) {
+    MenuChoice choice;
+    beginMenuWindow("Replays", "REPLAYS", "every game is recorded; watch one, scrub it, take it over");
+    if (folder.empty())
+        ImGui::TextWrapped(
+            "This run keeps no replays (check runs and headless pictures leave nothing "
+            "behind). Watch a file with: artillery play --replay FILE");
+    else if (replays.empty())
+        ImGui::TextWrapped("No replays yet in %s: play a level and its game is recorded here.",
+                           folder.c_str());
+    if (!replays.empty() &&
+        ImGui::BeginTable(
+            "replays", 5,
+            ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_ScrollY,
+            ImVec2(0, std::min(420.0f, 30.0f + 26.0f * static_cast<float>(replays.size()))))) {
+        ImGui::TableSetupColumn("replay", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableSetupColumn("level", ImGuiTableColumnFlags_WidthFixed, 150.0f);
+        ImGui::TableSetupColumn("length", ImGuiTableColumnFlags_WidthFixed, 55.0f);
+        ImGui::TableSetupColumn("shots", ImGuiTableColumnFlags_WidthFixed, 40.0f);
+        ImGui::TableSetupColumn("recorded", ImGuiTableColumnFlags_WidthFixed, 140.0f);
+        ImGui::TableHeadersRow();
+        for (const ReplayEntry& e : replays) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::PushID(e.file.c_str());
+            ImGui::BeginDisabled(!e.error.empty());
+            const std::string name = std::filesystem::path(e.file).filename().string();
+            if (ImGui::Selectable(name.c_str(), false, ImGuiSelectableFlags_SpanAllColumns))
+                choice.openReplay = e.file;
+            ImGui::EndDisabled();
+            if (!e.error.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+                ImGui::SetTooltip("%s", e.error.c_str());
+            ImGui::PopID();
+            ImGui::TableNextColumn();
+            if (e.error.empty())
+                ImGui::TextUnformatted(e.level.c_str());
+            else
+                ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "cannot be watched");
+            ImGui::TableNextColumn();
+            ImGui::TextColored(kDimText, "%.0f s", e.seconds);
+            ImGui::TableNextColumn();
+            ImGui::TextColored(kDimText, "%d", e.shots);
+            ImGui::TableNextColumn();
+            ImGui::TextColored(kDimText, "%s", e.modified.c_str());
+        }
+        ImGui::EndTable();
+    }
+    ImGui::Separator();
+    if (ImGui::Button("Back to the levels (Esc)")) choice.levelSelect = true;
     ImGui::SameLine(ImGui::GetWindowWidth() - 120);
     if (ImGui::Button("Help (F1)")) choice.help = true;
     ImGui::SameLine();
@@ -175,12 +285,18 @@ void helpOverlay(bool& open) {
         {"F2", "physics panel"},
         {". (period)", "one tick (pauses)"},
         {"[ / ]", "slower / faster (x1/16 .. x4); \\ back to x1"},
-        {"Backspace", "pause / resume the simulation"},
+        {"K", "pause / resume the simulation"},
+        {"Backspace (hold)",
+         "rewind 1 s and play on from there (a new branch; the Match panel's slider goes further)"},
+        {"replay: Space, . ,", "play / pause, one tick forward, one back"},
+        {"replay: arrows, PgUp/PgDn", "1 s back / forward (Shift: 5 s), previous / next shot"},
+        {"replay: [ ] \\, R, T", "speed x1/8 .. x16, x1; from the start; take over"},
         {"R", "restart the level"},
         {"L", "level select"},
         {"wheel, right drag, Home", "zoom, pan, re-frame"},
         {"F12", "screenshot (PNG in the current folder)"},
-        {"controller", "left stick aims, triggers set power, A fires, B ends the turn, Start pauses"},
+        {"controller",
+         "left stick aims, triggers set power, A fires, B ends the turn, Start pauses"},
     };
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 190.0f);
@@ -200,7 +316,8 @@ void helpOverlay(bool& open) {
 }
 
 MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettings& settings,
-                              game::Difficulty inUse, bool hotseatInUse) {
+                              game::Difficulty inUse, bool hotseatInUse, RewindControl& rewind,
+                              const std::string& branch) {
     MatchPanelRequests req;
     // On the band of soil at the bottom, beside the aim panel: cannons, targets and
     // castles stand above it, and the arcs fly higher still.
@@ -236,6 +353,28 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
     if (m.level().mode == game::Mode::Duel)
         ImGui::TextColored(kDimText, "%s", hotseatInUse ? "hotseat: two players" :
                                                (std::string("computer: ") + game::difficultyName(inUse)).c_str());
+    // Rewind: back to any earlier moment; play goes on from there as a new branch (the
+    // later commands are dropped). Applied when the slider is let go.
+    const double dt = m.world().def().tickSeconds;
+    const double now = static_cast<double>(m.tick()) * dt;
+    if (!rewind.dragging) rewind.seconds = now;
+    ImGui::PushItemWidth(150);
+    float seconds = static_cast<float>(rewind.seconds);
+    ImGui::SliderFloat("rewind", &seconds, 0.0f, static_cast<float>(now), "back to %.1f s",
+                       ImGuiSliderFlags_NoInput);
+    rewind.dragging = ImGui::IsItemActive();
+    rewind.seconds = std::min(static_cast<double>(seconds), now);
+    if (ImGui::IsItemDeactivatedAfterEdit() && rewind.seconds < now)
+        req.rewindTo = static_cast<std::uint64_t>(std::llround(rewind.seconds / dt));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Drag back and let go: the match returns to that moment and you play on "
+                          "from there (a new branch). Backspace: 1 s back.");
+    ImGui::PopItemWidth();
+    if (!branch.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kGoldText);
+        ImGui::TextWrapped("%s", branch.c_str());
+        ImGui::PopStyleColor();
+    }
     ImGui::End();
     return req;
 }

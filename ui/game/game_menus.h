@@ -1,12 +1,14 @@
-// The game's ImGui screens and overlays: level select, pause menu, help, and the side
-// panel with the match controls. Each is a function that draws one frame of it and
-// reports what the player chose (STYLE.md, "Dear ImGui"); the game screen acts on it.
+// The game's ImGui screens and overlays: level select, the recorded replays, pause menu,
+// help, and the side panel with the match controls (rewind included). Each is a function that draws
+// one frame of it and reports what the player chose (STYLE.md, "Dear ImGui"); the game screen acts
+// on it.
 #pragma once
 
 #include "game/match.h"
 #include "ui/game/player_settings.h"
 #include "ui/play/physics_panel.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,11 +27,27 @@ struct LevelEntry {
 /// Every *.json in `folder`, sorted by file name, each loaded to read its name and lesson.
 std::vector<LevelEntry> listLevels(const std::string& folder);
 
-enum class Overlay { None, LevelSelect, Pause };
+/// A replay the game recorded, as the Replays screen lists it.
+struct ReplayEntry {
+    std::string file;
+    std::string level;    ///< the level's name
+    double seconds = 0.0; ///< length of the recording
+    int shots = 0;
+    std::string modified; ///< when it was last written, "YYYY-MM-DD HH:MM"
+    std::string error;    ///< why it cannot be watched ("" when it can)
+};
+
+/// Every *.json in `folder` (the replays the game records), newest first, each loaded
+/// with its level to check it can be watched.
+std::vector<ReplayEntry> listReplays(const std::string& folder);
+
+enum class Overlay { None, LevelSelect, Replays, Pause };
 
 /// What the player picked in a menu this frame.
 struct MenuChoice {
     std::optional<std::string> openLevel; ///< a level file to play
+    std::optional<std::string> openReplay; ///< a replay file to watch
+    bool replays = false;                  ///< show the recorded replays
     bool resume = false;
     bool restart = false;
     bool levelSelect = false;
@@ -39,6 +57,8 @@ struct MenuChoice {
 };
 
 MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettings& settings);
+/// The replays in `folder` ("" when this run keeps none: check runs, headless).
+MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::string& folder);
 MenuChoice pauseMenu(PlayerSettings& settings);
 /// The keyboard, mouse and controller shortcuts. `open` is cleared by its close button.
 void helpOverlay(bool& open);
@@ -49,12 +69,21 @@ struct MatchPanelRequests {
     bool endTurn = false;
     std::optional<std::size_t> projectile;
     bool settingsChanged = false;
+    std::optional<std::uint64_t> rewindTo; ///< go back to this tick and play on (a branch)
+};
+
+/// The match panel's rewind slider: the moment it points at while it is dragged.
+struct RewindControl {
+    double seconds = 0.0;
+    bool dragging = false;
 };
 
 /// The left-hand match panel: projectile combo, Fire and End turn buttons, the preview
-/// and hint toggles, the difficulty in use. `humanTurn` greys out what only a person
-/// on turn may do.
+/// and hint toggles, the difficulty in use, and the rewind slider over [0, now] (applied
+/// when released). `humanTurn` greys out what only a person on turn may do; `branch`
+/// says where this game branched from, if it did.
 MatchPanelRequests matchPanel(const game::Match& match, bool humanTurn, PlayerSettings& settings,
-                              game::Difficulty inUse, bool hotseatInUse);
+                              game::Difficulty inUse, bool hotseatInUse, RewindControl& rewind,
+                              const std::string& branch);
 
 } // namespace ui

@@ -2,6 +2,7 @@
 //   set-up       GameScreen(), openLevel, restart, persistence
 //   commands     submit: the only way the window changes the match
 //   time         simulate: fixed ticks from the clock, held keys and the controller
+//   replays      openReplay, takeOverReplay, rewindLive: watching, branching, rewinding
 //   drawing      frame, drawPlaying, drawPanels
 //   events       handleEvent: mouse aim, keys, controller buttons
 #include "ui/platform/gl_setup.h"
@@ -68,7 +69,9 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
         for (int i = 0; i < SDL_NumJoysticks() && !pad_; ++i)
             if (SDL_IsGameController(i)) pad_ = SDL_GameControllerOpen(i);
     }
-    if (def_.levelFile.empty()) {
+    if (!def_.replayFile.empty()) {
+        openReplay(def_.replayFile); // throws with the loader's message
+    } else if (def_.levelFile.empty()) {
         overlay_ = Overlay::LevelSelect;
         for (const LevelEntry& e : levels_) {
             if (!e.error.empty()) continue;
@@ -76,8 +79,7 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
             camera_ = levelCamera(*backdrop_, context.width(), context.height());
             break;
         }
-    }
-    else
+    } else
         openLevel(def_.levelFile); // throws with the loader's message
 }
 
@@ -102,31 +104,64 @@ void GameScreen::persist() {
 void GameScreen::openLevel(const std::string& file) {
     level_ = game::loadLevel(file);
     backdrop_.reset();
+    viewer_.reset();
     restart();
     overlay_ = Overlay::None;
 }
 
-void GameScreen::restart() {
+std::string GameScreen::replaysFolder() const {
+    if (def_.settingsFolder.empty()) return "";
+    return (std::filesystem::path(def_.settingsFolder) / "replays").string();
+}
+
+std::string GameScreen::recordFileFor(const std::string& name) const {
+    const std::string folder = replaysFolder();
+    if (folder.empty()) return "";
+    std::filesystem::create_directories(folder);
+    return (std::filesystem::path(folder) / name).string();
+}
+
+bool GameScreen::hotseatInUse() const {
+    return settings_.hotseat && level_.mode == game::Mode::Duel;
+}
+
+game::SessionOptions GameScreen::liveOptions(const std::string& recordFile) const {
     game::SessionOptions o;
     o.difficulty = settings_.difficulty;
     o.cpuSeed = level_.seed;
     // Every match is recorded (issue 6); the session saves at each turn's end.
-    if (!def_.settingsFolder.empty())
-        o.recordFile = (std::filesystem::path(def_.settingsFolder) / "replays" /
-                        (std::filesystem::path(level_.file).stem().string() + "-last.json"))
-                           .string();
-    if (!o.recordFile.empty())
-        std::filesystem::create_directories(std::filesystem::path(o.recordFile).parent_path());
-    const bool hotseat = settings_.hotseat && level_.mode == game::Mode::Duel;
-    session_ = std::make_unique<game::Session>(hotseat ? withHotseat(level_) : level_, o);
+    o.recordFile = recordFile;
+    return o;
+}
+
+void GameScreen::restart() {
+    if (viewer_) {
+        viewer_->requestSeek(0); // a replay restarts from its beginning
+        return;
+    }
+    const std::string stem = std::filesystem::path(level_.file).stem().string();
+    playSession(std::make_unique<game::Session>(hotseatInUse() ? withHotseat(level_) : level_,
+                                                liveOptions(recordFileFor(stem + "-last.json"))));
+    matchView_.reset();
+    cameraMoved_ = false;
+    camera_ = levelCamera(session_->match(), context_.width(), context_.height());
+}
+
+void GameScreen::playSession(std::unique_ptr<game::Session> session) {
+    session_ = std::move(session);
+    viewer_.reset();
     phys::ClockDef cd;
     cd.tickSeconds = session_->match().world().def().tickSeconds;
     clock_ = phys::FixedClock(cd);
-    matchView_.reset();
     aim_ = AimInput();
+    rewind_ = RewindControl();
+    branchNote_.clear();
     resultRecorded_ = newBest_ = false;
-    cameraMoved_ = false;
-    camera_ = levelCamera(session_->match(), context_.width(), context_.height());
+}
+
+const game::Match* GameScreen::shownMatch() const {
+    if (viewer_) return &viewer_->match();
+    return session_ ? &session_->match() : nullptr;
 }
 
 // ---- commands -------------------------------------------------------------------------
@@ -218,6 +253,7 @@ void GameScreen::simulate(double wallSeconds) {
 }
 
 void GameScreen::warmUp(double seconds) {
+    if (viewer_) viewer_->warmUp(seconds, matchView_);
     if (!session_) return;
     const auto ticks = static_cast<long long>(seconds / session_->match().world().def().tickSeconds);
     for (long long i = 0; i < ticks; ++i) {
@@ -226,42 +262,132 @@ void GameScreen::warmUp(double seconds) {
     }
 }
 
+// ---- replays ---------------------------------------------------------------------------
+void GameScreen::openReplay(const std::string& file) {
+    game::Replay replay = game::loadReplay(file);
+    level_ = game::levelForReplay(file, replay);
+    // The same level the live game would use, so taking over plays as a new game would.
+    viewer_ = std::make_unique<ReplayViewer>(file, hotseatInUse() ? withHotseat(level_) : level_,
+                                             std::move(replay));
+    session_.reset();
+    backdrop_.reset();
+    branchNote_.clear();
+    aim_ = AimInput();
+    matchView_.reset();
+    cameraMoved_ = false;
+    camera_ = levelCamera(viewer_->match(), context_.width(), context_.height());
+    overlay_ = Overlay::None;
+}
+
+void GameScreen::showReplays() {
+    replays_ = listReplays(replaysFolder());
+    overlay_ = Overlay::Replays;
+}
+
+void GameScreen::takeOverReplay() {
+    const double dt = viewer_->match().world().def().tickSeconds;
+    const std::uint64_t at = viewer_->player().tick();
+    const std::string from = std::filesystem::path(viewer_->file()).filename().string();
+    // A new file per branch: the replay watched stays as it was.
+    const std::string record = recordFileFor(std::filesystem::path(level_.file).stem().string() +
+                                             "-branch-" + std::to_string(at) + ".json");
+    playSession(std::make_unique<game::Session>(viewer_->takeOver(liveOptions(record))));
+    resultRecorded_ = session_->match().over(); // a finished game is not scored again
+    branchTick_ = at;
+    char note[256];
+    std::snprintf(note, sizeof note, "branch of %s from %.1f s, %s", from.c_str(),
+                  static_cast<double>(at) * dt,
+                  record.empty()
+                      ? "not recorded (check run)"
+                      : ("recording " + std::filesystem::path(record).filename().string()).c_str());
+    branchNote_ = note;
+    if (!record.empty()) {
+        try {
+            session_->save(record);
+        } catch (const std::exception& e) {
+            stats_.status = std::string("branch not saved: ") + e.what();
+        }
+    }
+}
+
+void GameScreen::rewindLive(std::uint64_t tick) {
+    const game::Match& before = session_->match();
+    if (tick >= before.tick()) return;
+    const double dt = before.world().def().tickSeconds;
+    session_->rewindTo(tick);
+    matchView_.reset();
+    matchView_.observe(session_->match());
+    aim_ = AimInput();
+    resultRecorded_ = session_->match().over();
+    newBest_ = false;
+    branchTick_ = tick;
+    char note[160];
+    std::snprintf(note, sizeof note, "rewound to %.1f s: playing on as a new branch",
+                  static_cast<double>(tick) * dt);
+    branchNote_ = note;
+}
+
 // ---- drawing --------------------------------------------------------------------------
 phys::Vec2 GameScreen::pivotPixels() const {
     return camera_.toPixel(session_->match().cannon().def.position);
 }
 
-void GameScreen::drawPlaying() {
-    const game::Match& m = session_->match();
-    MatchViewOptions o;
-    o.trajectoryPreview = settings_.trajectoryPreview && humanTurn();
-    o.solutionHint = settings_.solutionHint && humanTurn();
-    o.trails = view_.trails;
-    if (humanTurn() && aim_.editing()) o.pending = aim_.pending();
-    o.charge = aim_.chargeFraction();
-    for (const game::CannonState& c : m.cannons()) o.playerNames.push_back(defaultPlayerName(c.def.player));
+std::string GameScreen::liveBanner(const game::Match& m) const {
     char banner[64] = "";
+    // A branch says so for its first seconds (simulated: it stays while paused).
+    const auto branchTicks = static_cast<std::uint64_t>(3.0 / m.world().def().tickSeconds);
     if (time_.paused)
         std::snprintf(banner, sizeof banner, "PAUSED  (. steps one tick)");
     else if (time_.timeScale != 1.0f)
         std::snprintf(banner, sizeof banner, "speed x%g", static_cast<double>(time_.timeScale));
+    else if (!branchNote_.empty() && m.tick() < branchTick_ + branchTicks)
+        std::snprintf(banner, sizeof banner, "BRANCH from %.1f s",
+                      static_cast<double>(branchTick_) * m.world().def().tickSeconds);
     else if (!m.over() && m.cannon().def.player == "cpu" && !m.shell())
         std::snprintf(banner, sizeof banner, "the computer is aiming...");
     else if (m.over() && newBest_)
         std::snprintf(banner, sizeof banner, "new best for this level!");
-    o.banner = banner;
+    return banner;
+}
+
+void GameScreen::drawPlaying() {
+    const game::Match& m = *shownMatch();
+    MatchViewOptions o;
+    o.trails = view_.trails;
+    for (const game::CannonState& c : m.cannons())
+        o.playerNames.push_back(defaultPlayerName(c.def.player));
+    if (viewer_) {
+        // A replay shows what was played: no aim being edited, no preview of one.
+        o.trajectoryPreview = false;
+        o.solutionHint = false;
+        o.banner = viewer_->banner();
+    } else {
+        o.trajectoryPreview = settings_.trajectoryPreview && humanTurn();
+        o.solutionHint = settings_.solutionHint && humanTurn();
+        if (humanTurn() && aim_.editing()) o.pending = aim_.pending();
+        o.charge = aim_.chargeFraction();
+        o.banner = liveBanner(m);
+    }
     drawMatchFrame(renderer_, matchView_, m, camera_, o);
 }
 
 void GameScreen::drawPanels() {
     MenuChoice choice;
     if (overlay_ == Overlay::LevelSelect) choice = levelSelectScreen(levels_, settings_);
+    if (overlay_ == Overlay::Replays) choice = replaysScreen(replays_, replaysFolder());
     if (overlay_ == Overlay::Pause) choice = pauseMenu(settings_);
     if (helpOpen_) helpOverlay(helpOpen_);
+    if (viewer_ && overlay_ == Overlay::None) {
+        const ReplayRequests req = viewer_->panel();
+        if (req.takeOver)
+            takeOverReplay();
+        else if (req.close)
+            showReplays();
+    }
     if (session_ && overlay_ == Overlay::None) {
         game::Match& m = session_->match();
         const MatchPanelRequests req = matchPanel(m, humanTurn(), settings_, settings_.difficulty,
-                                                  settings_.hotseat && level_.mode == game::Mode::Duel);
+                                                  hotseatInUse(), rewind_, branchNote_);
         if (req.projectile)
             if (auto c = AimInput::select(m.cannon(), *req.projectile)) submit(*c);
         if (req.fire && humanTurn()) submit(aim_.fire(m.cannon()));
@@ -280,10 +406,21 @@ void GameScreen::drawPanels() {
             if (scene.fire && humanTurn()) submit(aim_.fire(m.cannon()));
             if (scene.reset) restart();
         }
+        // Last: a rewind replaces the match `m` refers to.
+        if (req.rewindTo && session_) rewindLive(*req.rewindTo);
     }
     if (choice.openLevel) openLevel(*choice.openLevel);
+    if (choice.openReplay) {
+        try {
+            openReplay(*choice.openReplay);
+        } catch (const std::exception& e) {
+            stats_.status = e.what();
+            std::cerr << "artillery: " << e.what() << "\n";
+        }
+    }
+    if (choice.replays) showReplays();
     if (choice.resume) overlay_ = Overlay::None;
-    if (choice.restart && session_) {
+    if (choice.restart && (session_ || viewer_)) {
         restart();
         overlay_ = Overlay::None;
     }
@@ -294,21 +431,23 @@ void GameScreen::drawPanels() {
 }
 
 void GameScreen::frame(double wallSeconds) {
-    if (session_) {
+    if (viewer_) {
+        viewer_->advance(wallSeconds, overlay_ != Overlay::None || helpOpen_, matchView_);
+    } else if (session_) {
         pollHeldInput(wallSeconds);
         simulate(wallSeconds);
     }
     const int w = context_.width(), h = context_.height();
     if (w != camera_.width || h != camera_.height) {
-        if (cameraMoved_ || !session_)
+        if (cameraMoved_ || !shownMatch())
             camera_.width = w, camera_.height = h;
         else
-            camera_ = levelCamera(session_->match(), w, h);
+            camera_ = levelCamera(*shownMatch(), w, h);
         msaa_.resize(w, h, samples_);
     }
     imgui_.newFrame(wallSeconds);
     msaa_.bind(context_.framebuffer());
-    if (session_) {
+    if (shownMatch()) {
         drawPlaying();
     } else if (backdrop_) {
         // The select screen over the first level's landscape.
@@ -370,12 +509,24 @@ bool GameScreen::keyDown(const SDL_Event& e) {
             helpOpen_ = false;
         else if (aim_.charging())
             aim_.cancelCharge();
-        else if (overlay_ == Overlay::Pause || (overlay_ == Overlay::LevelSelect && session_))
+        else if (overlay_ == Overlay::Replays)
+            overlay_ = Overlay::LevelSelect;
+        else if (overlay_ == Overlay::Pause || (overlay_ == Overlay::LevelSelect && shownMatch()))
             overlay_ = Overlay::None;
         else if (overlay_ == Overlay::None)
             overlay_ = Overlay::Pause;
         else
             running_ = false; // Esc on the first level select screen quits
+        return true;
+    }
+    if (viewer_ && overlay_ == Overlay::None) return replayKey(e);
+    // Held Backspace keeps rewinding, a second at a time.
+    if (key == SDLK_BACKSPACE && session_ && overlay_ == Overlay::None) {
+        const std::uint64_t now = session_->match().tick();
+        const auto second =
+            static_cast<std::uint64_t>(1.0 / session_->match().world().def().tickSeconds);
+        aim_.cancelCharge();
+        rewindLive(now > second ? now - second : 0);
         return true;
     }
     if (!session_ || overlay_ != Overlay::None || e.key.repeat) return true;
@@ -412,7 +563,7 @@ bool GameScreen::keyDown(const SDL_Event& e) {
         time_.paused = true;
         time_.stepRequested = true;
         break;
-    case SDLK_BACKSPACE:
+    case SDLK_k:
         time_.paused = !time_.paused;
         break;
     case SDLK_LEFTBRACKET:
@@ -444,6 +595,41 @@ bool GameScreen::keyDown(const SDL_Event& e) {
     return true;
 }
 
+bool GameScreen::replayKey(const SDL_Event& e) {
+    bool handled = false;
+    const ReplayRequests req = viewer_->key(e.key.keysym, e.key.repeat != 0, handled);
+    if (req.takeOver) takeOverReplay();
+    if (handled || e.key.repeat) return true;
+    switch (e.key.keysym.sym) {
+    case SDLK_l:
+        overlay_ = Overlay::LevelSelect;
+        break;
+    case SDLK_HOME:
+        camera_ = levelCamera(viewer_->match(), context_.width(), context_.height());
+        cameraMoved_ = false;
+        break;
+    default:
+        break;
+    }
+    return true;
+}
+
+void GameScreen::cameraEvent(const SDL_Event& e) {
+    if (e.type == SDL_MOUSEWHEEL && e.wheel.y != 0) {
+        int mx = 0, my = 0;
+        SDL_GetMouseState(&mx, &my);
+        camera_.zoomAt(pointerPixels(mx, my), e.wheel.y > 0 ? 1.15 : 1.0 / 1.15);
+        cameraMoved_ = true;
+    } else if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button != SDL_BUTTON_LEFT) {
+        panning_ = true;
+    } else if (e.type == SDL_MOUSEBUTTONUP && e.button.button != SDL_BUTTON_LEFT) {
+        panning_ = false;
+    } else if (e.type == SDL_MOUSEMOTION && panning_) {
+        camera_.panPixels(pointerPixels(e.motion.xrel, e.motion.yrel));
+        cameraMoved_ = true;
+    }
+}
+
 bool GameScreen::handleEvent(const SDL_Event& e) {
     if (e.type == SDL_QUIT) return false;
     if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_CLOSE) return false;
@@ -457,6 +643,7 @@ bool GameScreen::handleEvent(const SDL_Event& e) {
     if (e.type == SDL_KEYDOWN && !imgui_.wantsKeyboard()) return keyDown(e) && running_;
     if (e.type == SDL_KEYUP && e.key.keysym.sym == SDLK_SPACE && session_ && aim_.charging())
         submit(aim_.releaseCharge(session_->match().cannon()));
+    if (viewer_ && !imgui_.wantsMouse() && overlay_ == Overlay::None) cameraEvent(e);
     if (!session_) return running_;
     game::Match& m = session_->match();
     if (e.type == SDL_CONTROLLERBUTTONDOWN) {
@@ -485,28 +672,17 @@ bool GameScreen::handleEvent(const SDL_Event& e) {
     }
     if (uiWants && imgui_.wantsMouse()) return running_;
     if (overlay_ != Overlay::None) return running_;
-    if (e.type == SDL_MOUSEWHEEL && e.wheel.y != 0) {
-        int mx = 0, my = 0;
-        SDL_GetMouseState(&mx, &my);
-        camera_.zoomAt(pointerPixels(mx, my), e.wheel.y > 0 ? 1.15 : 1.0 / 1.15);
-        cameraMoved_ = true;
-    } else if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT) {
+    if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT) {
         if (humanTurn() && !m.shell())
-            aim_.beginDrag(pivotPixels(), pointerPixels(e.button.x, e.button.y), m.cannon().def.maxSpeedMps);
-    } else if (e.type == SDL_MOUSEBUTTONDOWN) {
-        panning_ = true;
+            aim_.beginDrag(pivotPixels(), pointerPixels(e.button.x, e.button.y),
+                           m.cannon().def.maxSpeedMps);
     } else if (e.type == SDL_MOUSEBUTTONUP && e.button.button == SDL_BUTTON_LEFT) {
         submit(aim_.endDrag(m.cannon()));
-    } else if (e.type == SDL_MOUSEBUTTONUP) {
-        panning_ = false;
-    } else if (e.type == SDL_MOUSEMOTION) {
-        if (aim_.dragging())
-            aim_.dragTo(pivotPixels(), pointerPixels(e.motion.x, e.motion.y), m.cannon().def.maxSpeedMps);
-        else if (panning_) {
-            const phys::Vec2 d = pointerPixels(e.motion.xrel, e.motion.yrel);
-            camera_.panPixels(d);
-            cameraMoved_ = true;
-        }
+    } else if (e.type == SDL_MOUSEMOTION && aim_.dragging()) {
+        aim_.dragTo(pivotPixels(), pointerPixels(e.motion.x, e.motion.y),
+                    m.cannon().def.maxSpeedMps);
+    } else {
+        cameraEvent(e); // wheel zooms, right (or middle) drag pans
     }
     return running_;
 }

@@ -4,9 +4,15 @@
 // so the window drives the match exactly as a script or a replay does; wall time only
 // feeds the clock and shapes gestures (charging), never the simulation.
 //
+// Replays (issue 6): the screen also watches a recorded game (ReplayViewer, from
+// `--replay FILE` or the Replays list), drawn on the same path as live play, and turns
+// it into a live game at any moment ("take over": a new replay branches from there).
+// A live game rewinds the same way (Session::rewindTo): back to any earlier tick, and
+// play goes on from there as a branch.
+//
 // Section index
 //   GameScreenDef   what to open and how
-//   GameScreen      frame(), handleEvent(); level select, playing, overlays
+//   GameScreen      frame(), handleEvent(); level select, playing, watching, overlays
 #pragma once
 
 #include "game/level.h"
@@ -16,6 +22,7 @@
 #include "ui/game/game_menus.h"
 #include "ui/game/match_view.h"
 #include "ui/game/player_settings.h"
+#include "ui/game/replay_view.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
 #include "ui/play/physics_panel.h"
@@ -37,6 +44,7 @@ class SdlWindow;
 
 struct GameScreenDef {
     std::string levelFile;           ///< "" opens the level select screen
+    std::string replayFile;          ///< a replay to watch (instead of a level)
     std::string levelsFolder = "levels";
     int msaaSamples = 0;             ///< 0 = auto (4 on a GPU, off on llvmpipe)
     bool panel = true;               ///< the ImGui physics panel
@@ -62,12 +70,31 @@ class GameScreen final : public Screen {
     void setMeasuredFrameMs(double ms) override;
     void warmUp(double seconds) override;
 
-    /// The match being played, if any (null on the level select screen).
+    /// The match being played, if any (null on the level select screen or in a replay).
     const game::Session* session() const { return session_.get(); }
+    /// The replay being watched, if any.
+    const ReplayViewer* replayViewer() const { return viewer_.get(); }
 
   private:
     void openLevel(const std::string& file);
     void restart();
+    /// Plays `session` from its current tick (a new match, or a replay taken over).
+    void playSession(std::unique_ptr<game::Session> session);
+    game::SessionOptions liveOptions(const std::string& recordFile) const;
+    bool hotseatInUse() const;
+    /// Where the game records replays ("" in check runs and headless: nowhere).
+    std::string replaysFolder() const;
+    std::string recordFileFor(const std::string& name) const;
+    /// The match on screen: the one played or the one watched (null on the menus alone).
+    const game::Match* shownMatch() const;
+    // Replays and rewinding (issue 6).
+    void openReplay(const std::string& file);
+    void showReplays();
+    void takeOverReplay();
+    void rewindLive(std::uint64_t tick);
+    bool replayKey(const SDL_Event& e);
+    std::string liveBanner(const game::Match& m) const;
+    void cameraEvent(const SDL_Event& e);
     void submit(const std::vector<game::Command>& commands);
     void submit(const game::Command& command);
     bool humanTurn() const;
@@ -96,6 +123,12 @@ class GameScreen final : public Screen {
 
     game::Level level_;
     std::unique_ptr<game::Session> session_;
+    std::unique_ptr<ReplayViewer> viewer_;
+    std::vector<ReplayEntry> replays_;
+    RewindControl rewind_;
+    /// Where the game in play branched from (a replay taken over, a rewind), "" if not.
+    std::string branchNote_;
+    std::uint64_t branchTick_ = 0;
     /// The first level, drawn behind the level select screen before any game starts.
     std::unique_ptr<game::Match> backdrop_;
     phys::FixedClock clock_;

@@ -1,5 +1,7 @@
 #include "ui/play/play_verb.h"
 
+#include "game/files/json_reader.h"
+#include "game/replay.h"
 #include "ui/game/game_screen.h"
 #include "ui/platform/sdl_window.h"
 #include "ui/play/play_screen.h"
@@ -24,20 +26,32 @@ using game::cli::Args;
 using Clock = std::chrono::steady_clock;
 
 constexpr const char* kPlayUsage =
-    R"(usage: artillery play [LEVEL] [--frames N] [--screenshot FILE.png] [--size WxH]
-                      [--headless] [--context auto|osmesa|egl] [--warmup SECONDS]
-                      [--msaa N] [--no-panel] [--difficulty easy|normal|hard]
-                      [--hotseat] [--demo] [--json]
+    R"(usage: artillery play [LEVEL | --replay FILE] [--frames N] [--screenshot FILE.png]
+                      [--size WxH] [--headless] [--context auto|osmesa|egl]
+                      [--warmup SECONDS] [--msaa N] [--no-panel]
+                      [--difficulty easy|normal|hard] [--hotseat] [--demo] [--json]
 
 Plays LEVEL in a window; without LEVEL the level select screen opens (every level in
 levels/ with its lesson and your best result). Aim by dragging from the cannon
 (direction = angle, length = power) or with the arrow keys, hold Space to charge and
 release to fire, 1-8 pick the projectile. Every change you make, physics settings
 included, is a command the session records, so each game is a replay. Results, choices
-and the panel layout are kept in $XDG_CONFIG_HOME/artillery (~/.config/artillery).
+and the panel layout are kept in $XDG_CONFIG_HOME/artillery (~/.config/artillery), the
+replays in its replays/ folder ("Replays" on the level select screen lists them).
+
+With --replay the window watches a recorded game instead: play / pause, one tick, any
+speed from x1/8 to x16, a scrub bar over the whole game (going back re-simulates it
+from the start), the previous or next shot, and "Take over" (T), which hands you the
+match at that moment to play on; the branch is recorded as a new replay. The viewer
+compares the replay's checkpoints as it plays and says so if the game diverges. In a
+game, Backspace (or the Match panel's rewind slider) goes back in time the same way
+and play goes on from there.
 
 options:
   LEVEL                 a level file (levels/*.json)
+  --replay FILE         watch a replay (artillery run --record, or one the game
+                        recorded); its level is found as `artillery replay verify`
+                        finds it (a bad file or a changed level: exit 2)
   --frames N            run N frames, then exit (default: until the window closes);
                         such check runs leave no settings or replays behind
   --screenshot FILE     save the last frame as PNG (headless, the last frame is always
@@ -60,7 +74,11 @@ options:
 keys:  mouse drag aim   arrows angle/power   hold Space charge, release fire
        Enter/F fire   1-8 projectile   E end turn   P preview   H hint
        Esc pause menu   F1 or ? help   F2 physics panel   . one tick
+       K pause/resume   Backspace (hold) rewind 1 s, play on as a branch
        [ ] slower/faster   R restart   L levels   F12 screenshot
+replay: Space or K play/pause   . one tick   , one tick back   [ ] speed x1/8..x16
+       \ x1   left/right 1 s back/forward (Shift 5 s)   PgUp/PgDn previous/next shot
+       R from the start   T take over (play on from here, recording a branch)
 mouse: wheel zooms at the pointer, right drag pans, Home re-frames
 controller: left stick aims, triggers set power, A fires, B ends the turn
 
@@ -82,6 +100,7 @@ struct PlayOptions {
     bool velocities = false;
     phys::WorldDef world = demoWorldDef();
     std::string level;  ///< "" = level select (window) or the demo (headless)
+    std::string replay; ///< a replay to watch instead
     bool demo = false;
     std::optional<game::Difficulty> difficulty;
     std::optional<bool> hotseat;
@@ -143,6 +162,18 @@ PlayOptions parseOptions(const Args& args) {
         args.fail("level file '" + pos[0] + "' does not exist");
     if (!pos.empty()) o.level = pos[0];
     o.demo = args.flag("demo");
+    o.replay = args.text("replay", "");
+    if (!o.replay.empty()) {
+        if (!o.level.empty()) args.fail("give a LEVEL or --replay FILE, not both");
+        if (o.demo) args.fail("--demo and --replay cannot be combined");
+        // Checked here so a bad file is bad input (exit 2) with the loader's one message.
+        try {
+            const game::Replay r = game::loadReplay(o.replay);
+            game::levelForReplay(o.replay, r);
+        } catch (const game::LoadError& e) {
+            throw game::cli::UsageError("artillery play: " + std::string(e.what()));
+        }
+    }
     if (args.has("difficulty")) {
         const std::string d = args.text("difficulty", "normal");
         o.difficulty = game::difficultyFromName(d);
@@ -180,10 +211,11 @@ std::string levelsFolder() {
 /// The game for a level (or the level select screen in a window); the physics demo with
 /// --demo, or headless without a level.
 std::unique_ptr<Screen> makeScreen(GLContext& context, SdlWindow* window, const PlayOptions& o) {
-    const bool demo = o.demo || (o.level.empty() && !window);
+    const bool demo = o.demo || (o.level.empty() && o.replay.empty() && !window);
     if (demo) return std::make_unique<PlayScreen>(context, window, screenDef(o));
     GameScreenDef d;
     d.levelFile = o.level;
+    d.replayFile = o.replay;
     d.levelsFolder = levelsFolder();
     d.msaaSamples = o.msaa;
     d.panel = o.panel;
@@ -319,9 +351,11 @@ PlayOptions headlessDemo(PlayOptions o) {
         if (o.warmupSeconds == 0.0 && o.level.empty()) o.warmupSeconds = 2.0;
     }
     if (o.screenshot.empty()) {
-        const std::string name = o.level.empty() || o.demo
-                                     ? std::string("artillery-demo.png")
-                                     : "artillery-" + std::filesystem::path(o.level).stem().string() + ".png";
+        const std::string shown = o.replay.empty() ? o.level : o.replay;
+        const std::string name =
+            shown.empty() || o.demo
+                ? std::string("artillery-demo.png")
+                : "artillery-" + std::filesystem::path(shown).stem().string() + ".png";
         o.screenshot = (std::filesystem::temp_directory_path() / name).string();
     }
     return o;

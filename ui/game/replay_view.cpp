@@ -1,0 +1,270 @@
+// Section index
+//   set-up    ReplayViewer()
+//   time      advance, warmUp: the clock's ticks, jumps
+//   controls  panel, key, banner
+#include "ui/game/replay_view.h"
+
+#include <SDL.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iterator>
+
+namespace ui {
+
+namespace {
+
+const ImVec4 kGoldText(1.0f, 0.79f, 0.24f, 1.0f);
+const ImVec4 kDimText(0.7f, 0.75f, 0.82f, 1.0f);
+const ImVec4 kGoodText(0.55f, 0.9f, 0.55f, 1.0f);
+const ImVec4 kBadText(1.0f, 0.4f, 0.4f, 1.0f);
+
+const char* const kSpeedNames[] = {"x1/8", "x1/4", "x1/2", "x1", "x2", "x4", "x8", "x16"};
+static_assert(std::size(kSpeedNames) == std::size(kReplaySpeeds));
+
+/// x16 at 30 frames per second is 64 ticks of 1/120 s a frame; a cap well above it.
+constexpr int kMaxReplayTicksPerFrame = 256;
+
+} // namespace
+
+// ---- set-up ---------------------------------------------------------------------------
+ReplayViewer::ReplayViewer(std::string file, const game::Level& level, game::Replay replay)
+    : file_(std::move(file)) {
+    player_.emplace(level, std::move(replay));
+    phys::ClockDef cd;
+    cd.tickSeconds = tickSeconds();
+    cd.maxTicksPerFrame = kMaxReplayTicksPerFrame;
+    clock_ = phys::FixedClock(cd);
+}
+
+game::Session ReplayViewer::takeOver(const game::SessionOptions& options) {
+    game::Session s = std::move(*player_).takeOver(options);
+    player_.reset();
+    return s;
+}
+
+// ---- time -----------------------------------------------------------------------------
+void ReplayViewer::advance(double wallSeconds, bool held, MatchView& view) {
+    game::ReplayPlayer& p = *player_;
+    if (seek_) {
+        const std::uint64_t target = std::min(*seek_, p.lastTick());
+        seek_.reset();
+        if (target >= p.tick()) {
+            // Forwards tick by tick, so the shell's trail is drawn whole.
+            while (p.tick() < target) {
+                p.step();
+                view.observe(p.match());
+            }
+        } else {
+            p.seek(target);
+            view.reset();
+            view.observe(p.match());
+        }
+    }
+    // A `set tick_hz` command in the replay changes the tick; the clock follows.
+    if (clock_.def().tickSeconds != tickSeconds()) clock_.setTickSeconds(tickSeconds());
+    clock_.setPaused(paused_ || held || p.atEnd());
+    clock_.setTimeScale(kReplaySpeeds[speed_]);
+    if (stepRequested_) {
+        clock_.requestSingleStep();
+        stepRequested_ = false;
+    }
+    for (int n = clock_.advance(wallSeconds); n > 0 && !p.atEnd(); --n) {
+        p.step();
+        view.observe(p.match());
+    }
+    if (p.atEnd()) paused_ = true; // Space then plays it again from the start
+}
+
+void ReplayViewer::warmUp(double seconds, MatchView& view) {
+    game::ReplayPlayer& p = *player_;
+    const auto ticks = static_cast<std::uint64_t>(std::max(0.0, seconds) / tickSeconds());
+    for (std::uint64_t i = 0; i < ticks && !p.atEnd(); ++i) {
+        p.step();
+        view.observe(p.match());
+    }
+}
+
+std::optional<std::uint64_t> ReplayViewer::previousShot() const {
+    const std::uint64_t now = seek_.value_or(player_->tick());
+    const auto grace = static_cast<std::uint64_t>(0.5 / tickSeconds());
+    return player_->shotBefore(now > grace ? now - grace : 0);
+}
+
+void ReplayViewer::togglePlay() {
+    if (paused_ && player_->atEnd()) seek_ = 0;
+    paused_ = !paused_;
+}
+
+void ReplayViewer::changeSpeed(int by) {
+    speed_ = std::clamp(speed_ + by, 0, static_cast<int>(std::size(kReplaySpeeds)) - 1);
+}
+
+void ReplayViewer::jumpBy(double seconds) {
+    const double ticks = std::round(seconds / tickSeconds());
+    const double base = static_cast<double>(seek_.value_or(player_->tick()));
+    seek_ = static_cast<std::uint64_t>(std::max(0.0, base + ticks));
+}
+
+// ---- controls -------------------------------------------------------------------------
+ReplayRequests ReplayViewer::panel() {
+    ReplayRequests req;
+    const game::ReplayPlayer& p = *player_;
+    const double dt = tickSeconds();
+    const ImVec2 d = ImGui::GetIO().DisplaySize;
+    // On the band of soil at the bottom, beside the aim panel, where the match panel is
+    // in a game.
+    ImGui::SetNextWindowPos(ImVec2(342, d.y - 12), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(560.0f, d.x - 354), 0), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Replay", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
+    ImGui::TextColored(kGoldText, "%s", std::filesystem::path(file_).filename().string().c_str());
+    ImGui::SameLine();
+    ImGui::TextColored(kDimText, "%s, %.1f s, %zu shots", p.match().level().name.c_str(),
+                       static_cast<double>(p.lastTick()) * dt, p.shotTicks().size());
+
+    // The scrub bar over the whole recording; it seeks while dragged, backwards too.
+    std::uint64_t shown = seek_.value_or(p.tick());
+    const std::uint64_t lo = 0, hi = std::max<std::uint64_t>(p.lastTick(), 1);
+    char label[64];
+    std::snprintf(label, sizeof label, "%.2f s  (tick %llu / %llu)",
+                  static_cast<double>(shown) * dt, static_cast<unsigned long long>(shown),
+                  static_cast<unsigned long long>(p.lastTick()));
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &shown, &lo, &hi, label)) seek_ = shown;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Drag to any moment (going back re-simulates from the start)");
+
+    const auto prevShot = previousShot(), nextShot = p.shotAfter(seek_.value_or(p.tick()));
+    ImGui::BeginDisabled(!prevShot);
+    if (ImGui::Button("|< shot")) seek_ = prevShot;
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("previous shot (Page Up)");
+    ImGui::SameLine();
+    if (ImGui::Button("< 1 s")) jumpBy(-1.0);
+    ImGui::SameLine();
+    if (ImGui::Button(paused_ ? (p.atEnd() ? "Play again" : "Play") : "Pause", ImVec2(90, 0)))
+        togglePlay();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(p.atEnd());
+    if (ImGui::Button("Step")) {
+        paused_ = true;
+        stepRequested_ = true;
+    }
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("one tick (.); one back: ,");
+    ImGui::SameLine();
+    if (ImGui::Button("1 s >")) jumpBy(1.0);
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!nextShot);
+    if (ImGui::Button("shot >|")) seek_ = nextShot;
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("next shot (Page Down)");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(110);
+    ImGui::SliderInt("speed", &speed_, 0, static_cast<int>(std::size(kReplaySpeeds)) - 1,
+                     kSpeedNames[speed_], ImGuiSliderFlags_NoInput);
+
+    // Is the re-simulation still the recorded game?
+    if (const auto& div = p.divergence()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kBadText);
+        ImGui::TextWrapped(
+            "DIVERGED at %.2f s (tick %llu) in %s: the re-simulation no longer matches "
+            "the recording (another build, or an edited file)",
+            static_cast<double>(div->tick) * dt, static_cast<unsigned long long>(div->tick),
+            div->what.c_str());
+        ImGui::PopStyleColor();
+    } else {
+        ImGui::TextColored(kGoodText, "re-simulates bit for bit: %zu of %zu checkpoints matched",
+                           p.checkpointsChecked(), p.replay().checkpoints.size());
+    }
+    if (p.refusedCommands() > 0)
+        ImGui::TextColored(kBadText, "%zu recorded command(s) refused", p.refusedCommands());
+
+    ImGui::Separator();
+    if (ImGui::Button("Take over (T)", ImVec2(140, 0))) req.takeOver = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Play on from this moment: the commands so far are kept and a new replay "
+                          "branches from here");
+    ImGui::SameLine();
+    if (ImGui::Button("Replays")) req.close = true;
+    ImGui::SameLine();
+    ImGui::TextColored(kDimText, "Space play/pause  . step  [ ] speed  PgUp/PgDn shots");
+    ImGui::End();
+    return req;
+}
+
+ReplayRequests ReplayViewer::key(const SDL_Keysym& k, bool repeat, bool& handled) {
+    ReplayRequests req;
+    handled = true;
+    const bool shift = (k.mod & KMOD_SHIFT) != 0;
+    switch (k.sym) {
+    case SDLK_SPACE:
+    case SDLK_k:
+        if (!repeat) togglePlay();
+        break;
+    case SDLK_PERIOD:
+        paused_ = true;
+        stepRequested_ = true;
+        break;
+    case SDLK_COMMA:
+        paused_ = true;
+        if (player_->tick() > 0) seek_ = seek_.value_or(player_->tick()) - 1;
+        break;
+    case SDLK_LEFT:
+        jumpBy(shift ? -5.0 : -1.0);
+        break;
+    case SDLK_RIGHT:
+        jumpBy(shift ? 5.0 : 1.0);
+        break;
+    case SDLK_PAGEUP:
+        if (const auto t = previousShot()) seek_ = t;
+        break;
+    case SDLK_PAGEDOWN:
+        if (const auto t = player_->shotAfter(seek_.value_or(player_->tick()))) seek_ = t;
+        break;
+    case SDLK_LEFTBRACKET:
+        changeSpeed(-1);
+        break;
+    case SDLK_RIGHTBRACKET:
+        changeSpeed(+1);
+        break;
+    case SDLK_BACKSLASH:
+        speed_ = 3;
+        break;
+    case SDLK_r:
+        if (!repeat) seek_ = 0;
+        break;
+    case SDLK_t:
+        req.takeOver = !repeat;
+        break;
+    default:
+        handled = false;
+        break;
+    }
+    return req;
+}
+
+std::string ReplayViewer::banner() const {
+    const game::ReplayPlayer& p = *player_;
+    char line[64];
+    if (p.divergence())
+        std::snprintf(line, sizeof line, "REPLAY DIVERGED");
+    else if (p.atEnd())
+        std::snprintf(line, sizeof line, "REPLAY ended (T plays on)");
+    else if (paused_)
+        std::snprintf(line, sizeof line, "REPLAY paused  %.1f s",
+                      static_cast<double>(p.tick()) * tickSeconds());
+    else
+        std::snprintf(line, sizeof line, "REPLAY %s  %.1f s", kSpeedNames[speed_],
+                      static_cast<double>(p.tick()) * tickSeconds());
+    return line;
+}
+
+} // namespace ui

@@ -1,0 +1,80 @@
+// The replay viewer's controls (issues 5 and 6): a game::ReplayPlayer under its own
+// fixed-step clock, with play / pause, one tick either way, speed x1/8 .. x16, a scrub
+// slider over the whole recording (backwards too: a re-simulation from the start), the
+// previous / next shot, and "Take over", which the game screen answers by playing on
+// from that tick as a new branch. The game screen draws the match on its usual path
+// (MatchView, drawMatchFrame); this file holds only the controls and the clock.
+//
+// Section index
+//   ReplayRequests   what the panel or a key asked the game screen for
+//   ReplayViewer     advance() per frame, panel(), key(), banner()
+#pragma once
+
+#include "game/replay_player.h"
+#include "physics/clock.h"
+#include "ui/game/match_view.h"
+
+#include <SDL_keyboard.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace ui {
+
+/// What the viewer asks of the game screen this frame.
+struct ReplayRequests {
+    bool takeOver = false; ///< play on from here, recording a branch
+    bool close = false;    ///< back to the list of replays
+};
+
+/// Replay speeds the [ and ] keys step through (simulated seconds per wall second).
+inline constexpr float kReplaySpeeds[] = {0.125f, 0.25f, 0.5f, 1.0f, 2.0f, 4.0f, 8.0f, 16.0f};
+
+class ReplayViewer {
+  public:
+    /// `file` names the replay in the panel; `level` is the replay's (levelForReplay).
+    ReplayViewer(std::string file, const game::Level& level, game::Replay replay);
+
+    /// Feeds one frame's wall time: carries out a pending jump, then plays the ticks the
+    /// clock hands out at the chosen speed (none while paused or while `held`, a menu
+    /// being open). `view` observes every tick played and forgets its trails on a jump
+    /// back.
+    void advance(double wallSeconds, bool held, MatchView& view);
+    /// Plays `seconds` at once, without drawing (--warmup).
+    void warmUp(double seconds, MatchView& view);
+    /// The "Replay" window.
+    ReplayRequests panel();
+    /// A key press (repeats included: held . or arrows keep stepping). Returns what it
+    /// asks of the screen; keys it does not know are left to the screen.
+    ReplayRequests key(const SDL_Keysym& key, bool repeat, bool& handled);
+    /// Goes to `tick` at the next advance() (clamped to the recording).
+    void requestSeek(std::uint64_t tick) { seek_ = tick; }
+    /// The line on top of the picture: "REPLAY x2  12.3 s", "REPLAY paused", ...
+    std::string banner() const;
+
+    const game::Match& match() const { return player_->match(); }
+    const game::ReplayPlayer& player() const { return *player_; }
+    const std::string& file() const { return file_; }
+    /// The match as a live session from the current tick (the viewer is spent).
+    game::Session takeOver(const game::SessionOptions& options);
+
+  private:
+    void togglePlay();
+    void changeSpeed(int by);
+    void jumpBy(double seconds);
+    /// The shot to go back to: within half a second of a shot's start, the one before
+    /// it (so pressing again while playing keeps going back).
+    std::optional<std::uint64_t> previousShot() const;
+    double tickSeconds() const { return match().world().def().tickSeconds; }
+
+    std::string file_;
+    std::optional<game::ReplayPlayer> player_;
+    phys::FixedClock clock_;
+    bool paused_ = false;
+    bool stepRequested_ = false;
+    int speed_ = 3;                     ///< index into kReplaySpeeds (x1)
+    std::optional<std::uint64_t> seek_; ///< a jump asked for, done at the next advance()
+};
+
+} // namespace ui
