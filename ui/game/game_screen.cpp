@@ -145,6 +145,11 @@ void GameScreen::restart() {
     matchView_.reset();
     cameraMoved_ = false;
     camera_ = levelCamera(session_->match(), context_.width(), context_.height());
+    if (def_.sandbox && !session_->match().sandbox()) {
+        game::Command c; // every level opens as a sandbox too: a command, so it replays
+        c.kind = game::CommandKind::Sandbox;
+        submit(c);
+    }
 }
 
 void GameScreen::playSession(std::unique_ptr<game::Session> session) {
@@ -369,6 +374,10 @@ void GameScreen::drawPlaying() {
         o.banner = liveBanner(m);
     }
     drawMatchFrame(renderer_, matchView_, m, camera_, o);
+    if (!viewer_ && session_) { // the rope being drawn, the hand and what it holds
+        sandboxTools_.draw(renderer_, m);
+        renderer_.flush();
+    }
 }
 
 void GameScreen::drawPanels() {
@@ -391,6 +400,7 @@ void GameScreen::drawPanels() {
         if (req.projectile)
             if (auto c = AimInput::select(m.cannon(), *req.projectile)) submit(*c);
         if (req.fire && humanTurn()) submit(aim_.fire(m.cannon()));
+        submit(sandboxTools_.panel(m));
         if (req.endTurn && humanTurn()) {
             game::Command c;
             c.kind = game::CommandKind::EndTurn;
@@ -672,6 +682,18 @@ bool GameScreen::handleEvent(const SDL_Event& e) {
     }
     if (uiWants && imgui_.wantsMouse()) return running_;
     if (overlay_ != Overlay::None) return running_;
+    if (sandboxTools_.active(m) && (e.type == SDL_MOUSEBUTTONDOWN || e.type == SDL_MOUSEBUTTONUP ||
+                                    e.type == SDL_MOUSEMOTION)) {
+        const bool left = e.type == SDL_MOUSEMOTION || e.button.button == SDL_BUTTON_LEFT;
+        const int x = e.type == SDL_MOUSEMOTION ? e.motion.x : e.button.x;
+        const int y = e.type == SDL_MOUSEMOTION ? e.motion.y : e.button.y;
+        const phys::Vec2 at = camera_.toWorld(pointerPixels(x, y));
+        if (left && e.type == SDL_MOUSEBUTTONDOWN) submit(sandboxTools_.press(at));
+        else if (left && e.type == SDL_MOUSEBUTTONUP) submit(sandboxTools_.lift(at));
+        else if (e.type == SDL_MOUSEMOTION) submit(sandboxTools_.move(at));
+        if (!left || e.type == SDL_MOUSEMOTION) cameraEvent(e); // right drag still pans
+        return running_;
+    }
     if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT) {
         if (humanTurn() && !m.shell())
             aim_.beginDrag(pivotPixels(), pointerPixels(e.button.x, e.button.y),

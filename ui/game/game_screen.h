@@ -22,6 +22,7 @@
 #include "ui/game/game_menus.h"
 #include "ui/game/match_view.h"
 #include "ui/game/player_settings.h"
+#include "ui/game/sandbox_tools.h"
 #include "ui/game/replay_view.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
@@ -53,6 +54,8 @@ struct GameScreenDef {
     /// Choices when nothing is stored (the command line overrides stored ones).
     std::optional<game::Difficulty> difficulty;
     std::optional<bool> hotseat;
+    /// Open the level as a sandbox (a `sandbox` command at its first tick).
+    bool sandbox = false;
 };
 
 class GameScreen final : public Screen {
@@ -136,6 +139,7 @@ class GameScreen final : public Screen {
     ViewControls view_;
     MatchView matchView_;
     AimInput aim_;
+    SandboxTools sandboxTools_;
     Camera camera_;
     bool cameraMoved_ = false;
     bool panning_ = false;

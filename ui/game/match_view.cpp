@@ -529,6 +529,11 @@ void drawHud(Renderer2D& r, const Match& m, const MatchViewOptions& o, const Pen
         }
         std::snprintf(line, sizeof line, "shots fired %d", m.shotsFired());
         s.text(24, 90, line, kTextDim, 0.8f);
+    } else if (m.sandbox()) {
+        s.text(24, 44, "no score, no shot budget", kGold, 1.0f);
+        std::snprintf(line, sizeof line, "shots fired %d   %zu particles   %zu blocks", m.shotsFired(),
+                      m.world().particles.count(), m.blocks().size());
+        s.text(24, 68, line, kText, 0.9f);
     } else {
         std::snprintf(line, sizeof line, "score %d / %d", m.score(), m.maxScore());
         s.text(24, 44, line, kGold, 1.0f);

@@ -29,7 +29,8 @@ constexpr const char* kPlayUsage =
     R"(usage: artillery play [LEVEL | --replay FILE] [--frames N] [--screenshot FILE.png]
                       [--size WxH] [--headless] [--context auto|osmesa|egl]
                       [--warmup SECONDS] [--msaa N] [--no-panel]
-                      [--difficulty easy|normal|hard] [--hotseat] [--demo] [--json]
+                      [--difficulty easy|normal|hard] [--hotseat] [--sandbox] [--demo]
+                      [--json]
 
 Plays LEVEL in a window; without LEVEL the level select screen opens (every level in
 levels/ with its lesson and your best result). Aim by dragging from the cannon
@@ -65,6 +66,9 @@ options:
   --no-panel            hide the ImGui physics panel
   --difficulty NAME     the computer's aim in duels: easy, normal (default) or hard
   --hotseat             a duel's computer cannon is played by a second person
+  --sandbox             open LEVEL as a sandbox: no shot budget, no score, and the
+                        Sandbox panel's tools (spawn blocks, balls, ropes, springs,
+                        cloth, blobs; grab and drag) on the left mouse button
   --demo                the physics demo scene instead of a level (a cannon with a
                         drag-free twin and a swinging spring chain); with it:
                         --integrator NAME, --planet NAME | --gravity G, --wind VX,
@@ -104,6 +108,7 @@ struct PlayOptions {
     bool demo = false;
     std::optional<game::Difficulty> difficulty;
     std::optional<bool> hotseat;
+    bool sandbox = false;
 };
 
 struct RunReport {
@@ -180,6 +185,9 @@ PlayOptions parseOptions(const Args& args) {
         if (!o.difficulty) args.fail("--difficulty expects easy, normal or hard, got '" + d + "'");
     }
     if (args.flag("hotseat")) o.hotseat = true;
+    o.sandbox = args.flag("sandbox");
+    if (o.sandbox && (o.demo || !o.replay.empty()))
+        args.fail("--sandbox opens a level: it cannot go with --demo or --replay");
     args.rejectUnknown();
     return o;
 }
@@ -221,6 +229,7 @@ std::unique_ptr<Screen> makeScreen(GLContext& context, SdlWindow* window, const 
     d.panel = o.panel;
     d.difficulty = o.difficulty;
     d.hotseat = o.hotseat;
+    d.sandbox = o.sandbox;
     // A person playing keeps results and layout; check runs (--frames) and headless
     // pictures leave nothing behind.
     if (window && !o.frames) d.settingsFolder = configFolder();
@@ -391,7 +400,7 @@ const game::cli::Verb& playVerb() {
                                       "play in a window (headless picture without a display)",
                                       kPlayUsage,
                                       {"headless", "no-panel", "no-drag", "velocities", "demo",
-                                       "hotseat"},
+                                       "hotseat", "sandbox"},
                                       runPlay};
     return verb;
 }
