@@ -54,7 +54,13 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
         iniFile_ = (std::filesystem::path(def_.settingsFolder) / "imgui.ini").string();
         std::string warning;
         settings_ = loadPlayerSettings(settingsFile_, warning);
-        if (!warning.empty()) std::cerr << "artillery: " << warning << "\n";
+        if (!warning.empty()) {
+            // Told on the terminal and in the window; the damaged file is kept as it is,
+            // so this run saves no settings over it.
+            std::cerr << "artillery: " << warning << "\n";
+            stats_.status = warning;
+            settingsFile_.clear();
+        }
         std::error_code ec;
         if (std::filesystem::exists(iniFile_, ec)) {
             const std::string ini = game::readFile(iniFile_);

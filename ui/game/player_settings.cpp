@@ -14,6 +14,10 @@ namespace ui {
 
 namespace {
 
+/// More results than any levels folder holds: a hostile file cannot grow the map.
+constexpr std::size_t kMaxLevelResults = 10'000;
+
+
 std::string key(const std::string& levelFile) {
     return std::filesystem::path(levelFile).filename().string();
 }
@@ -43,35 +47,51 @@ std::string configFolder() {
     return "";
 }
 
-PlayerSettings loadPlayerSettings(const std::string& file, std::string& warning) {
+PlayerSettings parsePlayerSettings(const std::string& file, const std::string& text) {
+    const nlohmann::json doc = game::parseJson(file, text);
+    const game::Node root(doc, file);
     PlayerSettings s;
-    warning.clear();
-    std::ifstream in(file);
-    if (!in) return s; // first run
-    try {
-        std::stringstream text;
-        text << in.rdbuf();
-        const nlohmann::json j = nlohmann::json::parse(text.str());
-        if (const auto d = game::difficultyFromName(j.value("difficulty", "normal"))) s.difficulty = *d;
-        s.hotseat = j.value("hotseat", s.hotseat);
-        s.trajectoryPreview = j.value("trajectory_preview", s.trajectoryPreview);
-        s.solutionHint = j.value("solution_hint", s.solutionHint);
-        s.physicsPanel = j.value("physics_panel", s.physicsPanel);
-        if (j.contains("levels") && j["levels"].is_object())
-            for (const auto& [name, r] : j["levels"].items()) {
-                LevelResult lr;
-                lr.bestScore = r.value("best_score", 0);
-                lr.stars = std::clamp(r.value("stars", 0), 0, 3);
-                lr.plays = r.value("plays", 0);
-                lr.won = r.value("won", false);
-                s.results[name] = lr;
-            }
-    } catch (const std::exception& e) {
-        // A damaged settings file must not stop the game: start from the defaults.
-        warning = file + ": " + e.what() + " (using defaults; the file is rewritten on exit)";
-        return PlayerSettings{};
+    root.integer("format", 1, 1, 1);
+    const std::string difficulty = root.string("difficulty", "normal");
+    const auto d = game::difficultyFromName(difficulty);
+    if (!d) root.at("difficulty").fail("expected \"easy\", \"normal\" or \"hard\", got \"" + difficulty + "\"");
+    s.difficulty = *d;
+    s.hotseat = root.boolean("hotseat", s.hotseat);
+    s.trajectoryPreview = root.boolean("trajectory_preview", s.trajectoryPreview);
+    s.solutionHint = root.boolean("solution_hint", s.solutionHint);
+    s.physicsPanel = root.boolean("physics_panel", s.physicsPanel);
+    if (const auto levels = root.find("levels")) {
+        if (!levels->isObject()) levels->fail("expected an object of results by level file name");
+        if (levels->json().size() > kMaxLevelResults)
+            levels->fail("expected at most " + std::to_string(kMaxLevelResults) + " levels");
+        for (const auto& [name, value] : levels->json().items()) {
+            const game::Node r(value, file, levels->path() + "." + name);
+            if (!r.isObject()) r.fail("expected an object with best_score, stars, plays, won");
+            LevelResult lr;
+            lr.bestScore = static_cast<int>(r.integer("best_score", 0, 0, 1'000'000'000));
+            lr.stars = static_cast<int>(r.integer("stars", 0, 0, 3));
+            lr.plays = static_cast<int>(r.integer("plays", 0, 0, 1'000'000'000));
+            lr.won = r.boolean("won", false);
+            r.finish();
+            s.results[name] = lr;
+        }
     }
+    root.finish();
     return s;
+}
+
+PlayerSettings loadPlayerSettings(const std::string& file, std::string& warning) {
+    warning.clear();
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) return {}; // first run
+    try {
+        return parsePlayerSettings(file, game::readFile(file));
+    } catch (const std::exception& e) {
+        // A damaged settings file must not stop the game, and must not be overwritten:
+        // the caller plays on with the defaults and saves nothing this run.
+        warning = std::string(e.what()) + " (playing with the defaults; the file is left as it is)";
+        return {};
+    }
 }
 
 std::string savePlayerSettings(const std::string& file, const PlayerSettings& s) {

@@ -35,8 +35,12 @@ struct PlayerSettings {
 /// The folder settings live in ("" when neither XDG_CONFIG_HOME nor HOME is set).
 std::string configFolder();
 
-/// Reads settings; a missing or unreadable file gives the defaults (and says why in
-/// `warning`, empty when the file was fine or absent).
+/// Parses a settings file strictly; throws game::LoadError naming the file, the JSON
+/// path and what was expected (unknown fields, wrong types, out-of-range values).
+PlayerSettings parsePlayerSettings(const std::string& file, const std::string& text);
+/// Reads settings; a missing file gives the defaults, a damaged one the defaults and the
+/// reason in `warning` (empty when the file was fine or absent). The caller must then
+/// not save over the damaged file.
 PlayerSettings loadPlayerSettings(const std::string& file, std::string& warning);
 /// Writes atomically, creating the folder. Returns "" or why it failed.
 std::string savePlayerSettings(const std::string& file, const PlayerSettings& settings);

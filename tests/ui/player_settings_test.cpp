@@ -1,0 +1,40 @@
+// Settings files: a damaged or hostile file gives one message naming the file, the JSON
+// path and what was expected; the game plays on with the defaults and leaves the file
+// as it is (nothing saved is lost).
+#include "../game/corpus.h"
+#include "ui/game/player_settings.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace {
+const std::filesystem::path kRoot =
+    std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();
+} // namespace
+
+TEST(PlayerSettingsFiles, BadCorpusGivesTheExpectedMessages) {
+    const int cases = checkBadCorpus(kRoot / "tests/data/bad_settings", [](const std::string& f) {
+        ui::parsePlayerSettings(f, game::readFile(f));
+    });
+    EXPECT_GE(cases, 12);
+}
+
+TEST(PlayerSettingsFiles, ADamagedFileIsReportedAndLeftAsItIs) {
+    const auto dir = std::filesystem::temp_directory_path() / "artillery-bad-settings-test";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string file = (dir / "settings.json").string();
+    const std::string damaged = R"({"format": 1, "levels": {"01_earth_basics.json": {"stars": 9}}})";
+    game::writeFileAtomically(file, damaged);
+    std::string warning;
+    const ui::PlayerSettings s = ui::loadPlayerSettings(file, warning);
+    EXPECT_NE(warning.find("stars: expected a whole number in [0, 3], got 9"), std::string::npos)
+        << warning;
+    EXPECT_TRUE(s.results.empty());
+    EXPECT_EQ(game::readFile(file), damaged) << "loading never writes";
+    // Absent is not damaged: the first run has no warning.
+    ui::loadPlayerSettings((dir / "none.json").string(), warning);
+    EXPECT_EQ(warning, "");
+    std::filesystem::remove_all(dir);
+}
