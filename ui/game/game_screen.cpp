@@ -249,6 +249,7 @@ void GameScreen::simulate(double wallSeconds) {
     for (int i = 0; i < ticks; ++i) {
         session_->step();
         matchView_.observe(session_->match());
+        statsPanel_.sample(session_->match());
         physicsUs += session_->match().world().profile().totalUs;
     }
     const game::Match& m = session_->match();
@@ -270,6 +271,7 @@ void GameScreen::warmUp(double seconds) {
     for (long long i = 0; i < ticks; ++i) {
         session_->step();
         matchView_.observe(session_->match());
+        statsPanel_.sample(session_->match());
     }
 }
 
@@ -382,6 +384,7 @@ void GameScreen::drawPlaying() {
     drawMatchFrame(renderer_, matchView_, m, camera_, o);
     if (!viewer_ && session_) { // the rope being drawn, the hand and what it holds
         sandboxTools_.draw(renderer_, m);
+        statsPanel_.drawWorld(renderer_, m);
         renderer_.flush();
     }
 }
@@ -412,6 +415,8 @@ void GameScreen::drawPanels() {
             c.kind = game::CommandKind::EndTurn;
             submit(c);
         }
+        const PendingAim shownAim = aim_.editing() ? aim_.pending() : PendingAim{m.cannon().angleDeg, m.cannon().speedMps};
+        if (auto d = statsPanel_.panel(m, shownAim)) submit(settingCommands(m.world().def(), *d));
         if (settings_.physicsPanel) {
             const phys::WorldDef before = m.world().def();
             phys::WorldDef edited = before;

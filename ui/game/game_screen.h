@@ -24,6 +24,7 @@
 #include "ui/game/player_settings.h"
 #include "ui/game/sandbox_tools.h"
 #include "ui/game/replay_view.h"
+#include "ui/game/stats_panel.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
 #include "ui/play/physics_panel.h"
@@ -140,6 +141,7 @@ class GameScreen final : public Screen {
     MatchView matchView_;
     AimInput aim_;
     SandboxTools sandboxTools_;
+    StatsPanel statsPanel_; ///< Compare, energy and momentum, Charts (issue 5)
     Camera camera_;
     bool cameraMoved_ = false;
     bool panning_ = false;

@@ -1,0 +1,55 @@
+// Compare (issue 5, "Live controls"): the same shot fired with every integrator at once,
+// each path against the reference, with its error where it comes back down to the
+// launch height.
+//
+// Reference: with gravity alone the closed form p0 + v0 t + g t^2/2 (exact at any dt);
+// with drag, wind or water, RK4 at 1/16 of the tick (order 4, so its own error is
+// 16^4 = 65536 times below RK4 at the tick). Every path flies over an empty world (no
+// terrain, no obstacles) so that all of them reach the launch height and their landing
+// points can be set side by side.
+#pragma once
+
+#include "game/match.h"
+#include "physics/integrators.h"
+#include "physics/vec2.h"
+
+#include <string>
+#include <vector>
+
+namespace game {
+
+/// What a path's landing error is measured against.
+enum class LandingReference {
+    ClosedForm, ///< exact under uniform gravity: p0 + v0 t + g t^2/2
+    FineRK4,    ///< RK4 at tick / CompareDef::referenceRefinement (drag, wind or water act)
+};
+const char* landingReferenceName(LandingReference r);
+
+struct CompareDef {
+    double tickSeconds = 0.0;     ///< s; 0 = the match's tick
+    int referenceRefinement = 16; ///< the fine RK4 reference runs at tick / this, >= 1
+    double maxSeconds = kMaxFlightSeconds; ///< a path still above launch height by then stops, s
+};
+
+struct IntegratorPath {
+    phys::Integrator integrator = phys::Integrator::RK4;
+    std::string name;            ///< "rk4", ..., or "closed-form" / "rk4 (dt/16)" for the reference
+    bool isReference = false;    ///< the path the others are measured against
+    std::vector<phys::Vec2> points; ///< the shell at each tick from the muzzle, m
+    bool landed = false;         ///< came back down to the launch height within maxSeconds
+    phys::Vec2 landing;          ///< where it crossed the launch height descending, m
+    double flightTime = 0.0;     ///< s, to the landing
+    double landingError = 0.0;   ///< |landing - reference landing|, m (0 for the reference)
+    LandingReference reference = LandingReference::ClosedForm;
+};
+
+/// Fires the current cannon's selected projectile from the muzzle at (angleDeg,
+/// speedMps) once per integrator in phys::integrators(), under the match's forces,
+/// tick and sub-steps (model policy Integrate, so every integrator really runs), and
+/// appends the reference path last (isReference). The landing point inside the last
+/// tick is found from the state before it under gravity alone, so an integrator whose
+/// state is exact (RK4, velocity Verlet under gravity) lands exactly.
+std::vector<IntegratorPath> compareIntegrators(const Match& match, double angleDeg,
+                                               double speedMps, const CompareDef& def = {});
+
+} // namespace game

@@ -1,0 +1,198 @@
+#include "ui/game/stats_panel.h"
+
+#include "physics/diagnostics.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cfloat>
+#include <cstdio>
+
+namespace ui {
+
+namespace {
+
+/// A colour per integrator in phys::integrators() order, then the reference (white).
+Color pathColor(const game::IntegratorPath& p) {
+    static const Color kPalette[] = {
+        Color(0.95f, 0.25f, 0.25f), // explicit-euler: red
+        Color(1.00f, 0.60f, 0.10f), // symplectic-euler: orange
+        Color(0.95f, 0.90f, 0.20f), // verlet: yellow
+        Color(0.30f, 0.85f, 0.30f), // velocity-verlet: green
+        Color(0.20f, 0.85f, 0.85f), // leapfrog: cyan
+        Color(0.35f, 0.50f, 1.00f), // midpoint: blue
+        Color(0.80f, 0.40f, 0.95f), // rk4: violet
+        Color(0.95f, 0.45f, 0.75f), // implicit-euler: pink
+    };
+    if (p.isReference) return Color(1.0f, 1.0f, 1.0f);
+    const auto i = static_cast<std::size_t>(p.integrator);
+    return i < std::size(kPalette) ? kPalette[i] : Color(0.7f, 0.7f, 0.7f);
+}
+
+ImVec4 imColor(Color c) { return ImVec4(c.r, c.g, c.b, c.a); }
+
+} // namespace
+
+ConservedSample conservedQuantities(const game::Match& match) {
+    const phys::World& w = match.world();
+    ConservedSample s;
+    s.time = match.time();
+    s.energy = phys::energy(w.particles, w.springs, w.def().forces).total();
+    const phys::Vec2 p = phys::momentum(w.particles);
+    s.momentumX = p.x;
+    s.momentumY = p.y;
+    // Box2D bodies: 1/2 m v^2 + 1/2 I w^2 - m g.c, and m v.
+    const phys::RigidWorld& rigid = match.rigid();
+    const phys::Vec2 g = w.def().forces.gravity;
+    for (const phys::BodyId id : rigid.bodies()) {
+        const phys::RigidBodyState b = rigid.state(id);
+        if (b.type != phys::BodyType::Dynamic) continue;
+        s.energy += 0.5 * b.mass * phys::dot(b.linearVelocity, b.linearVelocity) +
+                    0.5 * b.inertia * b.angularVelocity * b.angularVelocity -
+                    b.mass * phys::dot(g, b.centerOfMass);
+        s.momentumX += b.mass * b.linearVelocity.x;
+        s.momentumY += b.mass * b.linearVelocity.y;
+    }
+    return s;
+}
+
+void StatsPanel::sample(const game::Match& match) {
+    const double dt = match.world().def().tickSeconds;
+    const auto capacity = static_cast<std::size_t>(std::clamp(historySeconds / dt, 2.0, 1e6));
+    if (match.time() <= lastTime_ || energy_.size() != capacity) {
+        // A new match, a rewind or a new tick length: start the plot afresh.
+        energy_.assign(capacity, 0.0f);
+        momentum_.assign(capacity, 0.0f);
+        next_ = count_ = 0;
+        firstEnergy_ = conservedQuantities(match).energy;
+    }
+    last_ = conservedQuantities(match);
+    lastTime_ = match.time();
+    energy_[next_] = static_cast<float>(last_.energy);
+    momentum_[next_] = static_cast<float>(std::hypot(last_.momentumX, last_.momentumY));
+    next_ = (next_ + 1) % energy_.size();
+    count_ = std::min(count_ + 1, energy_.size());
+}
+
+void StatsPanel::runCompare(const game::Match& match, const PendingAim& aim) {
+    paths_ = game::compareIntegrators(match, aim.angleDeg, aim.speedMps);
+    const phys::WorldDef& d = match.world().def();
+    key_ = {aim.angleDeg, aim.speedMps, d.tickSeconds, match.wind(),
+            static_cast<int>(phys::integrators().size()),
+            static_cast<int>(match.cannon().projectile), static_cast<int>(d.forces.drag)};
+}
+
+std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const PendingAim& aim) {
+    std::optional<phys::WorldDef> apply;
+    // Right, under the Physics window's title bar (the HUD holds the top left).
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(display.x - 342, 44), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(330, 600), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("Stats", nullptr, ImGuiWindowFlags_NoFocusOnAppearing)) {
+        // --- Compare ------------------------------------------------------------------
+        if (ImGui::CollapsingHeader("Compare integrators", ImGuiTreeNodeFlags_DefaultOpen)) {
+            if (ImGui::Button(showCompare ? "Hide paths" : "Compare")) {
+                showCompare = !showCompare;
+                if (showCompare) runCompare(match, aim);
+            }
+            ImGui::SameLine();
+            ImGui::Checkbox("follow the aim", &followAim_);
+            if (!paths_.empty()) {
+                const game::IntegratorPath& ref = paths_.back();
+                ImGui::TextDisabled("landing error vs %s, tick %.4g s", ref.name.c_str(),
+                                    match.world().def().tickSeconds);
+                for (const game::IntegratorPath& p : paths_) {
+                    ImGui::TextColored(imColor(pathColor(p)), "%-18s", p.name.c_str());
+                    ImGui::SameLine(160);
+                    if (p.isReference)
+                        ImGui::Text(p.landed ? "lands x = %.2f m" : "no landing", p.landing.x);
+                    else if (p.landed)
+                        ImGui::Text("%.3g m", p.landingError);
+                    else
+                        ImGui::TextDisabled("not down in %.0f s", game::kMaxFlightSeconds);
+                }
+            }
+        }
+        // --- Energy and momentum ---------------------------------------------------
+        if (ImGui::CollapsingHeader("Energy and momentum", ImGuiTreeNodeFlags_DefaultOpen) &&
+            count_ > 0) {
+            // The ring buffer, oldest first: PlotLines starts at values_offset.
+            const int n = static_cast<int>(count_);
+            const int offset = count_ < energy_.size() ? 0 : static_cast<int>(next_);
+            const double drift = firstEnergy_ != 0.0 ? (last_.energy - firstEnergy_) / std::abs(firstEnergy_) : 0.0;
+            char overlay[64];
+            std::snprintf(overlay, sizeof overlay, "E = %.4g J (%+.2e)", last_.energy, drift);
+            ImGui::PlotLines("##energy", energy_.data(), n, offset, overlay, FLT_MAX, FLT_MAX,
+                             ImVec2(-1, 70));
+            std::snprintf(overlay, sizeof overlay, "|p| = %.4g kg m/s", std::hypot(last_.momentumX, last_.momentumY));
+            ImGui::PlotLines("##momentum", momentum_.data(), n, offset, overlay, FLT_MAX, FLT_MAX,
+                             ImVec2(-1, 70));
+            ImGui::TextDisabled("last %.0f s; particles, springs and Box2D bodies", historySeconds);
+        }
+        // --- Charts ----------------------------------------------------------------
+        if (ImGui::Button(charts_.open ? "Close charts" : "Charts (work-precision, stability)"))
+            charts_.open = !charts_.open;
+    }
+    ImGui::End();
+
+    // Follow the aim: recompute when what the paths depend on has changed.
+    if (showCompare && followAim_) {
+        const phys::WorldDef& d = match.world().def();
+        const Key now{aim.angleDeg, aim.speedMps, d.tickSeconds, match.wind(),
+                      static_cast<int>(phys::integrators().size()),
+                      static_cast<int>(match.cannon().projectile), static_cast<int>(d.forces.drag)};
+        if (!(now == key_)) runCompare(match, aim);
+    }
+
+    const charts::ChartsPanelRequests req = charts::chartsPanel(charts_);
+    if (req.applyChoice && charts_.choice) {
+        phys::WorldDef d = match.world().def();
+        d.integrator = charts_.choice->integrator;
+        d.substeps = charts_.choice->substepsPerTick(d.tickSeconds);
+        apply = d;
+    }
+    return apply;
+}
+
+void StatsPanel::drawWorld(Renderer2D& r, const game::Match& match) {
+    (void)match;
+    if (showCompare) {
+        for (const game::IntegratorPath& p : paths_) {
+            const Color c = pathColor(p);
+            r.polyline(p.points, c, p.isReference ? 1.5f : 2.0f);
+            if (p.landed) r.fillCircle(p.landing, 0.0, c, 4.0f);
+        }
+        // The legend, top middle of the view under the wind box, in pixels.
+        Vec2 at{0.5 * r.camera().width - 90.0, 80.0};
+        for (const game::IntegratorPath& p : paths_) {
+            char line[96];
+            if (p.isReference)
+                std::snprintf(line, sizeof line, "%s (reference)", p.name.c_str());
+            else if (p.landed)
+                std::snprintf(line, sizeof line, "%s  %.3g m", p.name.c_str(), p.landingError);
+            else
+                std::snprintf(line, sizeof line, "%s  not down", p.name.c_str());
+            r.screenLabel(at, line, pathColor(p));
+            at.y += 16.0;
+        }
+    }
+    if (charts_.open) {
+        // The charts (left half) map pixels (chart.h), so they are drawn through a camera whose units
+        // are pixels; the match's labels are kept and the match's camera restored after.
+        r.flush();
+        const Camera world = r.camera();
+        std::vector<Label> labels = r.labels();
+        const double w = world.width, h = world.height;
+        r.begin(Camera::framing({0.0, 0.0}, {w, h}, world.width, world.height));
+        charts::drawChartsPanel(r, charts_, {0.02 * w, 0.12 * h, 0.5 * w, 0.55 * h});
+        r.flush();
+        labels.insert(labels.end(), r.labels().begin(), r.labels().end());
+        r.begin(world);
+        for (const Label& l : labels)
+            r.label(world.toWorld(l.pixel), l.text, l.color, {}, l.scale, l.alignX);
+    }
+}
+
+} // namespace ui

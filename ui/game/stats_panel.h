@@ -1,0 +1,73 @@
+// The Stats window (issue 5, "Live controls"): Compare (the current aim fired with every
+// integrator at once, each path drawn in the world in its own colour, with its landing
+// error in a legend), a live plot of the match's total energy and momentum over the last
+// seconds, and the Charts panel (work-precision, stability, scaling) behind a button.
+//
+// Three calls, like the rest of the game's UI:
+//   sample(match)               after every tick: one energy and momentum sample;
+//   panel(match, aim)           between ImGuiLayer::newFrame and render: the window;
+//                               returns world settings to apply ("use it" in Charts);
+//   drawWorld(renderer, match)  in the geometry pass, after the match: the compare
+//                               paths and the charts.
+#pragma once
+
+#include "game/compare.h"
+#include "game/match.h"
+#include "ui/charts/charts_panel.h"
+#include "ui/game/match_view.h"
+#include "ui/render/renderer2d.h"
+
+#include <optional>
+#include <vector>
+
+namespace ui {
+
+/// One tick's conserved quantities: particles (springs included) plus Box2D bodies.
+struct ConservedSample {
+    double time = 0.0;     ///< s
+    double energy = 0.0;   ///< kinetic + gravitational + elastic, J
+    double momentumX = 0.0; ///< kg m/s
+    double momentumY = 0.0; ///< kg m/s
+};
+
+/// Energy and momentum of everything that moves in the match (particles, springs and the
+/// kinetic energy and momentum of dynamic rigid bodies; their potential energy in gravity
+/// too, -m g.c at the centre of mass, so a falling block conserves).
+ConservedSample conservedQuantities(const game::Match& match);
+
+class StatsPanel {
+  public:
+    StatsPanel() { charts_.open = false; }
+    /// After every tick. A match whose clock went back (rewind, restart) starts afresh.
+    void sample(const game::Match& match);
+    /// The Stats window (and the Charts window when open). `aim` is the aim on screen.
+    /// Returns world settings to apply when the Charts panel's "use it" was pressed.
+    std::optional<phys::WorldDef> panel(const game::Match& match, const PendingAim& aim);
+    /// Compare paths and the charts, through the match's camera (begin() already called).
+    void drawWorld(Renderer2D& r, const game::Match& match);
+
+    bool showCompare = false; ///< draw the compare paths and their legend
+    double historySeconds = 20.0; ///< how much of the energy plot is kept, s
+
+  private:
+    void runCompare(const game::Match& match, const PendingAim& aim);
+
+    // Ring buffer of samples, at most historySeconds / tick of them.
+    std::vector<float> energy_, momentum_;
+    std::size_t next_ = 0, count_ = 0;
+    double lastTime_ = -1.0;
+    double firstEnergy_ = 0.0;
+    ConservedSample last_;
+
+    std::vector<game::IntegratorPath> paths_;
+    bool followAim_ = true;
+    struct Key {
+        double angle = 0, speed = 0, tick = 0, wind = 0;
+        int integrators = 0, projectile = -1, drag = -1;
+        bool operator==(const Key&) const = default;
+    } key_;
+
+    charts::ChartsPanelState charts_;
+};
+
+} // namespace ui
