@@ -299,6 +299,7 @@ double ParticleBodyCoupling::rodPass(World& world, RigidWorld& rigid) {
     savedInvMass_.resize(set.slots());
     savedVelocity_.resize(set.slots());
     auto lump = [&](ParticleId id, BodyId body, double wb) {
+        if (!(set.invMass[id] > 0.0)) return 0.0; // a pinned end needs no help from the body
         const double extra = wb > 0.0 ? 1.0 / (wb * share(body)) : 0.0;
         if (std::find(lumped_.begin(), lumped_.end(), id) == lumped_.end()) {
             lumped_.push_back(id);

@@ -269,3 +269,17 @@ TEST(RopeCoupling, SpringsCarryACrateAtHookesCompression) {
     EXPECT_NEAR(s.rigid.state(crate).position.y, L0 - compression + 0.05 + skin + 0.25, 0.002);
     EXPECT_LT(std::abs(s.rigid.state(crate).linearVelocity.y), 1e-3);
 }
+
+// A joint on a pinned particle holds the body from a fixed point (nothing to lump).
+TEST(RopeCoupling, ABodyTiedToAPinnedEndHangsFromIt) {
+    Scene s;
+    const auto ids = s.rope({-1, 0}, {0, 0}, 2, 0.5, 0.5, /*pinTo=*/true);
+    BodyDef bd;
+    bd.position = {0.0, -0.5};
+    const BodyId crate = s.rigid.createBox(bd, {0.5, 0.5}, RigidMaterial{50.0, 0.6, 0.0});
+    s.coupling.attach(ids.back(), crate, {0.0, 0.0}, s.rigid);
+    for (int i = 0; i < 2 * 120; ++i) s.tick();
+    const RigidBodyState c = s.rigid.state(crate);
+    EXPECT_NEAR(c.position.y, -0.5, 0.01);
+    EXPECT_TRUE(std::isfinite(c.position.x) && std::isfinite(s.particles.particles.px[ids[1]]));
+}
