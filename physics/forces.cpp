@@ -2,7 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace phys {
 
@@ -12,8 +17,21 @@ std::optional<double> gravityFromPlanet(std::string_view name) {
     return std::nullopt;
 }
 
-Dynamics::Dynamics(const ForceDef& def, const std::vector<Spring>& springs, const ParticleSet& set)
-    : def_(def), springs_(springs), set_(set), local_(def) {}
+Dynamics::Dynamics(const ForceDef& def, const std::vector<Spring>& springs, const ParticleSet& set,
+                   const SpringTerms* terms)
+    : def_(def), springs_(springs), terms_(terms), set_(set), local_(def) {}
+
+void SpringTerms::build(const std::vector<Spring>& springs) {
+    terms.clear();
+    for (const Spring& s : springs) {
+        if (s.broken) continue;
+        terms.push_back({s.a, s.b, s.restLength, s.stiffness, s.damping});
+        if (s.b == kNoParticle) {
+            if (anchors.size() < terms.size()) anchors.resize(terms.size());
+            anchors[terms.size() - 1] = s.anchor;
+        }
+    }
+}
 
 Vec2 Dynamics::gravityOn(std::size_t i) const {
     if (!active(i) || (set_.flags[i] & kNoGravity)) return {};
@@ -22,8 +40,89 @@ Vec2 Dynamics::gravityOn(std::size_t i) const {
 
 namespace {
 
+// A damped Hooke spring from a to b (or to `anchor` when b is kNoParticle):
+// F_a = -(k (L - L0) + c (v_a - v_b).n) n, n = (p_a - p_b)/L; F_b = -F_a. S is a Spring or
+// a SpringTerms::Term (the same fields).
+template <class S>
+inline void addSpringForce(const S& s, Vec2 anchor, const double* px, const double* py,
+                           const double* vx, const double* vy, double* fx, double* fy) {
+    const bool toAnchor = s.b == kNoParticle;
+    const double bx = toAnchor ? anchor.x : px[s.b], by = toAnchor ? anchor.y : py[s.b];
+    const double dx = px[s.a] - bx, dy = py[s.a] - by;
+    const double len = std::sqrt(dx * dx + dy * dy);
+    if (len <= 0.0) return; // direction undefined; no force
+    const double nx = dx / len, ny = dy / len;
+    const double rvx = vx[s.a] - (toAnchor ? 0.0 : vx[s.b]);
+    const double rvy = vy[s.a] - (toAnchor ? 0.0 : vy[s.b]);
+    const double mag = s.stiffness * (len - s.restLength) + s.damping * (rvx * nx + rvy * ny);
+    fx[s.a] -= mag * nx;
+    fy[s.a] -= mag * ny;
+    if (!toAnchor) {
+        fx[s.b] += mag * nx;
+        fy[s.b] += mag * ny;
+    }
+}
 
 } // namespace
+
+// The spring loop, two springs at a time where SSE2 is there (sqrt and division dominate,
+// and packed they cost what one does), their forces summed into the particles in the
+// springs' order: the same operations and sums, so the same bits, as addSpringForce one
+// spring at a time.
+void Dynamics::springForces(const double* px, const double* py, const double* vx, const double* vy,
+                            double* fx, double* fy) const {
+    const std::vector<SpringTerms::Term>& t = terms_->terms;
+    const std::size_t m = t.size();
+    auto one = [&](std::size_t k) {
+        addSpringForce(t[k], t[k].b == kNoParticle ? terms_->anchors[k] : Vec2{}, px, py, vx, vy,
+                       fx, fy);
+    };
+    std::size_t k = 0;
+#if defined(__SSE2__)
+    alignas(16) double Fx[2], Fy[2];
+    for (; k + 1 < m; k += 2) {
+        const SpringTerms::Term &s0 = t[k], &s1 = t[k + 1];
+        if (s0.b == kNoParticle || s1.b == kNoParticle) {
+            one(k);
+            one(k + 1);
+            continue;
+        }
+        const __m128d dx =
+            _mm_sub_pd(_mm_set_pd(px[s1.a], px[s0.a]), _mm_set_pd(px[s1.b], px[s0.b]));
+        const __m128d dy =
+            _mm_sub_pd(_mm_set_pd(py[s1.a], py[s0.a]), _mm_set_pd(py[s1.b], py[s0.b]));
+        const __m128d len = _mm_sqrt_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)));
+        // A zero length divides by 1 instead (no 0/0 to trap); that spring adds nothing.
+        const __m128d positive = _mm_cmpgt_pd(len, _mm_setzero_pd());
+        const __m128d safe =
+            _mm_or_pd(_mm_and_pd(positive, len), _mm_andnot_pd(positive, _mm_set1_pd(1.0)));
+        const __m128d nx = _mm_div_pd(dx, safe), ny = _mm_div_pd(dy, safe);
+        const __m128d rvx =
+            _mm_sub_pd(_mm_set_pd(vx[s1.a], vx[s0.a]), _mm_set_pd(vx[s1.b], vx[s0.b]));
+        const __m128d rvy =
+            _mm_sub_pd(_mm_set_pd(vy[s1.a], vy[s0.a]), _mm_set_pd(vy[s1.b], vy[s0.b]));
+        const __m128d stretch =
+            _mm_mul_pd(_mm_set_pd(s1.stiffness, s0.stiffness),
+                       _mm_sub_pd(len, _mm_set_pd(s1.restLength, s0.restLength)));
+        const __m128d damp = _mm_mul_pd(_mm_set_pd(s1.damping, s0.damping),
+                                        _mm_add_pd(_mm_mul_pd(rvx, nx), _mm_mul_pd(rvy, ny)));
+        const __m128d mag = _mm_add_pd(stretch, damp);
+        _mm_store_pd(Fx, _mm_mul_pd(mag, nx));
+        _mm_store_pd(Fy, _mm_mul_pd(mag, ny));
+        const int on = _mm_movemask_pd(positive);
+        if (on & 1) {
+            fx[s0.a] -= Fx[0], fy[s0.a] -= Fy[0];
+            fx[s0.b] += Fx[0], fy[s0.b] += Fy[0];
+        }
+        if (on & 2) {
+            fx[s1.a] -= Fx[1], fy[s1.a] -= Fy[1];
+            fx[s1.b] += Fx[1], fy[s1.b] += Fy[1];
+        }
+    }
+#endif
+    for (; k < m; ++k)
+        one(k);
+}
 
 void Dynamics::nonGravityForces(const double* px, const double* py, const double* vx,
                                 const double* vy, double* fx, double* fy) const {
@@ -36,22 +135,12 @@ void Dynamics::nonGravityForces(const double* px, const double* py, const double
     }
 
     // Damped Hooke springs.
-    for (const Spring& s : springs_) {
-        if (s.broken) continue;
-        const bool toAnchor = s.b == kNoParticle;
-        const double bx = toAnchor ? s.anchor.x : px[s.b], by = toAnchor ? s.anchor.y : py[s.b];
-        const double dx = px[s.a] - bx, dy = py[s.a] - by;
-        const double len = std::sqrt(dx * dx + dy * dy);
-        if (len <= 0.0) continue; // direction undefined; no force
-        const double nx = dx / len, ny = dy / len;
-        const double rvx = vx[s.a] - (toAnchor ? 0.0 : vx[s.b]);
-        const double rvy = vy[s.a] - (toAnchor ? 0.0 : vy[s.b]);
-        const double mag = s.stiffness * (len - s.restLength) + s.damping * (rvx * nx + rvy * ny);
-        fx[s.a] -= mag * nx;
-        fy[s.a] -= mag * ny;
-        if (!toAnchor) {
-            fx[s.b] += mag * nx;
-            fy[s.b] += mag * ny;
+    if (terms_) {
+        springForces(px, py, vx, vy, fx, fy);
+    } else {
+        for (const Spring& s : springs_) {
+            if (s.broken) continue;
+            addSpringForce(s, s.anchor, px, py, vx, vy, fx, fy);
         }
     }
 
@@ -222,8 +311,11 @@ int applyBlast(ParticleSet& set, const Blast& blast) {
 
 int updateSprings(std::vector<Spring>& springs, const ParticleSet& set, double dt) {
     int broke = 0;
+    constexpr double inf = std::numeric_limits<double>::infinity();
     for (Spring& s : springs) {
         if (s.broken || !(s.restLength > 0.0)) continue;
+        // Neither breaks nor flows, whatever its strain: nothing to measure.
+        if (!(s.breakStrain < inf) && !(s.yieldStrain < inf && s.plasticRate > 0.0)) continue;
         const Vec2 b = s.b == kNoParticle ? s.anchor : set.position(s.b);
         const double len = length(set.position(s.a) - b);
         const double strain = (len - s.restLength) / s.restLength;

@@ -154,11 +154,30 @@ struct LocalForceLaw {
     }
 };
 
+/// The unbroken springs as the force loop reads them, in their order: the two ends and
+/// the three coefficients, 32 bytes a spring instead of a Spring's 80, so that a cloth's
+/// springs stay in cache across the sub-steps of a tick. The world builds it once per
+/// tick (springs break and yield only between ticks).
+struct SpringTerms {
+    struct Term {
+        ParticleId a = kNoParticle;
+        ParticleId b = kNoParticle; ///< kNoParticle: to anchors[k]
+        double restLength = 0.0, stiffness = 0.0, damping = 0.0;
+    };
+    std::vector<Term> terms;
+    std::vector<Vec2> anchors; ///< anchors[k] for a term k that ends at an anchor; else unset
+    /// Rebuilds from `springs` (keeps its buffers).
+    void build(const std::vector<Spring>& springs);
+};
+
 /// The right-hand side of the equations of motion for a particle set: given a trial
 /// state, the acceleration of every slot. Fixed, dead and sleeping slots get 0.
 class Dynamics {
   public:
-    Dynamics(const ForceDef& def, const std::vector<Spring>& springs, const ParticleSet& set);
+    /// `terms`, when given, is SpringTerms built from `springs`, which the force loop then
+    /// reads instead (same forces, same bits).
+    Dynamics(const ForceDef& def, const std::vector<Spring>& springs, const ParticleSet& set,
+             const SpringTerms* terms = nullptr);
 
     /// a = g + F/m for every slot, at state (px, py, vx, vy).
     void accelerations(const double* px, const double* py, const double* vx, const double* vy,
@@ -212,8 +231,11 @@ class Dynamics {
     const std::vector<Spring>& springs() const { return springs_; }
 
   private:
+    void springForces(const double* px, const double* py, const double* vx, const double* vy,
+                      double* fx, double* fy) const;
     const ForceDef& def_;
     const std::vector<Spring>& springs_;
+    const SpringTerms* terms_;
     const ParticleSet& set_;
     LocalForceLaw local_;
 };

@@ -1,5 +1,7 @@
 #include "physics/integrators.h"
 
+#include "physics/model_pass.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -47,25 +49,13 @@ void symplecticEuler(const Dynamics& dyn, ParticleSet& s, double dt, IntegratorS
     if (dyn.onlyLocalForces()) {
         // Fused: each particle's acceleration depends on its own state only, so force
         // evaluation and update share one pass over memory (same arithmetic, same bits
-        // as the general path). Parameters are copied to locals so they stay in registers.
+        // as the general path). A closed-form particle only drifts: the world sets it
+        // from its parabola after the step.
         const LocalForceLaw law = dyn.localLaw();
         const Vec2 g = dyn.def().gravity;
-        double *px = s.px.data(), *py = s.py.data(), *vx = s.vx.data(), *vy = s.vy.data();
-        const double *im = s.invMass.data(), *rad = s.radius.data(), *cd = s.dragCd.data();
-        const std::uint32_t* fl = s.flags.data();
         for (std::size_t i = 0; i < n; ++i) {
-            const std::uint32_t f = fl[i];
-            if (!(im[i] > 0.0) || (f & (kAlive | kSleeping | kBallistic)) != kAlive) { // no forces
-                px[i] += dt * vx[i];
-                py[i] += dt * vy[i];
-                continue;
-            }
-            const Vec2 force = law.force(f, rad[i], cd[i], py[i], vx[i], vy[i]);
-            const double gx = (f & kNoGravity) ? 0.0 : g.x, gy = (f & kNoGravity) ? 0.0 : g.y;
-            vx[i] += dt * (gx + im[i] * force.x);
-            vy[i] += dt * (gy + im[i] * force.y);
-            px[i] += dt * vx[i];
-            py[i] += dt * vy[i];
+            const std::uint32_t f = s.flags[i];
+            symplecticLocalStep(s, i, (f & kBallistic) ? 0u : f, law, g, dt); // 0: no forces
         }
         return;
     }

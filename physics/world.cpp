@@ -1,7 +1,5 @@
 #include "physics/world.h"
 
-#include "physics/ballistics.h"
-
 #include <chrono>
 #include <cmath>
 
@@ -11,6 +9,11 @@ namespace {
 using ProfileClock = std::chrono::steady_clock;
 double microsSince(ProfileClock::time_point t0) {
     return std::chrono::duration<double, std::micro>(ProfileClock::now() - t0).count();
+}
+// The unit vector against gravity, or zero without gravity.
+Vec2 upward(Vec2 g) {
+    const double l = length(g);
+    return l > 0.0 ? g / -l : Vec2{};
 }
 } // namespace
 
@@ -45,12 +48,15 @@ const char* modelPolicyName(ModelPolicy p) {
     return p == ModelPolicy::Auto ? "auto" : "integrate";
 }
 
+// Which particles are tied to a spring or a rod: they stay on the integrator and never
+// sleep. Without springs and rods nothing is, and no sweep is needed to say so.
 void World::markTethered() {
+    tethered_.clear();
+    if (springs.empty() && constraints.empty()) return;
     tethered_.assign(particles.slots(), 0);
-    for (const Spring& sp : springs)
-        if (!sp.broken)
-            for (const ParticleId id : {sp.a, sp.b})
-                if (id < tethered_.size()) tethered_[id] = 1;
+    for (const SpringTerms::Term& sp : springTerms_.terms) // the unbroken springs
+        for (const ParticleId id : {sp.a, sp.b})
+            if (id < tethered_.size()) tethered_[id] = 1;
     for (const DistanceConstraint& c : constraints)
         for (const ParticleId id : {c.a, c.b})
             if (id < tethered_.size()) tethered_[id] = 1;
@@ -58,89 +64,56 @@ void World::markTethered() {
 
 // Which particles may follow the closed form this tick: alive, free, awake, and acted on
 // by uniform gravity alone (no drag reaching them, no springs or rods, no point gravity,
-// no water within reach this tick).
-void World::chooseModels() {
-    const ForceDef& f = def_.forces;
-    const bool airDrag = (f.drag == DragModel::Quadratic && f.airDensity > 0.0) ||
-                         (f.drag == DragModel::Linear && f.linearDrag > 0.0);
-    const double g = length(f.gravity);
-    for (std::size_t i = 0; i < particles.slots(); ++i) {
-        std::uint32_t& fl = particles.flags[i];
-        bool closed = def_.model == ModelPolicy::Auto && (fl & kAlive) &&
-                      !(fl & kSleeping) && particles.invMass[i] > 0.0 && !tethered_[i] &&
-                      !(airDrag && !(fl & kNoDrag)) && !(f.pointGravity && (fl & kAttractor)) &&
-                      !(fl & kNoGravity);
-        if (closed && f.water) {
-            // Stay clear of the water for the whole tick: the farthest it can fall.
-            const double reach = std::abs(particles.vy[i]) * def_.tickSeconds +
-                                 g * def_.tickSeconds * def_.tickSeconds + particles.radius[i];
-            closed = particles.py[i] - reach > f.waterLevel;
-        }
-        if (closed) {
-            if (!(fl & kBallistic)) {
-                fl |= kBallistic;
-                particles.launchT[i] = NAN; // launched at the first sub-step
-            }
-        } else if (fl & kBallistic) {
-            // Promoted to the integrator from its exact state; history from before the
-            // closed form would be stale.
-            fl &= ~(kBallistic | kVerletPrimed | kLeapfrogPrimed);
-        }
-    }
+// no water within reach this tick). Counts the models on the way.
+ModelCounts World::chooseModels(const ModelRule& rule) {
+    ModelCounts counts;
+    for (std::size_t i = 0; i < particles.slots(); ++i)
+        countModel(counts, chooseModel(particles, i, rule), particles.invMass[i]);
+    return counts;
 }
 
 // (Re)launch every closed-form particle whose state is not on its parabola any more (new,
 // bounced, pushed by a blast or a command): the parabola starts from where it is now.
 void World::launchBallistic(double now) {
-    const Vec2 g = def_.forces.gravity;
-    ParticleSet& s = particles;
-    for (std::size_t i = 0; i < s.slots(); ++i) {
-        if (!(s.flags[i] & kBallistic)) continue;
-        bool on = std::isfinite(s.launchT[i]);
-        if (on) {
-            const double t = now - s.launchT[i];
-            const BallisticState e = ballisticState({s.launchX[i], s.launchY[i]},
-                                                    {s.launchVx[i], s.launchVy[i]}, g, t);
-            on = e.position.x == s.px[i] && e.position.y == s.py[i] && e.velocity.x == s.vx[i] &&
-                 e.velocity.y == s.vy[i];
-        }
-        if (!on) {
-            s.launchX[i] = s.px[i];
-            s.launchY[i] = s.py[i];
-            s.launchVx[i] = s.vx[i];
-            s.launchVy[i] = s.vy[i];
-            s.launchT[i] = now;
-        }
-    }
+    for (std::size_t i = 0; i < particles.slots(); ++i)
+        if (particles.flags[i] & kBallistic)
+            phys::launchBallistic(particles, i, def_.forces.gravity, now);
 }
 
 // The closed form at the end of the sub-step: exact, whatever h.
 void World::advanceBallistic(double now) {
-    const Vec2 g = def_.forces.gravity;
-    ParticleSet& s = particles;
-    for (std::size_t i = 0; i < s.slots(); ++i) {
-        if (!(s.flags[i] & kBallistic)) continue;
-        const BallisticState e = ballisticState({s.launchX[i], s.launchY[i]},
-                                                {s.launchVx[i], s.launchVy[i]}, g, now - s.launchT[i]);
-        s.px[i] = e.position.x;
-        s.py[i] = e.position.y;
-        s.vx[i] = e.velocity.x;
-        s.vy[i] = e.velocity.y;
-    }
+    for (std::size_t i = 0; i < particles.slots(); ++i)
+        if (particles.flags[i] & kBallistic)
+            phys::advanceBallistic(particles, i, def_.forces.gravity, now);
+}
+
+ModelCounts World::countModels() const {
+    ModelCounts counts;
+    for (std::size_t i = 0; i < particles.slots(); ++i)
+        countModel(counts, particles.flags[i], particles.invMass[i]);
+    return counts;
 }
 
 void World::step() {
     const auto t0 = ProfileClock::now();
     const double h = def_.tickSeconds / def_.substeps;
-    const Dynamics dynamics(def_.forces, springs, particles);
+    springTerms_.build(springs); // before markTethered, which reads it
+    const Dynamics dynamics(def_.forces, springs, particles, &springTerms_);
     const bool colliding = def_.collision.model != ContactModel::None;
+    // Symplectic Euler with forces that act on each particle alone (a sky full of shells
+    // under drag): model choice, closed form, integration and the model count are one
+    // sweep per sub-step (model_pass.h) instead of five.
+    const bool fused = def_.integrator == Integrator::SymplecticEuler && dynamics.onlyLocalForces();
     profile_ = {};
     collisions_.clearEvents();
 
     // 0. Models: the closed form for what only gravity acts on, the integrator for the rest.
     auto t = ProfileClock::now();
     markTethered();
-    chooseModels();
+    const ModelRule rule(def_.forces, def_.model == ModelPolicy::Auto, def_.tickSeconds,
+                         tethered_.empty() ? nullptr : tethered_.data());
+    ModelCounts counts;
+    if (!fused) counts = chooseModels(rule);
     profile_.integrateUs += microsSince(t);
 
     for (int s = 0; s < def_.substeps; ++s) {
@@ -150,9 +123,15 @@ void World::step() {
         t = ProfileClock::now();
         const double start = time_ + s * h, end = time_ + (s + 1) * h;
         if (colliding) collisions_.beginSubstep(particles);
-        launchBallistic(start);
-        integrate(def_.integrator, dynamics, particles, h, scratch_, def_.implicit);
-        advanceBallistic(end);
+        if (fused) {
+            counts = symplecticFlightPass(particles, def_.forces, s == 0 ? &rule : nullptr, h,
+                                          start, end);
+        } else {
+            const bool closedForm = counts.closedForm > 0; // else no kBallistic this tick
+            if (closedForm) launchBallistic(start);
+            integrate(def_.integrator, dynamics, particles, h, scratch_, def_.implicit);
+            if (closedForm) advanceBallistic(end);
+        }
         profile_.integrateUs += microsSince(t);
 
         // 3-4. Collide and resolve: impacts at their time of impact, resting contact.
@@ -167,9 +146,13 @@ void World::step() {
     }
 
     // 5. Sleep: resting particles fall asleep; anything tied to a spring or constraint
-    // stays awake (the other end may move).
+    // stays awake (the other end may move). Without contacts nothing rests, so nothing
+    // falls asleep and the sweep is skipped.
     t = ProfileClock::now();
-    collisions_.updateSleep(particles, def_.collision, def_.tickSeconds, tethered_);
+    if (colliding)
+        collisions_.updateSleep(particles, def_.collision, def_.tickSeconds, tethered_);
+    else
+        collisions_.noContactsThisTick(counts.asleep);
     profile_.resolveUs += microsSince(t);
 
     // 6. Springs yield and break once per tick, from the state the tick ended in.
@@ -177,15 +160,13 @@ void World::step() {
     brokenSprings_ += updateSprings(springs, particles, def_.tickSeconds);
     profile_.springsUs = microsSince(t);
 
-    // What each model cost this tick is in the phases above; how many were in each:
-    for (std::size_t i = 0; i < particles.slots(); ++i) {
-        const std::uint32_t fl = particles.flags[i];
-        if (!(fl & kAlive)) continue;
-        if (particles.invMass[i] <= 0.0) ++profile_.fixed;
-        else if (fl & kSleeping) ++profile_.sleeping;
-        else if (fl & kBallistic) ++profile_.closedForm;
-        else ++profile_.integrated;
-    }
+    // What each model cost this tick is in the phases above; how many were in each (the
+    // model sweep counted them, unless contacts woke or put particles to sleep since):
+    if (colliding) counts = countModels();
+    profile_.closedForm = counts.closedForm;
+    profile_.integrated = counts.integrated;
+    profile_.sleeping = counts.sleeping;
+    profile_.fixed = counts.fixed;
 
     ++tick_;
     time_ += def_.tickSeconds;
@@ -200,7 +181,8 @@ void World::collideAndResolve(double h, double tickTime) {
     if (def_.collision.model == ContactModel::Penalty)
         collisions_.penaltyPhase(particles, shapes, materials, def_.collision, h, tickTime);
     else
-        collisions_.impulsePhase(particles, shapes, materials, def_.collision, h, tickTime);
+        collisions_.impulsePhase(particles, shapes, materials, def_.collision, h, tickTime,
+                                 upward(def_.forces.gravity));
     const double detect = collisions_.detectMicros() - detectBefore;
     profile_.collideUs += detect;
     profile_.resolveUs += microsSince(t) - detect;

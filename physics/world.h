@@ -12,6 +12,7 @@
 #include "physics/forces.h"
 #include "physics/integrators.h"
 #include "physics/materials.h"
+#include "physics/model_pass.h"
 #include "physics/particles.h"
 
 #include <cstdint>
@@ -100,13 +101,15 @@ class World {
     WorldDef def_;
     void collideAndResolve(double h, double tickTime);
     void markTethered();
-    void chooseModels();
+    ModelCounts chooseModels(const ModelRule& rule);
+    ModelCounts countModels() const;
     void launchBallistic(double now);
     void advanceBallistic(double now);
     IntegratorScratch scratch_;
+    SpringTerms springTerms_; ///< the springs as the force loop reads them, this tick
     ParticleCollisions collisions_;
     ConstraintScratch constraintScratch_;
-    std::vector<std::uint8_t> tethered_;
+    std::vector<std::uint8_t> tethered_; ///< per slot; empty when no spring or rod exists
     double constraintError_ = 0.0;
     StepProfile profile_;
     std::uint64_t tick_ = 0;

@@ -379,8 +379,8 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
                       b.n, b.particleMs, b.streamMs, b.ratio(), b.ratio() <= 1.5 ? "met" : "NOT met");
         out << line;
         std::snprintf(line, sizeof line,
-                      "  of which the integrate phase %.3g ms: ratio %.2f (the rest: World::step's "
-                      "per-tick sleep and spring passes)\n",
+                      "  of which the fused model + integrate sweep %.3g ms: ratio %.2f (the rest: "
+                      "World::step's per-tick bookkeeping around it)\n",
                       b.integrateMs, b.integrateRatio());
         out << line;
         std::snprintf(line, sizeof line,

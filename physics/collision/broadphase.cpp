@@ -31,10 +31,12 @@ std::int64_t cellOf(double x, double inv) {
     const double c = std::floor(x * inv);
     return static_cast<std::int64_t>(std::clamp(c, -1e15, 1e15));
 }
+// Bucket of a cell: two large odd multipliers, then the high half folded onto the low
+// half (the low bits of a product depend on the low bits of the factors only).
 std::uint64_t cellHash(std::int64_t cx, std::int64_t cy) {
-    // Two large odd multipliers mixed with xor: neighbouring cells spread over buckets.
-    return (static_cast<std::uint64_t>(cx) * 0x9E3779B97F4A7C15ull) ^
-           (static_cast<std::uint64_t>(cy) * 0xC2B2AE3D27D4EB4Full);
+    const std::uint64_t h = static_cast<std::uint64_t>(cx) * 0x9E3779B97F4A7C15ull +
+                            static_cast<std::uint64_t>(cy) * 0xC2B2AE3D27D4EB4Full;
+    return h ^ (h >> 29) ^ (h >> 47);
 }
 } // namespace
 
@@ -55,18 +57,22 @@ void UniformGrid::findPairs(std::span<const Aabb> boxes, std::span<const ProxyKi
     const double inv = 1.0 / cellSize;
 
     // Enter every box in the cells it covers (too big: aside).
+    ranges_.resize(n);
+    placed_.assign(n, 0);
     entries_.clear();
     oversize_.clear();
     for (std::uint32_t i = 0; i < n; ++i) {
         if (kinds[i] == ProxyKind::None) continue;
-        const std::int64_t x0 = cellOf(boxes[i].lo.x, inv), x1 = cellOf(boxes[i].hi.x, inv);
-        const std::int64_t y0 = cellOf(boxes[i].lo.y, inv), y1 = cellOf(boxes[i].hi.y, inv);
-        if ((x1 - x0 + 1) * (y1 - y0 + 1) > kMaxCellsPerBox) {
+        const CellRange r{cellOf(boxes[i].lo.x, inv), cellOf(boxes[i].lo.y, inv),
+                          cellOf(boxes[i].hi.x, inv), cellOf(boxes[i].hi.y, inv)};
+        if ((r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) > kMaxCellsPerBox) {
             oversize_.push_back(i);
             continue;
         }
-        for (std::int64_t cx = x0; cx <= x1; ++cx)
-            for (std::int64_t cy = y0; cy <= y1; ++cy)
+        ranges_[i] = r;
+        placed_[i] = 1;
+        for (std::int64_t cx = r.x0; cx <= r.x1; ++cx)
+            for (std::int64_t cy = r.y0; cy <= r.y1; ++cy)
                 entries_.push_back({cx, cy, i});
     }
 
@@ -74,43 +80,64 @@ void UniformGrid::findPairs(std::span<const Aabb> boxes, std::span<const ProxyKi
     const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(2 * entries_.size(), 16));
     const std::uint64_t mask = buckets - 1;
     bucketStart_.assign(buckets + 1, 0);
-    for (const Entry& e : entries_)
-        ++bucketStart_[(cellHash(e.cx, e.cy) & mask) + 1];
+    bucketOf_.resize(entries_.size());
+    for (std::size_t k = 0; k < entries_.size(); ++k) {
+        bucketOf_[k] = static_cast<std::uint32_t>(cellHash(entries_[k].cx, entries_[k].cy) & mask);
+        ++bucketStart_[bucketOf_[k] + 1];
+    }
     for (std::size_t b = 0; b < buckets; ++b)
         bucketStart_[b + 1] += bucketStart_[b];
     sorted_.resize(entries_.size());
-    for (const Entry& e : entries_)
-        sorted_[bucketStart_[cellHash(e.cx, e.cy) & mask]++] = e;
-    // bucketStart_[b] now holds the end of bucket b; bucket b starts at the end of b - 1.
+    for (std::size_t k = 0; k < entries_.size(); ++k)
+        sorted_[bucketStart_[bucketOf_[k]]++] = entries_[k];
+    // bucketStart_[b] now holds the end of bucket b, which is where bucket b + 1 starts.
 
-    // Pairs sharing a cell, reported from the cell of the intersection's low corner.
-    std::uint32_t begin = 0;
-    for (std::size_t b = 0; b < buckets; ++b) {
-        const std::uint32_t end = bucketStart_[b];
-        for (std::uint32_t u = begin; u < end; ++u)
-            for (std::uint32_t v = u + 1; v < end; ++v) {
-                const Entry &e = sorted_[u], &f = sorted_[v];
-                if (e.cx != f.cx || e.cy != f.cy || e.proxy == f.proxy) continue;
-                const std::uint32_t a = e.proxy, c = f.proxy;
-                if (!pairable(kinds[a], kinds[c]) || !boxes[a].overlaps(boxes[c])) continue;
-                const double lx = std::max(boxes[a].lo.x, boxes[c].lo.x);
-                const double ly = std::max(boxes[a].lo.y, boxes[c].lo.y);
-                if (cellOf(lx, inv) != e.cx || cellOf(ly, inv) != e.cy) continue;
-                out.push_back(ordered(a, c));
-            }
-        begin = end;
-    }
-    // Oversized boxes against everything (each pair once).
-    for (std::size_t k = 0; k < oversize_.size(); ++k) {
-        const std::uint32_t a = oversize_[k];
-        for (std::uint32_t c = 0; c < n; ++c) {
-            if (c == a || !pairable(kinds[a], kinds[c]) || !boxes[a].overlaps(boxes[c])) continue;
-            const bool otherOversize = std::binary_search(oversize_.begin(), oversize_.end(), c);
-            if (otherOversize && c < a) continue; // found from c's side
-            out.push_back(ordered(a, c));
+    // Each box gathers its partners of higher index from the cells it covers (and among
+    // the oversized boxes); sorted, they extend the sorted output. A pair sharing several
+    // cells counts in the lowest of them, the low corner of where their cell ranges meet.
+    // The tests of an entry are combined without branches: which entries pass is as good
+    // as random, and a mispredicted branch costs more than the whole test.
+    partners_.resize(n); // room for every partner a box can have
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (kinds[i] == ProxyKind::None) continue;
+        std::uint32_t found = 0;
+        auto meet = [&](std::uint32_t c) {
+            if (pairable(kinds[i], kinds[c]) && boxes[i].overlaps(boxes[c])) partners_[found++] = c;
+        };
+        if (placed_[i]) {
+            const CellRange& r = ranges_[i];
+            const Aabb& box = boxes[i];
+            const bool moving = kinds[i] == ProxyKind::Moving;
+            for (std::int64_t cx = r.x0; cx <= r.x1; ++cx)
+                for (std::int64_t cy = r.y0; cy <= r.y1; ++cy) {
+                    const std::size_t b = cellHash(cx, cy) & mask;
+                    const std::uint32_t end = bucketStart_[b];
+                    for (std::uint32_t k = b == 0 ? 0 : bucketStart_[b - 1]; k < end; ++k) {
+                        const Entry& e = sorted_[k];
+                        const std::uint32_t c = e.proxy;
+                        const CellRange& rc = ranges_[c];
+                        const Aabb& o = boxes[c];
+                        const std::int64_t lowX = std::max(r.x0, rc.x0),
+                                           lowY = std::max(r.y0, rc.y0);
+                        unsigned hit = c > i;
+                        hit &= (e.cx == cx) & (e.cy == cy) & (lowX == cx) & (lowY == cy);
+                        hit &= moving | (kinds[c] == ProxyKind::Moving);
+                        hit &= (box.lo.x <= o.hi.x) & (o.lo.x <= box.hi.x);
+                        hit &= (box.lo.y <= o.hi.y) & (o.lo.y <= box.hi.y);
+                        partners_[found] = c;
+                        found += hit;
+                    }
+                }
+            for (const std::uint32_t c : oversize_)
+                if (c > i) meet(c);
+        } else { // oversized: against every box after it
+            for (std::uint32_t c = i + 1; c < n; ++c)
+                if (kinds[c] != ProxyKind::None) meet(c);
         }
+        std::sort(partners_.begin(), partners_.begin() + found);
+        for (std::uint32_t k = 0; k < found; ++k)
+            out.push_back({i, partners_[k]});
     }
-    std::sort(out.begin(), out.end());
 }
 
 void SortAndSweep::findPairs(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds,

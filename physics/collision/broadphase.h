@@ -2,11 +2,12 @@
 //
 // Uniform grid (the default, notes 002 "spatial partitioning"): every box is entered in
 // the cells it covers, the entries are bucketed by a hash of their cell with a counting
-// sort, and only boxes sharing a cell are tested. A pair that shares several cells is
-// reported only from the cell holding the low corner of the two boxes' intersection,
-// so it appears once. With cells about the size of the boxes, each box covers a few
-// cells and meets a few neighbours: O(n) for n boxes spread over a level. Boxes too big
-// for the grid (a long floor segment) are kept aside and tested against every box.
+// sort into flat arrays, and only boxes sharing a cell are tested. Each box then looks
+// up the cells it covers for partners of higher index (a partner met in several cells
+// counts once), so the pairs come out sorted, without a sort of the whole list. With
+// cells about the size of the boxes, each box covers a few cells and meets a few
+// neighbours: O(n) for n boxes spread over a level. Boxes too big for the grid (a long
+// floor segment) are kept aside and tested against every box.
 //
 // Sort and sweep (the notes' "plane sweep", 002): sort the boxes by their low end on
 // one axis, sweep, and keep an active list of boxes whose interval is still open;
@@ -51,9 +52,16 @@ class UniformGrid {
         std::int64_t cx, cy;
         std::uint32_t proxy;
     };
-    std::vector<Entry> entries_, sorted_;
-    std::vector<std::uint32_t> bucketStart_;
+    struct CellRange {
+        std::int64_t x0, y0, x1, y1;
+    };
+    std::vector<CellRange> ranges_;          ///< per proxy: the cells its box covers
+    std::vector<std::uint8_t> placed_;       ///< per proxy: entered in the grid
+    std::vector<Entry> entries_, sorted_;    ///< (cell, proxy), then bucketed by cell
+    std::vector<std::uint32_t> bucketOf_;    ///< per entry
+    std::vector<std::uint32_t> bucketStart_; ///< counting sort offsets, buckets + 1
     std::vector<std::uint32_t> oversize_;
+    std::vector<std::uint32_t> partners_; ///< one proxy's partners, before sorting
 };
 
 /// The static shapes in a grid of their own, built once per StaticShapes::version():
@@ -66,6 +74,10 @@ class StaticShapeIndex {
     /// Indices (in StaticShapes::ref order) of the shapes whose box overlaps `box`,
     /// sorted and unique; appended to `out` after clearing it.
     void query(const Aabb& box, std::vector<std::uint32_t>& out) const;
+    /// The box of shape i (StaticShapes::ref order), as of the last update.
+    const Aabb& box(std::size_t i) const { return boxes_[i]; }
+    /// StaticShapes::version() of the last update.
+    std::uint64_t version() const { return version_; }
 
   private:
     std::uint64_t version_ = 0;

@@ -14,6 +14,10 @@ std::string validate(const CollisionDef& d) {
     if (d.maxAdvanceIterations < 1 || d.maxAdvanceIterations > 10000)
         return "collision advance iterations must be in 1..10000";
     if (d.maxPasses < 1 || d.maxPasses > 1000) return "collision passes must be in 1..1000";
+    if (d.relaxVelocitySweeps < 1 || d.relaxVelocitySweeps > 1000)
+        return "contact solver velocity sweeps must be in 1..1000";
+    if (d.relaxPositionSweeps < 1 || d.relaxPositionSweeps > 1000)
+        return "contact solver position sweeps must be in 1..1000";
     if (!(d.restingSpeed >= 0.0) || !std::isfinite(d.restingSpeed))
         return "resting speed must be >= 0 m/s";
     if (!(d.sleepSpeed >= 0.0) || !std::isfinite(d.sleepSpeed))

@@ -31,6 +31,16 @@ struct CollisionDef {
     /// Detect-and-resolve passes per sub-step: each finds the impacts that the previous
     /// pass's bounces lead to later in the same step, >= 1.
     int maxPasses = 8;
+    /// Resting contacts between two free particles (a pile, a stack) go to the contact
+    /// solver at the end of the step, which settles them all at once, instead of pass
+    /// after pass settling them one layer at a time. Impacts, and resting contacts with
+    /// static shapes and immovable particles, stay exact at their time of impact.
+    bool restingPairsToSolver = true;
+    /// Sweeps of the end-of-step contact solver (sequential impulses, then projection),
+    /// which settles the contacts the passes leave: of velocity impulses (>= 1) and of
+    /// position projection (>= 1).
+    int relaxVelocitySweeps = 8;
+    int relaxPositionSweeps = 4;
     bool particlePairs = true; ///< particles collide with each other, not only with shapes
     /// m/s: a contact closing slower than this plus the speed its acceleration builds in
     /// one step (|a.n| dt, Millington's resting-contact rule) is resting: no bounce,

@@ -71,7 +71,7 @@ std::optional<double> sweptSphere(const ConvexPolygon& poly, double r, Vec2 p0, 
 template <class Shape>
 std::optional<double> timeOfImpact(const Shape& shape, double radius, const PathMotion& m,
                                    double tEnd, const ToiSettings& s) {
-    auto gap = [&](double t) { return closestPoint(shape, m.position(t)).distance - radius; };
+    auto gap = [&](double t) { return distanceTo(shape, m.position(t)) - radius; };
     const double t0 = m.t0;
     if (!(tEnd > t0)) return std::nullopt;
     const SurfacePoint start = closestPoint(shape, m.p);

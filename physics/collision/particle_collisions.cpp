@@ -14,9 +14,6 @@ namespace {
 constexpr std::uint32_t kHistory = kVerletPrimed | kLeapfrogPrimed;
 // m/s: slower sliding than this is rounding residue of a stop, not motion.
 constexpr double kRestSlide = 1e-9;
-// Sweeps over the particle pairs when projecting overlaps apart (after one over the
-// static contacts); each sweep shrinks what the previous one left.
-constexpr int kProjectionSweeps = 4;
 
 // Calls f with the concrete shape behind a reference (no virtual call per contact).
 template <class F> auto withShape(const StaticShapes& shapes, ShapeRef ref, F&& f) {
@@ -56,6 +53,7 @@ void ParticleCollisions::beginSubstep(const ParticleSet& set) {
 void ParticleCollisions::buildPaths(const ParticleSet& set, double h) {
     const std::size_t n = set.slots();
     growTo(path_, n), growTo(sv_, n), growTo(sa_, n), growTo(touched_, n), growTo(resting_, n);
+    growTo(pathChanged_, n), growTo(accel0_, n);
     const double k = 2.0 / (h * h);
     for (std::size_t i = 0; i < n; ++i) {
         const Vec2 p0{x0_[i], y0_[i]}, v0{vx0_[i], vy0_[i]};
@@ -63,15 +61,18 @@ void ParticleCollisions::buildPaths(const ParticleSet& set, double h) {
         path_[i] = {p0, v0, (p1 - p0 - v0 * h) * k, 0.0};
         sv_[i] = v0;
         sa_[i] = (v1 - v0) / h;
+        accel0_[i] = length(sa_[i]);
         touched_[i] = 0;
     }
 }
 
 void ParticleCollisions::buildProxies(const ParticleSet& set, const StaticShapes& shapes,
-                                      const CollisionDef& def, double h, bool atEndOnly) {
+                                      const CollisionDef& def, double h, bool atEndOnly,
+                                      double grow) {
     const std::size_t n = set.slots();
     boxes_.resize(n);
     kinds_.resize(n);
+    margin_.resize(n);
     staticIndex_.update(shapes);
     staticHits_.reserve(shapes.count()); // the most a query can return: no growth later
     for (std::size_t i = 0; i < n; ++i) {
@@ -91,33 +92,90 @@ void ParticleCollisions::buildProxies(const ParticleSet& set, const StaticShapes
                 lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
                 hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
             }
-        const double r = set.radius[i] + def.toiTolerance;
+        const double r = set.radius[i] * (1.0 + grow) + def.toiTolerance;
         boxes_[i] = {lo - Vec2{r, r}, hi + Vec2{r, r}};
+        // For the pair cache: room for a radius of play (contacts push particles by up
+        // to centimetres in a pile) and a step of motion.
+        margin_[i] = set.radius[i] + length(m.v) * h;
     }
 }
 
-void ParticleCollisions::findPairs(const CollisionDef& def) {
-    // Particle against particle: the chosen broad phase over the particles' boxes.
+// The broad phase proper runs on fattened boxes (each particle's box grown by a margin
+// and by a step of its motion) and its pairs are kept: a pass only filters them by the
+// exact boxes, which gives exactly the pairs a broad phase over the exact boxes would.
+// That holds while every exact box lies in its fat box and nothing else changed (kinds,
+// slots, shapes, settings); the first pass where that fails rebuilds the cache. A pile
+// settling through eight passes a step, or resting for many steps, then costs one broad
+// phase instead of one a pass.
+bool ParticleCollisions::pairCacheHolds(const CollisionDef& def) const {
+    const std::size_t n = boxes_.size();
+    if (!cacheValid_ || fatBoxes_.size() != n || cachedShapes_ != staticIndex_.version() ||
+        cachedBroadPhase_ != def.broadPhase || cachedCellSize_ != def.gridCellSize)
+        return false;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (kinds_[i] != fatKinds_[i]) return false;
+        const Aabb &b = boxes_[i], &f = fatBoxes_[i];
+        const bool inside =
+            (f.lo.x <= b.lo.x) & (f.lo.y <= b.lo.y) & (b.hi.x <= f.hi.x) & (b.hi.y <= f.hi.y);
+        if (kinds_[i] != ProxyKind::None && !inside) return false;
+    }
+    return true;
+}
+
+void ParticleCollisions::buildPairCache(const CollisionDef& def) {
+    const std::size_t n = boxes_.size();
+    fatBoxes_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2 grow{margin_[i], margin_[i]};
+        fatBoxes_[i] = {boxes_[i].lo - grow, boxes_[i].hi + grow};
+    }
+    fatKinds_ = kinds_;
+    // Particle against particle: the chosen broad phase; each gives the pairs sorted.
     switch (def.broadPhase) {
     case BroadPhase::Grid:
-        grid_.findPairs(boxes_, kinds_, pairs_, def.gridCellSize);
+        grid_.findPairs(fatBoxes_, fatKinds_, particlePairs_, def.gridCellSize);
         break;
     case BroadPhase::SortAndSweep:
-        sweep_.findPairs(boxes_, kinds_, pairs_);
+        sweep_.findPairs(fatBoxes_, fatKinds_, particlePairs_);
         break;
     case BroadPhase::AllPairs:
-        allPairs(boxes_, kinds_, pairs_);
+        allPairs(fatBoxes_, fatKinds_, particlePairs_);
         break;
     }
     // Particle against static shape: moving particles look up the static index. A shape's
-    // proxy number is slots + its index, as the narrow phase expects.
-    const auto n = static_cast<std::uint32_t>(boxes_.size());
-    for (std::uint32_t i = 0; i < n; ++i) {
-        if (kinds_[i] != ProxyKind::Moving) continue;
-        staticIndex_.query(boxes_[i], staticHits_);
-        for (const std::uint32_t s : staticHits_) pairs_.push_back({i, n + s});
+    // proxy number is slots + its index, as the narrow phase expects; these come out
+    // sorted too, so one merge gives the whole list in order.
+    const auto slots = static_cast<std::uint32_t>(n);
+    staticPairs_.clear();
+    for (std::uint32_t i = 0; i < slots; ++i) {
+        if (fatKinds_[i] != ProxyKind::Moving) continue;
+        staticIndex_.query(fatBoxes_[i], staticHits_);
+        for (const std::uint32_t s : staticHits_)
+            staticPairs_.push_back({i, slots + s});
     }
-    std::sort(pairs_.begin(), pairs_.end());
+    cachedPairs_.resize(particlePairs_.size() + staticPairs_.size());
+    std::merge(particlePairs_.begin(), particlePairs_.end(), staticPairs_.begin(),
+               staticPairs_.end(), cachedPairs_.begin());
+    cacheValid_ = true;
+    cachedShapes_ = staticIndex_.version();
+    cachedBroadPhase_ = def.broadPhase;
+    cachedCellSize_ = def.gridCellSize;
+    ++stats_.broadPhases;
+}
+
+void ParticleCollisions::findPairs(const CollisionDef& def) {
+    if (!pairCacheHolds(def)) buildPairCache(def);
+    // Kept pairs whose exact boxes overlap; without branches (which pass is a coin toss).
+    const auto n = static_cast<std::uint32_t>(boxes_.size());
+    pairs_.resize(cachedPairs_.size());
+    std::size_t kept = 0;
+    for (const ProxyPair& p : cachedPairs_) {
+        const Aabb& a = boxes_[p.first];
+        const Aabb& b = p.second < n ? boxes_[p.second] : staticIndex_.box(p.second - n);
+        pairs_[kept] = p;
+        kept += (a.lo.x <= b.hi.x) & (b.lo.x <= a.hi.x) & (a.lo.y <= b.hi.y) & (b.lo.y <= a.hi.y);
+    }
+    pairs_.resize(kept);
 }
 
 void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shapes,
@@ -144,14 +202,16 @@ void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shap
             if (t) candidates_.push_back({a, b, {}, *t});
         }
     }
-    // Time order; ties in a fixed order so the result never depends on the sort.
-    std::sort(candidates_.begin(), candidates_.end(), [](const Candidate& x, const Candidate& y) {
-        if (x.time != y.time) return x.time < y.time;
-        if (x.a != y.a) return x.a < y.a;
-        if (x.b != y.b) return x.b < y.b;
-        if (x.shape.kind != y.shape.kind) return x.shape.kind < y.shape.kind;
-        return x.shape.index < y.shape.index;
+    // Time order; ties in a fixed order so the result never depends on the sort: the
+    // order of the pairs (a, then b, shapes after particles, shapes in ref order), in
+    // which the candidates were made. So a sort of (time, index) keys is enough.
+    order_.resize(candidates_.size());
+    for (std::size_t k = 0; k < candidates_.size(); ++k)
+        order_[k] = {candidates_[k].time, static_cast<std::uint32_t>(k)};
+    std::sort(order_.begin(), order_.end(), [](const TimeKey& x, const TimeKey& y) {
+        return x.time < y.time || (x.time == y.time && x.index < y.index);
     });
+    ++pass_; // paths are as detected until a contact of this pass changes them
     detectMicros_ +=
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -208,16 +268,31 @@ void ParticleCollisions::support(std::size_t i, Vec2 n, Vec2 vNew, const PairPro
     sa_[i] -= dir * (pp.dynamicFriction * normalAccel);
 }
 
-bool ParticleCollisions::resolveStatic(const Candidate& c, ParticleSet& set,
-                                       const StaticShapes& shapes, const MaterialTable& mats,
-                                       const CollisionDef& def, double h, double tickTime) {
+// Millington's resting-contact rule: closing slower than restingSpeed plus the speed the
+// contact's acceleration builds in one step is resting. For a pair, that acceleration is
+// at least what the forces on the two particles build (|a_i| + |a_j|) h: in a pile the
+// contacts resolved before have taken the inward part of a particle's acceleration away,
+// and the rest of the speed gravity gave it in this step must not count as a bounce.
+double ParticleCollisions::restingLimit(std::size_t i, std::size_t j, double an,
+                                        const CollisionDef& def, double h) const {
+    return def.restingSpeed + std::max(std::max(-an, 0.0) * h, (accel0_[i] + accel0_[j]) * h);
+}
+
+ParticleCollisions::Resolution
+ParticleCollisions::resolveStatic(const Candidate& c, ParticleSet& set, const StaticShapes& shapes,
+                                  const MaterialTable& mats, const CollisionDef& def, double h,
+                                  double tickTime) {
     const std::size_t i = c.a;
     const double r = set.radius[i];
-    // The path may have changed since detection (an earlier contact in this pass).
-    const auto toi = withShape(shapes, c.shape, [&](const auto& shape) {
-        return timeOfImpact(shape, r, path_[i], h, toi_);
-    });
-    if (!toi) return false;
+    // The path may have changed since detection (an earlier contact in this pass); if it
+    // has not, the time found then is the time (the same function of the same path).
+    const auto toi = pathChanged_[i] != pass_
+                         ? std::optional<double>(c.time)
+                         : withShape(shapes, c.shape, [&](const auto& shape) {
+                               return timeOfImpact(shape, r, path_[i], h, toi_);
+                           });
+    if (!toi) return Resolution::None;
+    pathChanged_[i] = pass_;
     rebase(i, *toi);
     PathMotion& m = path_[i];
     const SurfacePoint sp = shapes.closestPoint(c.shape, m.p);
@@ -245,36 +320,60 @@ bool ParticleCollisions::resolveStatic(const Candidate& c, ParticleSet& set,
     set.flags[i] &= ~kSleeping;
     events_.push_back({static_cast<ParticleId>(i), kNoParticle, c.shape, tickTime + *toi, n, -vn,
                        ci.normal, resting, m.p, vNew});
-    return true;
+    return resting ? Resolution::Resting : Resolution::Impact;
 }
 
-bool ParticleCollisions::resolvePair(const Candidate& c, ParticleSet& set,
-                                     const MaterialTable& mats, const CollisionDef& def, double h,
-                                     double tickTime) {
+ParticleCollisions::Resolution ParticleCollisions::resolvePair(const Candidate& c, ParticleSet& set,
+                                                               const MaterialTable& mats,
+                                                               const CollisionDef& def, double h,
+                                                               double tickTime) {
     const std::size_t i = c.a, j = c.b;
-    const double ri = set.radius[i], rj = set.radius[j];
+    const double rj = set.radius[j], ri = set.radius[i];
     const auto toi =
-        timeOfImpact(Circle{{0.0, 0.0}, rj}, ri, path_[i].relativeTo(path_[j]), h, toi_);
-    if (!toi) return false;
+        pathChanged_[i] != pass_ && pathChanged_[j] != pass_
+            ? std::optional<double>(c.time)
+            : timeOfImpact(Circle{{0.0, 0.0}, rj}, ri, path_[i].relativeTo(path_[j]), h, toi_);
+    if (!toi) return Resolution::None;
+    // Sleeping particles count as immovable unless the impulse is big enough to wake them.
+    double wi = moving(set, i) ? set.invMass[i] : 0.0;
+    double wj = moving(set, j) ? set.invMass[j] : 0.0;
+    {
+        // Classify at the time of impact before changing anything: a resting contact
+        // between two free particles (a pile) is left to the contact solver.
+        const PathMotion pi = path_[i], pj = path_[j];
+        const Vec2 d = pi.position(*toi) - pj.position(*toi);
+        const double L = length(d);
+        const Vec2 n = L > 0.0 ? d / L : Vec2{0.0, 1.0};
+        const Vec2 vrel = (sv_[i] + sa_[i] * (*toi - pi.t0)) - (sv_[j] + sa_[j] * (*toi - pj.t0));
+        const double an = std::min(dot(pi.a - pj.a, n), dot(sa_[i] - sa_[j], n));
+        const double vn = dot(vrel, n);
+        if (def.restingPairsToSolver && wi > 0.0 && wj > 0.0 &&
+            -vn < restingLimit(i, j, an, def, h)) {
+            deferred_.push_back({(std::uint64_t{c.a} << 32) | c.b,
+                                 static_cast<std::uint32_t>(deferred_.size()), tickTime + *toi, -vn,
+                                 n, pi.position(*toi)});
+            return Resolution::Deferred;
+        }
+    }
+    pathChanged_[i] = pathChanged_[j] = pass_;
     rebase(i, *toi);
     rebase(j, *toi);
     PathMotion &mi = path_[i], &mj = path_[j];
     const Vec2 d = mi.p - mj.p;
     const double L = length(d);
     const Vec2 n = L > 0.0 ? d / L : Vec2{0.0, 1.0};
-    // Sleeping particles count as immovable unless the impulse is big enough to wake them.
-    double wi = moving(set, i) ? set.invMass[i] : 0.0;
-    double wj = moving(set, j) ? set.invMass[j] : 0.0;
     const Vec2 vrel = sv_[i] - sv_[j];
     const double vn = dot(vrel, n);
     const double an = std::min(dot(mi.a - mj.a, n), dot(sa_[i] - sa_[j], n));
-    const bool resting = -vn < def.restingSpeed + std::max(-an, 0.0) * h;
+    const bool resting = -vn < restingLimit(i, j, an, def, h);
     const PairProperties& pp = mats.pair(set.material[i], set.material[j]);
     const double e = resting ? 0.0 : pp.restitution;
     ContactImpulse ci = contactImpulse(vrel, n, wi, wj, e, pp);
+    // An impact wakes a sleeper it would move faster than sleepSpeed; resting on one
+    // does not (it carries what rests on it, as a sleeping pile carries its top layer).
     for (const std::size_t k : {i, j}) {
         const bool asleep = (set.flags[k] & kSleeping) && set.invMass[k] > 0.0;
-        if (asleep && ci.normal * set.invMass[k] > def.sleepSpeed) {
+        if (asleep && !resting && ci.normal * set.invMass[k] > def.sleepSpeed) {
             set.flags[k] &= ~kSleeping;
             (k == i ? wi : wj) = set.invMass[k];
             ci = contactImpulse(vrel, n, wi, wj, e, pp);
@@ -320,7 +419,7 @@ bool ParticleCollisions::resolvePair(const Candidate& c, ParticleSet& set,
                        resting,
                        mi.p,
                        sv_[i]});
-    return true;
+    return resting ? Resolution::Resting : Resolution::Impact;
 }
 
 void ParticleCollisions::finish(ParticleSet& set, double h) {
@@ -335,87 +434,338 @@ void ParticleCollisions::finish(ParticleSet& set, double h) {
 
 void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shapes,
                                       const MaterialTable& mats, const CollisionDef& def, double h,
-                                      double tickTime) {
+                                      double tickTime, Vec2 up) {
     toi_ = {def.continuous, def.bisectionHalvings, def.toiTolerance, def.maxAdvanceIterations};
     buildPaths(set, h);
     bool converged = false;
+    deferred_.clear();
     for (int pass = 0; pass < def.maxPasses; ++pass) {
         detect(set, shapes, def, h);
         ++stats_.passes;
         int resolved = 0;
-        for (const Candidate& c : candidates_) {
-            const bool done = c.b == kNoParticle
-                                  ? resolveStatic(c, set, shapes, mats, def, h, tickTime)
-                                  : resolvePair(c, set, mats, def, h, tickTime);
-            resolved += done ? 1 : 0;
+        for (const TimeKey& key : order_) {
+            const Candidate& c = candidates_[key.index];
+            const Resolution r = c.b == kNoParticle
+                                     ? resolveStatic(c, set, shapes, mats, def, h, tickTime)
+                                     : resolvePair(c, set, mats, def, h, tickTime);
+            resolved += r == Resolution::Resting || r == Resolution::Impact ? 1 : 0;
         }
         stats_.impacts += resolved;
         converged = resolved == 0;
         if (converged) break;
     }
     finish(set, h);
-    if (!converged) projectOverlaps(set, shapes, def, h);
+    if (!converged || !deferred_.empty()) {
+        relaxContacts(set, shapes, mats, def, h, up);
+        reportDeferred(set);
+    } else {
+        warm_.clear(); // nothing to carry over to the next sub-step
+    }
 }
 
-// The passes ran out with contacts still being resolved (a stack settling, a particle
-// wedged in a corner): whatever still overlaps at the end of the step is pushed apart
-// along the normal (split by inverse mass) and loses its closing velocity, so nothing
-// is left inside anything, and nothing falls asleep inside anything.
-void ParticleCollisions::projectOverlaps(ParticleSet& set, const StaticShapes& shapes,
-                                         const CollisionDef& def, double h) {
+// The contacts left at the end of a sub-step that the passes did not settle (a pile, a
+// stack, a particle wedged in a corner) are relaxed on the end state as contact
+// constraints, by sequential impulses (Catto) with shock propagation:
+//   velocity  sweeps of normal impulses remove every closing velocity (no bounce: what
+//             still closes after the passes is resting), with Coulomb friction bounded by
+//             mu_s times the contact's accumulated normal impulse;
+//   position  sweeps push overlaps apart along the normal, split by inverse mass, at most
+//             a fifth of a radius at a time and the static contacts last, so that a pile
+//             pressing on a wall never pushes a particle through it. Velocities are left
+//             as the impulses made them, so the projection adds no energy.
+// After sweeps over all contacts, the contacts are swept again band by band from the
+// ground up (a particle's level is how many particles down, holding each other up
+// against gravity, it is from the ground: a static shape or an immovable particle), with
+// the particle that holds the other up immovable once its band is done (shock
+// propagation, Guendelman et al. 2003), so a stack is stopped and lifted from the
+// bottom up instead of settling over many steps.
+// Fixed and sleeping particles are immovable. A contact that needs nothing (not closing,
+// not overlapping) changes nothing.
+void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& shapes,
+                                       const MaterialTable& mats, const CollisionDef& def, double h,
+                                       Vec2 up) {
     const auto t0 = std::chrono::steady_clock::now(); // profile only
-    for (std::size_t i = 0; i < set.slots(); ++i)
+    const std::size_t n = set.slots();
+    for (std::size_t i = 0; i < n; ++i)
         path_[i] = {set.position(static_cast<ParticleId>(i)), {}, {}, h};
-    buildProxies(set, shapes, def, h, true);
+    buildProxies(set, shapes, def, h, true, kSpeculative);
     findPairs(def);
     detectMicros_ +=
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
-    // Shock propagation (Guendelman et al. 2003): contacts with static shapes first; a
-    // particle pushed out of one counts as immovable for the particle pairs after it,
-    // and so does one pushed off a particle that was, so a stack is lifted from the
-    // bottom up in one sweep instead of settling over many.
-    const auto n = static_cast<std::uint32_t>(set.slots());
-    std::fill(touched_.begin(), touched_.end(), 0); // reused as "supported"
-    for (int sweep = 0; sweep < 1 + kProjectionSweeps; ++sweep)
-        for (const ProxyPair& pair : pairs_) {
-            const std::uint32_t a = pair.first, b = pair.second;
-            const bool isStatic = b >= n;
-            if (isStatic != (sweep == 0) || (!isStatic && !def.particlePairs)) continue;
-            double wa = moving(set, a) && !touched_[a] ? set.invMass[a] : 0.0;
-            double wb = isStatic || !moving(set, b) || touched_[b] ? 0.0 : set.invMass[b];
-            if (!(wa + wb > 0.0)) continue;
-            SurfacePoint sp;
-            double reach = set.radius[a];
-            if (isStatic) {
-                sp = shapes.closestPoint(shapes.ref(b - n), set.position(a));
-            } else {
-                const Vec2 d = set.position(a) - set.position(b);
-                const double L = length(d);
-                sp = {L, L > 0.0 ? d / L : Vec2{0.0, 1.0}};
-                reach += set.radius[b];
-            }
-            const double depth = reach - sp.distance;
-            if (!(depth > 0.0)) {
-                if (depth > -def.toiTolerance && (isStatic || wb == 0.0))
-                    touched_[a] = 1; // touching
-                continue;
-            }
-            const Vec2 nrm = sp.normal;
-            const double vn = dot(set.velocity(a) - (isStatic ? Vec2{} : set.velocity(b)), nrm);
-            const double fa = wa / (wa + wb), fb = wb / (wa + wb);
-            set.px[a] += nrm.x * depth * fa, set.py[a] += nrm.y * depth * fa;
-            if (vn < 0.0) set.vx[a] -= nrm.x * vn * fa, set.vy[a] -= nrm.y * vn * fa;
-            if (wa > 0.0) set.flags[a] &= ~kHistory;
-            if (!isStatic && wb > 0.0) {
-                set.px[b] -= nrm.x * depth * fb, set.py[b] -= nrm.y * depth * fb;
-                if (vn < 0.0) set.vx[b] += nrm.x * vn * fb, set.vy[b] += nrm.y * vn * fb;
-                set.flags[b] &= ~kHistory;
-            }
-            if (isStatic || wb == 0.0)
-                touched_[a] = 1;
-            else if (wa == 0.0)
-                touched_[b] = 1;
+
+    // The contacts: overlapping, touching, or nearly (speculative: a gap below
+    // kSpeculative radii may close in one step, and the velocity sweeps allow it to close
+    // no more than that), with something movable.
+    const auto slots = static_cast<std::uint32_t>(n);
+    contacts_.clear();
+    growTo(level_, n);
+    std::fill(level_.begin(), level_.begin() + static_cast<std::ptrdiff_t>(n), kUnsupported);
+    for (const ProxyPair& pair : pairs_) {
+        const std::uint32_t a = pair.first, b = pair.second;
+        const bool isStatic = b >= slots;
+        if (!isStatic && !def.particlePairs) continue;
+        const double wa = moving(set, a) ? set.invMass[a] : 0.0;
+        const double wb = !isStatic && moving(set, b) ? set.invMass[b] : 0.0;
+        if (!(wa + wb > 0.0)) continue;
+        RelaxContact c;
+        c.a = a;
+        c.proxy = b;
+        if (isStatic) {
+            c.shape = shapes.ref(b - slots);
+            const SurfacePoint sp = shapes.closestPoint(c.shape, set.position(a));
+            c.normal = sp.normal;
+            c.depth = set.radius[a] - sp.distance;
+            c.friction = mats.pair(set.material[a], shapes.material(c.shape)).staticFriction;
+        } else {
+            c.b = b;
+            const Vec2 d = set.position(a) - set.position(b);
+            const double L = length(d);
+            c.normal = L > 0.0 ? d / L : Vec2{0.0, 1.0};
+            c.depth = set.radius[a] + set.radius[b] - L;
+            c.friction = mats.pair(set.material[a], set.material[b]).staticFriction;
         }
+        const double reach = set.radius[a] + (isStatic ? 0.0 : set.radius[b]);
+        if (!(c.depth > -def.toiTolerance - kSpeculative * reach)) continue;
+        // The closing speed the gap allows; a gap within the slop counts as touching, so
+        // that what projection left a hair apart does not keep closing on it for ever.
+        c.closing = std::max(-c.depth - kSlop * reach, 0.0) / h;
+        c.wa = wa, c.wb = wb;
+        // Which side holds the other up against gravity, if either does (a wall or a
+        // neighbour at the side holds nothing up).
+        const double upward = dot(c.normal, up);
+        c.support = upward > kSupport ? 1 : (!isStatic && upward < -kSupport ? -1 : 0);
+        // Levels: immovable particles are ground (0), like the static shapes; what the
+        // ground holds up is level 1 (the rest follows in orderContactsByLevel).
+        if (wa == 0.0) level_[a] = 0;
+        if (!isStatic && wb == 0.0) level_[b] = 0;
+        if (c.support == 1 && wa > 0.0 && wb == 0.0) level_[a] = 1;
+        if (c.support == -1 && wb > 0.0 && wa == 0.0) level_[b] = 1;
+        contacts_.push_back(c);
+    }
+    if (contacts_.empty()) {
+        warm_.clear();
+        return;
+    }
+    orderContactsByLevel(n);
+    std::fill(touched_.begin(), touched_.end(), 0); // reused as "moved by the solver"
+
+    // Warm start: a contact that was there at the end of the last sub-step starts from the
+    // impulses it ended with (both lists are in pair order, so one merge finds them). In
+    // a resting pile those are nearly the answer, and the sweeps only correct them.
+    {
+        std::size_t w = 0;
+        for (RelaxContact& c : contacts_) {
+            const std::uint64_t key = (std::uint64_t{c.a} << 32) | c.proxy;
+            while (w < warm_.size() && warm_[w].key < key)
+                ++w;
+            if (w == warm_.size() || warm_[w].key != key) continue;
+            c.normalImpulse = warm_[w].normalImpulse;
+            c.tangentImpulse = warm_[w].tangentImpulse;
+            const Vec2 J = c.normal * c.normalImpulse + perp(c.normal) * c.tangentImpulse;
+            set.vx[c.a] += J.x * c.wa, set.vy[c.a] += J.y * c.wa;
+            touched_[c.a] = 1;
+            if (c.b != kNoParticle) {
+                set.vx[c.b] -= J.x * c.wb, set.vy[c.b] -= J.y * c.wb;
+                touched_[c.b] = 1;
+            }
+        }
+    }
+
+    // One contact's velocity step: the normal impulse that stops the closing velocity
+    // (accumulated, never pulling), and friction along the tangent within mu_s times it.
+    auto impulse = [&](RelaxContact& c, double wa, double wb) {
+        if (!(wa + wb > 0.0)) return;
+        const Vec2 vb = c.b == kNoParticle ? Vec2{} : set.velocity(c.b);
+        const Vec2 vrel = set.velocity(c.a) - vb;
+        const double total =
+            std::max(c.normalImpulse - (dot(vrel, c.normal) + c.closing) / (wa + wb), 0.0);
+        const double jn = total - c.normalImpulse;
+        c.normalImpulse = total;
+        const Vec2 t = perp(c.normal);
+        const double limit = c.friction * c.normalImpulse;
+        const double tangential =
+            std::clamp(c.tangentImpulse - dot(vrel, t) / (wa + wb), -limit, limit);
+        const double jt = tangential - c.tangentImpulse;
+        c.tangentImpulse = tangential;
+        if (jn == 0.0 && jt == 0.0) return;
+        const Vec2 J = c.normal * jn + t * jt;
+        set.vx[c.a] += J.x * wa, set.vy[c.a] += J.y * wa;
+        touched_[c.a] = 1;
+        if (c.b != kNoParticle && wb > 0.0) {
+            set.vx[c.b] -= J.x * wb, set.vy[c.b] -= J.y * wb;
+            touched_[c.b] = 1;
+        }
+    };
+    // One contact's position step: push the overlap apart along the current normal, at most
+    // a fifth of the smaller radius at a time.
+    auto project = [&](const RelaxContact& c, double wa, double wb) {
+        if (!(wa + wb > 0.0)) return;
+        SurfacePoint sp;
+        double reach = set.radius[c.a], smallest = reach;
+        if (c.b == kNoParticle) {
+            sp = shapes.closestPoint(c.shape, set.position(c.a));
+        } else {
+            const Vec2 d = set.position(c.a) - set.position(c.b);
+            const double L = length(d);
+            sp = {L, L > 0.0 ? d / L : Vec2{0.0, 1.0}};
+            reach += set.radius[c.b];
+            smallest = std::min(smallest, set.radius[c.b]);
+        }
+        const double depth = std::min(reach - sp.distance, 0.2 * smallest);
+        if (!(depth > 0.0)) return;
+        const Vec2 move = sp.normal * depth;
+        const double fa = wa / (wa + wb), fb = wb / (wa + wb);
+        set.px[c.a] += move.x * fa, set.py[c.a] += move.y * fa;
+        touched_[c.a] = 1;
+        if (c.b != kNoParticle && wb > 0.0) {
+            set.px[c.b] -= move.x * fb, set.py[c.b] -= move.y * fb;
+            touched_[c.b] = 1;
+        }
+    };
+    // The inverse masses under shock propagation in band `band`: the particle that holds
+    // the other up, if it is settled already (a lower level), is immovable.
+    auto masses = [&](const RelaxContact& c, std::uint32_t band) {
+        double wa = c.wa, wb = c.wb;
+        if (c.support == 1 && c.b != kNoParticle && level_[c.b] < band) wb = 0.0;
+        if (c.support == -1 && level_[c.a] < band) wa = 0.0;
+        return std::pair{wa, wb};
+    };
+    // Contacts with what never moves (a shape, a fixed or sleeping particle) are projected
+    // last in each sweep: nothing is left inside those, whatever else stays to do.
+    auto immovableSide = [](const RelaxContact& c) {
+        return c.b == kNoParticle || c.wa == 0.0 || c.wb == 0.0;
+    };
+    const std::size_t bands = bandStart_.size() - 1; // the last one: unsupported
+
+    // Velocity: sweeps over all contacts, then band by band from the ground up.
+    for (int sweep = 0; sweep < def.relaxVelocitySweeps; ++sweep)
+        for (const std::uint32_t k : contactOrder_)
+            impulse(contacts_[k], contacts_[k].wa, contacts_[k].wb);
+    for (std::size_t band = 1; band + 1 < bands; ++band)
+        for (int sweep = 0; sweep < kShockSweeps; ++sweep)
+            for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k) {
+                RelaxContact& c = contacts_[contactOrder_[k]];
+                const auto [wa, wb] = masses(c, static_cast<std::uint32_t>(band));
+                impulse(c, wa, wb);
+            }
+
+    // Position: the same.
+    for (int sweep = 0; sweep < def.relaxPositionSweeps; ++sweep)
+        for (const bool statics : {false, true})
+            for (const std::uint32_t k : contactOrder_) {
+                const RelaxContact& c = contacts_[k];
+                if (immovableSide(c) != statics) continue;
+                project(c, c.wa, c.wb);
+            }
+    for (std::size_t band = 1; band + 1 < bands; ++band)
+        for (int sweep = 0; sweep < kShockSweeps; ++sweep)
+            for (const bool statics : {false, true})
+                for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k) {
+                    const RelaxContact& c = contacts_[contactOrder_[k]];
+                    if (immovableSide(c) != statics) continue;
+                    const auto [wa, wb] = masses(c, static_cast<std::uint32_t>(band));
+                    project(c, wa, wb);
+                }
+
+    warm_.clear();
+    for (const RelaxContact& c : contacts_)
+        warm_.push_back({(std::uint64_t{c.a} << 32) | c.proxy, c.normalImpulse, c.tangentImpulse});
+
+    // Whatever moved restarts its multi-step integrator; whatever is in contact rests.
+    for (const RelaxContact& c : contacts_) {
+        resting_[c.a] = 1;
+        if (c.b != kNoParticle) resting_[c.b] = 1;
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        if (touched_[i]) set.flags[i] &= ~kHistory;
+}
+
+// The resting pairs the passes left to the solver are contacts of the tick too (a shell
+// settling on a heap has touched it): one event per pair and sub-step, at the time the
+// passes first found it, with the normal impulse the solver gave it.
+void ParticleCollisions::reportDeferred(const ParticleSet& set) {
+    if (deferred_.empty()) return;
+    std::sort(deferred_.begin(), deferred_.end(), [](const Deferred& x, const Deferred& y) {
+        return x.key < y.key || (x.key == y.key && x.order < y.order);
+    });
+    std::size_t k = 0;
+    for (std::size_t d = 0; d < deferred_.size(); ++d) {
+        const Deferred& e = deferred_[d];
+        if (d > 0 && deferred_[d - 1].key == e.key) continue; // found again by a later pass
+        const auto a = static_cast<ParticleId>(e.key >> 32), b = static_cast<ParticleId>(e.key);
+        double impulse = 0.0;
+        while (k < contacts_.size() &&
+               ((std::uint64_t{contacts_[k].a} << 32) | contacts_[k].proxy) < e.key)
+            ++k;
+        if (k < contacts_.size() &&
+            ((std::uint64_t{contacts_[k].a} << 32) | contacts_[k].proxy) == e.key)
+            impulse = contacts_[k].normalImpulse;
+        events_.push_back({a,
+                           b,
+                           {},
+                           e.time,
+                           e.normal,
+                           e.closingSpeed,
+                           impulse,
+                           true,
+                           e.position,
+                           set.velocity(a)});
+    }
+}
+
+// contactOrder_: the contacts by band (the level of their upper particle), a counting sort,
+// so the pair order, which is fixed, breaks ties. Levels spread from the particles the
+// ground holds up (level 1) to the particles they hold up, breadth first; particles that
+// nothing connects to the ground this way come last.
+void ParticleCollisions::orderContactsByLevel(std::size_t n) {
+    // Who holds whom up, among the movable particles: offsets into a flat list.
+    auto holder = [](const RelaxContact& c) { return c.support == 1 ? c.b : c.a; };
+    auto held = [](const RelaxContact& c) { return c.support == 1 ? c.a : c.b; };
+    auto holds = [](const RelaxContact& c) {
+        return c.b != kNoParticle && c.support != 0 && c.wa > 0.0 && c.wb > 0.0;
+    };
+    adjacencyStart_.assign(n + 1, 0u);
+    for (const RelaxContact& c : contacts_)
+        if (holds(c)) ++adjacencyStart_[holder(c) + 1];
+    for (std::size_t i = 0; i < n; ++i)
+        adjacencyStart_[i + 1] += adjacencyStart_[i];
+    adjacency_.resize(adjacencyStart_[n]);
+    fill_.assign(adjacencyStart_.begin(), adjacencyStart_.end() - 1);
+    for (const RelaxContact& c : contacts_)
+        if (holds(c)) adjacency_[fill_[holder(c)]++] = held(c);
+    // Breadth first from the ground.
+    frontier_.clear();
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (level_[i] == 1) frontier_.push_back(i);
+    for (std::size_t head = 0; head < frontier_.size(); ++head) {
+        const std::uint32_t p = frontier_[head];
+        for (std::uint32_t k = adjacencyStart_[p]; k < adjacencyStart_[p + 1]; ++k) {
+            const std::uint32_t q = adjacency_[k];
+            if (level_[q] != kUnsupported) continue;
+            level_[q] = level_[p] + 1;
+            frontier_.push_back(q);
+        }
+    }
+    // Bands: a contact belongs to the level of its upper particle (a static contact to its
+    // particle's); band 0 is never used (the ground does not move), the last band holds
+    // what no path of contacts connects to the ground.
+    std::uint32_t top = 1;
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (level_[i] != kUnsupported) top = std::max(top, level_[i]);
+    const std::size_t unsupported = static_cast<std::size_t>(top) + 1;
+    auto band = [&](const RelaxContact& c) -> std::size_t {
+        const std::uint32_t l = bandOf(c);
+        return l == kUnsupported ? unsupported : l;
+    };
+    bandStart_.assign(unsupported + 2, 0u);
+    for (const RelaxContact& c : contacts_)
+        ++bandStart_[band(c) + 1];
+    for (std::size_t b = 0; b + 1 < bandStart_.size(); ++b)
+        bandStart_[b + 1] += bandStart_[b];
+    fill_.assign(bandStart_.begin(), bandStart_.end() - 1);
+    contactOrder_.resize(contacts_.size());
+    for (std::uint32_t k = 0; k < contacts_.size(); ++k)
+        contactOrder_[fill_[band(contacts_[k])]++] = k;
 }
 
 void ParticleCollisions::penaltyPhase(ParticleSet& set, const StaticShapes& shapes,
@@ -478,6 +828,11 @@ void ParticleCollisions::updateSleep(ParticleSet& set, const CollisionDef& def, 
                                      const std::vector<std::uint8_t>& tethered) {
     const std::size_t n = set.slots();
     growTo(sleepTimer_, n), growTo(resting_, n);
+    if (restTimersStale_) { // what updateSleep would have done in the ticks without contacts
+        for (std::size_t i = 0; i < n; ++i)
+            if (!(set.flags[i] & kSleeping)) sleepTimer_[i] = 0.0;
+        restTimersStale_ = false;
+    }
     int asleep = 0;
     for (std::size_t i = 0; i < n; ++i) {
         if (set.flags[i] & kSleeping) {

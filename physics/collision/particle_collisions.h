@@ -11,19 +11,28 @@
 //            restitution, Coulomb friction), and replace the rest of their path by the
 //            one leaving the contact with the new velocity; a pass that resolves
 //            nothing ends the loop
-//   finish   a particle that was hit takes the end of its new path as its state; if
-//            the passes ran out before contacts stopped, overlaps left at the end are
-//            projected apart
+//   finish   a particle that was hit takes the end of its new path as its state
+//   solve    if the passes ran out, or left resting pairs to it, the contact solver
+//            settles the contacts of the end state at once: sequential impulses, then
+//            projection, from the ground up (relaxContacts)
 // With the integrators exact under constant acceleration, this makes a bounce exact:
 // an apex depends on e and H only, not on where the impact fell within the step.
 //
 // Resting contact (Millington): a contact closing slower than restingSpeed + |a.n| dt
-// is resting. It does not bounce, and for the rest of the step the surface supports the
-// particle: the inward part of its acceleration is removed, and if static friction can
-// hold the tangential part (|a_t| <= mu_s |a_n|) the particle does not slide. A
-// particle resting on a surface so stays exactly where it is, with no jitter and no
-// creep; after sleepTime below sleepSpeed it sleeps (kSleeping) until an impulse, a
-// blast or a command wakes it. Particles tied to springs or constraints do not sleep.
+// is resting (for a pair, at least what the forces on both build in a step). It does
+// not bounce. On a static shape or an immovable particle the surface then supports the
+// particle for the rest of the step: the inward part of its acceleration is removed,
+// and if static friction can hold the tangential part (|a_t| <= mu_s |a_n|) the particle
+// does not slide. A particle resting on a surface so stays exactly where it is, with no
+// jitter and no creep. A resting pair of free particles (a stack, a pile) goes to the
+// contact solver, which settles a pile in one step where passes would settle it one
+// layer per pass. After sleepTime below sleepSpeed a resting particle sleeps (kSleeping)
+// until an impulse, a blast or a command wakes it; sleepers are immovable to the others.
+// Particles tied to springs or constraints do not sleep.
+//
+// The broad phase runs on fattened boxes and its pairs are kept while every particle's
+// box stays inside its fat one, so most passes, and most steps of a resting pile, only
+// filter the kept pairs by the exact boxes: the same pairs, for a fraction of the cost.
 #pragma once
 
 #include "physics/collision/broadphase.h"
@@ -33,6 +42,7 @@
 #include "physics/materials.h"
 #include "physics/particles.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -57,6 +67,7 @@ struct CollisionStats {
     int pairs = 0;    ///< broad-phase pairs, summed over passes
     int impacts = 0;  ///< contacts resolved (bounces and resting)
     int passes = 0;   ///< detect-and-resolve passes
+    int broadPhases = 0; ///< broad phases run (the others reused their pairs)
     int sleeping = 0; ///< particles asleep after the step
 };
 
@@ -66,14 +77,23 @@ class ParticleCollisions {
     void beginSubstep(const ParticleSet& set);
     /// Collide and resolve with the impulse model over a sub-step of h seconds that
     /// starts tickTime seconds into the tick (for event times).
+    /// `up` is the unit vector against gravity (zero without gravity): what holds what up
+    /// in a pile.
     void impulsePhase(ParticleSet& set, const StaticShapes& shapes, const MaterialTable& mats,
-                      const CollisionDef& def, double h, double tickTime);
+                      const CollisionDef& def, double h, double tickTime, Vec2 up = {});
     /// Collide and resolve with the penalty model (overlaps at the end of the step).
     void penaltyPhase(ParticleSet& set, const StaticShapes& shapes, const MaterialTable& mats,
                       const CollisionDef& def, double h, double tickTime);
     /// Puts resting particles to sleep after dt of rest; `tethered[i]` != 0 never sleeps.
     void updateSleep(ParticleSet& set, const CollisionDef& def, double dt,
                      const std::vector<std::uint8_t>& tethered);
+    /// In place of updateSleep for a tick without collisions: nothing rested, so nothing
+    /// falls asleep and every awake particle's rest timer restarts (done on the next
+    /// updateSleep). `asleep` is the number of sleeping particles, for the stats.
+    void noContactsThisTick(int asleep) {
+        stats_.sleeping = asleep;
+        restTimersStale_ = true;
+    }
 
     /// Contacts of the last tick (cleared by clearEvents, which World::step calls).
     const std::vector<ContactEvent>& events() const { return events_; }
@@ -94,21 +114,30 @@ class ParticleCollisions {
         double time;
     };
     void buildPaths(const ParticleSet& set, double h);
+    /// Boxes of the paths (or of the end positions), radii grown by `grow` of themselves.
     void buildProxies(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
-                      double h, bool atEndOnly);
+                      double h, bool atEndOnly, double grow = 0.0);
     void findPairs(const CollisionDef& def);
+    bool pairCacheHolds(const CollisionDef& def) const;
+    void buildPairCache(const CollisionDef& def);
     void detect(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                 double h);
-    bool resolveStatic(const Candidate& c, ParticleSet& set, const StaticShapes& shapes,
-                       const MaterialTable& mats, const CollisionDef& def, double h,
-                       double tickTime);
-    bool resolvePair(const Candidate& c, ParticleSet& set, const MaterialTable& mats,
-                     const CollisionDef& def, double h, double tickTime);
+    /// What resolving a candidate did: nothing (no contact any more), a resting contact,
+    /// an impact, or nothing yet (a resting pair, left to the contact solver).
+    enum class Resolution { None, Resting, Impact, Deferred };
+    double restingLimit(std::size_t i, std::size_t j, double an, const CollisionDef& def,
+                        double h) const;
+    Resolution resolveStatic(const Candidate& c, ParticleSet& set, const StaticShapes& shapes,
+                             const MaterialTable& mats, const CollisionDef& def, double h,
+                             double tickTime);
+    Resolution resolvePair(const Candidate& c, ParticleSet& set, const MaterialTable& mats,
+                           const CollisionDef& def, double h, double tickTime);
     void rebase(std::size_t i, double t);
     void support(std::size_t i, Vec2 n, Vec2 vNew, const PairProperties& pp, double remaining);
     void finish(ParticleSet& set, double h);
-    void projectOverlaps(ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
-                         double h);
+    void relaxContacts(ParticleSet& set, const StaticShapes& shapes, const MaterialTable& mats,
+                       const CollisionDef& def, double h, Vec2 up);
+    void orderContactsByLevel(std::size_t n);
     bool moving(const ParticleSet& set, std::size_t i) const {
         return set.invMass[i] > 0.0 && (set.flags[i] & (kAlive | kSleeping | kNoCollide)) == kAlive;
     }
@@ -122,15 +151,77 @@ class ParticleCollisions {
     std::vector<Vec2> sv_, sa_;
     std::vector<std::uint8_t> touched_, resting_;
     std::vector<double> sleepTimer_;
+    bool restTimersStale_ = false; ///< ticks without contacts passed since updateSleep
     // Broad phase.
     std::vector<Aabb> boxes_;
     std::vector<ProxyKind> kinds_;
     std::vector<ProxyPair> pairs_;
+    // The pair cache: broad phase over fat boxes (exact box grown by margin_), kept
+    // while every exact box stays inside its fat box and nothing else changes.
+    std::vector<double> margin_;
+    std::vector<Aabb> fatBoxes_;
+    std::vector<ProxyKind> fatKinds_;
+    std::vector<ProxyPair> cachedPairs_, particlePairs_, staticPairs_;
+    bool cacheValid_ = false;
+    std::uint64_t cachedShapes_ = 0;
+    BroadPhase cachedBroadPhase_ = BroadPhase::Grid;
+    double cachedCellSize_ = 0.0;
     StaticShapeIndex staticIndex_;
     std::vector<std::uint32_t> staticHits_;
     SortAndSweep sweep_;
     UniformGrid grid_;
     std::vector<Candidate> candidates_;
+    struct TimeKey {
+        double time;
+        std::uint32_t index; // into candidates_
+    };
+    std::vector<TimeKey> order_;             ///< candidates in the order they are resolved
+    std::uint32_t pass_ = 0;                 ///< counts passes over the world's life
+    std::vector<std::uint32_t> pathChanged_; ///< pass_ when a contact last changed the path
+    // The end-of-step contact solver (relaxContacts).
+    struct RelaxContact {
+        std::uint32_t a = 0;
+        std::uint32_t b = kNoParticle; ///< or a static shape
+        std::uint32_t proxy = 0;       ///< b, or slots + the shape's index
+        ShapeRef shape;
+        Vec2 normal;               ///< from b (or the shape) to a
+        double depth = 0.0;        ///< overlap, m (negative: a gap)
+        double closing = 0.0;      ///< m/s the gap lets the contact close in a step
+        double wa = 0.0, wb = 0.0; ///< inverse masses, 0 for immovable
+        double friction = 0.0;     ///< mu_s
+        int support = 0;           ///< 1: b (or the shape) holds a up; -1: a holds b
+        double normalImpulse = 0.0, tangentImpulse = 0.0; ///< accumulated, N s
+    };
+    static constexpr std::uint32_t kUnsupported = 0xffffffffu;
+    /// The level of the contact's upper particle (kUnsupported if it has none).
+    std::uint32_t bandOf(const RelaxContact& c) const {
+        return c.b == kNoParticle ? level_[c.a] : std::max(level_[c.a], level_[c.b]);
+    }
+    std::vector<RelaxContact> contacts_;
+    struct WarmStart {
+        std::uint64_t key; ///< a << 32 | proxy
+        double normalImpulse, tangentImpulse;
+    };
+    std::vector<WarmStart> warm_; ///< the contacts at the end of the last sub-step
+    std::vector<double> accel0_;  ///< |acceleration| over the sub-step before contacts, m/s^2
+    struct Deferred {             ///< a resting pair left to the contact solver this sub-step
+        std::uint64_t key;        ///< a << 32 | b
+        std::uint32_t order;
+        double time, closingSpeed;
+        Vec2 normal, position;
+    };
+    std::vector<Deferred> deferred_;
+    void reportDeferred(const ParticleSet& set);
+    std::vector<std::uint32_t> contactOrder_, level_, bandStart_;
+    /// Sweeps over each band, from the ground up, with the bands below immovable.
+    static constexpr int kShockSweeps = 4;
+    /// Contacts up to this gap, in radii (of the pair's sum), are constraints too.
+    static constexpr double kSpeculative = 0.1;
+    /// A contact holds a particle up when its normal is this close to vertical (cosine).
+    static constexpr double kSupport = 0.2;
+    /// Gaps below this, in radii, count as touching (no closing allowed).
+    static constexpr double kSlop = 1e-3;
+    std::vector<std::uint32_t> adjacencyStart_, adjacency_, fill_, frontier_;
     std::vector<ContactEvent> events_;
     CollisionStats stats_;
     double detectMicros_ = 0.0;

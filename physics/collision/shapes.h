@@ -10,6 +10,7 @@
 #include "physics/materials.h"
 #include "physics/vec2.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -63,6 +64,21 @@ struct SurfacePoint {
 SurfacePoint closestPoint(const Segment& s, Vec2 p);
 SurfacePoint closestPoint(const Circle& c, Vec2 p);
 SurfacePoint closestPoint(const ConvexPolygon& poly, Vec2 p);
+
+/// closestPoint(shape, p).distance alone, to the same bits, without the normal (the
+/// narrow phase's gap function asks for it many times per pair).
+inline double distanceTo(const Segment& s, Vec2 p) {
+    const Vec2 ab = s.b - s.a;
+    const double len2 = lengthSquared(ab);
+    const double t = len2 > 0.0 ? std::clamp(dot(p - s.a, ab) / len2, 0.0, 1.0) : 0.0;
+    return length(p - (s.a + t * ab));
+}
+inline double distanceTo(const Circle& c, Vec2 p) {
+    return length(p - c.center) - c.radius;
+}
+inline double distanceTo(const ConvexPolygon& poly, Vec2 p) {
+    return closestPoint(poly, p).distance;
+}
 
 Aabb bounds(const Segment& s);
 Aabb bounds(const Circle& c);
