@@ -71,10 +71,7 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
     if (def_.hotseat) settings_.hotseat = *def_.hotseat;
     if (!def_.panel) settings_.physicsPanel = false;
     levels_ = listLevels(def_.levelsFolder);
-    if (window_ && SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER) == 0) {
-        for (int i = 0; i < SDL_NumJoysticks() && !pad_; ++i)
-            if (SDL_IsGameController(i)) pad_ = SDL_GameControllerOpen(i);
-    }
+    if (window_ && SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER) == 0) pad_.openFirst();
     if (!def_.replayFile.empty()) {
         openReplay(def_.replayFile); // throws with the loader's message
     } else if (def_.levelFile.empty()) {
@@ -91,7 +88,6 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
 
 GameScreen::~GameScreen() {
     persist();
-    if (pad_) SDL_GameControllerClose(pad_);
 }
 
 void GameScreen::persist() {
@@ -218,13 +214,10 @@ void GameScreen::pollHeldInput(double dt) {
         angleAxis = fine * ((keys[SDL_SCANCODE_LEFT] ? 1.0 : 0.0) - (keys[SDL_SCANCODE_RIGHT] ? 1.0 : 0.0));
         powerAxis = fine * ((keys[SDL_SCANCODE_UP] ? 1.0 : 0.0) - (keys[SDL_SCANCODE_DOWN] ? 1.0 : 0.0));
     }
-    if (pad_) {
-        const double sx = SDL_GameControllerGetAxis(pad_, SDL_CONTROLLER_AXIS_LEFTX) / 32767.0;
-        const double sy = SDL_GameControllerGetAxis(pad_, SDL_CONTROLLER_AXIS_LEFTY) / 32767.0;
-        aim_.stick(sx, sy);
-        const double rt = SDL_GameControllerGetAxis(pad_, SDL_CONTROLLER_AXIS_TRIGGERRIGHT) / 32767.0;
-        const double lt = SDL_GameControllerGetAxis(pad_, SDL_CONTROLLER_AXIS_TRIGGERLEFT) / 32767.0;
-        powerAxis += rt - lt;
+    if (pad_.connected()) {
+        const PadAxes pad = pad_.axes();
+        aim_.stick(pad.stickX, pad.stickY);
+        powerAxis += pad.power;
     }
     if (angleAxis != 0.0 || powerAxis != 0.0) {
         aim_.hold(angleAxis, powerAxis, dt, c.def.maxSpeedMps);
@@ -655,41 +648,34 @@ bool GameScreen::handleEvent(const SDL_Event& e) {
     if (e.type == SDL_QUIT) return false;
     if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_CLOSE) return false;
     const bool uiWants = imgui_.processEvent(e);
-    if (e.type == SDL_CONTROLLERDEVICEADDED && !pad_) pad_ = SDL_GameControllerOpen(e.cdevice.which);
-    if (e.type == SDL_CONTROLLERDEVICEREMOVED && pad_ &&
-        e.cdevice.which == SDL_JoystickInstanceID(SDL_GameControllerGetJoystick(pad_))) {
-        SDL_GameControllerClose(pad_);
-        pad_ = nullptr;
-    }
+    const PadAction padAction = pad_.handle(e);
     if (e.type == SDL_KEYDOWN && !imgui_.wantsKeyboard()) return keyDown(e) && running_;
     if (e.type == SDL_KEYUP && e.key.keysym.sym == SDLK_SPACE && session_ && aim_.charging())
         submit(aim_.releaseCharge(session_->match().cannon()));
     if (viewer_ && !imgui_.wantsMouse() && overlay_ == Overlay::None) cameraEvent(e);
     if (!session_) return running_;
     game::Match& m = session_->match();
-    if (e.type == SDL_CONTROLLERBUTTONDOWN) {
-        switch (e.cbutton.button) {
-        case SDL_CONTROLLER_BUTTON_A:
-            if (humanTurn()) submit(aim_.fire(m.cannon()));
-            break;
-        case SDL_CONTROLLER_BUTTON_B:
-            if (humanTurn()) {
-                game::Command end;
-                end.kind = game::CommandKind::EndTurn;
-                submit(end);
-            }
-            break;
-        case SDL_CONTROLLER_BUTTON_X:
-            if (auto s = AimInput::select(m.cannon(), (m.cannon().projectile + 1) %
-                                                          m.cannon().def.projectiles.size()))
-                submit(*s);
-            break;
-        case SDL_CONTROLLER_BUTTON_START:
-            overlay_ = overlay_ == Overlay::Pause ? Overlay::None : Overlay::Pause;
-            break;
-        default:
-            break;
+    switch (padAction) {
+    case PadAction::Fire:
+        if (humanTurn()) submit(aim_.fire(m.cannon()));
+        break;
+    case PadAction::EndTurn:
+        if (humanTurn()) {
+            game::Command end;
+            end.kind = game::CommandKind::EndTurn;
+            submit(end);
         }
+        break;
+    case PadAction::NextProjectile:
+        if (auto s = AimInput::select(m.cannon(), (m.cannon().projectile + 1) %
+                                                      m.cannon().def.projectiles.size()))
+            submit(*s);
+        break;
+    case PadAction::Pause:
+        overlay_ = overlay_ == Overlay::Pause ? Overlay::None : Overlay::Pause;
+        break;
+    case PadAction::None:
+        break;
     }
     if (uiWants && imgui_.wantsMouse()) return running_;
     if (overlay_ != Overlay::None) return running_;

@@ -21,6 +21,7 @@
 #include "ui/game/aim_input.h"
 #include "ui/game/game_menus.h"
 #include "ui/game/match_view.h"
+#include "ui/game/pad_input.h"
 #include "ui/game/player_settings.h"
 #include "ui/game/sandbox_tools.h"
 #include "ui/game/replay_view.h"
@@ -37,8 +38,6 @@
 #include <optional>
 #include <string>
 #include <vector>
-
-struct _SDL_GameController;
 
 namespace ui {
 
@@ -154,7 +153,7 @@ class GameScreen final : public Screen {
     bool screenshotRequested_ = false;
     FrameStats stats_;
     int framesMeasured_ = 0;
-    _SDL_GameController* pad_ = nullptr;
+    PadInput pad_; ///< a game controller, if one is plugged in
     bool padFireHeld_ = false;
 };
 
