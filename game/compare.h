@@ -4,9 +4,10 @@
 //
 // Reference: with gravity alone the closed form p0 + v0 t + g t^2/2 (exact at any dt);
 // with drag, wind or water, RK4 at 1/16 of the tick (order 4, so its own error is
-// 16^4 = 65536 times below RK4 at the tick). Every path flies over an empty world (no
-// terrain, no obstacles) so that all of them reach the launch height and their landing
-// points can be set side by side.
+// 16^4 = 65536 times below RK4 at the tick). Every path flies through the level's forces
+// but past its blocks and targets, and lands where it first goes down through the
+// level's terrain as it is now (craters included), or, for a clean comparison on a
+// level line, where it comes back down to the launch height.
 #pragma once
 
 #include "game/match.h"
@@ -25,10 +26,17 @@ enum class LandingReference {
 };
 const char* landingReferenceName(LandingReference r);
 
+/// Where a path lands.
+enum class LandingSurface {
+    Terrain,      ///< the level's ground, as the shot would hit it
+    LaunchHeight, ///< the horizontal line through the muzzle
+};
+
 struct CompareDef {
     double tickSeconds = 0.0;     ///< s; 0 = the match's tick
     int referenceRefinement = 16; ///< the fine RK4 reference runs at tick / this, >= 1
-    double maxSeconds = kMaxFlightSeconds; ///< a path still above launch height by then stops, s
+    double maxSeconds = kMaxFlightSeconds; ///< a path not down by then stops, s
+    LandingSurface surface = LandingSurface::Terrain;
 };
 
 struct IntegratorPath {
@@ -36,8 +44,8 @@ struct IntegratorPath {
     std::string name;            ///< "rk4", ..., or "closed-form" / "rk4 (dt/16)" for the reference
     bool isReference = false;    ///< the path the others are measured against
     std::vector<phys::Vec2> points; ///< the shell at each tick from the muzzle, m
-    bool landed = false;         ///< came back down to the launch height within maxSeconds
-    phys::Vec2 landing;          ///< where it crossed the launch height descending, m
+    bool landed = false;         ///< came down to the landing surface within maxSeconds
+    phys::Vec2 landing;          ///< where it first went down through the surface, m
     double flightTime = 0.0;     ///< s, to the landing
     double landingError = 0.0;   ///< |landing - reference landing|, m (0 for the reference)
     LandingReference reference = LandingReference::ClosedForm;
@@ -47,7 +55,8 @@ struct IntegratorPath {
 /// speedMps) once per integrator in phys::integrators(), under the match's forces,
 /// tick and sub-steps (model policy Integrate, so every integrator really runs), and
 /// appends the reference path last (isReference). The landing point inside the last
-/// tick is found from the state before it under gravity alone, so an integrator whose
+/// tick is found on the parabola from the state before it (gravity alone; the chord to
+/// the state after it if the parabola does not reach the ground), so an integrator whose
 /// state is exact (RK4, velocity Verlet under gravity) lands exactly.
 std::vector<IntegratorPath> compareIntegrators(const Match& match, double angleDeg,
                                                double speedMps, const CompareDef& def = {});

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 using namespace game;
@@ -18,12 +19,19 @@ const IntegratorPath& find(const std::vector<IntegratorPath>& paths, phys::Integ
         if (!p.isReference && p.integrator == id) return p;
     throw std::runtime_error("integrator missing from compare");
 }
+
+
+CompareDef onLaunchHeight() {
+    CompareDef d;
+    d.surface = LandingSurface::LaunchHeight;
+    return d;
+}
 } // namespace
 
 TEST(Compare, OnePathPerIntegratorPlusTheClosedFormLast) {
     Match m(level("01_earth_basics.json"));
     ASSERT_TRUE(m.ballisticOnly());
-    const auto paths = compareIntegrators(m, 50.0, 30.0);
+    const auto paths = compareIntegrators(m, 50.0, 30.0, onLaunchHeight());
     ASSERT_EQ(paths.size(), phys::integrators().size() + 1);
     EXPECT_TRUE(paths.back().isReference);
     EXPECT_EQ(paths.back().name, "closed-form");
@@ -40,14 +48,38 @@ TEST(Compare, OnePathPerIntegratorPlusTheClosedFormLast) {
 
 TEST(Compare, Rk4AndVelocityVerletLandOnTheClosedFormWithoutDrag) {
     Match m(level("01_earth_basics.json"));
-    const auto paths = compareIntegrators(m, 50.0, 30.0);
-    EXPECT_LT(find(paths, phys::Integrator::RK4).landingError, 1e-9);
-    EXPECT_LT(find(paths, phys::Integrator::VelocityVerlet).landingError, 1e-9);
+    for (const CompareDef& d : {CompareDef{}, onLaunchHeight()}) {
+        const auto paths = compareIntegrators(m, 50.0, 30.0, d);
+        EXPECT_LT(find(paths, phys::Integrator::RK4).landingError, 1e-9);
+        EXPECT_LT(find(paths, phys::Integrator::VelocityVerlet).landingError, 1e-9);
+    }
+}
+
+TEST(Compare, PathsLandOnTheTerrainWhereTheClosedFormMeetsIt) {
+    Match m(level("01_earth_basics.json"));
+    const double angle = 50.0, speed = 30.0;
+    const auto paths = compareIntegrators(m, angle, speed);
+    const IntegratorPath& ref = paths.back();
+    ASSERT_TRUE(ref.landed);
+    const Heightfield& ground = m.terrain();
+    // The landing is on the ground, and on the parabola at the flight time.
+    EXPECT_NEAR(ref.landing.y, ground.heightAt(ref.landing.x), 1e-9);
+    const double a = angle * 3.14159265358979323846 / 180.0;
+    const phys::Vec2 p0 = m.muzzle(angle), v0{speed * std::cos(a), speed * std::sin(a)};
+    const double t = ref.flightTime;
+    EXPECT_NEAR(ref.landing.x, p0.x + v0.x * t, 1e-9);
+    EXPECT_NEAR(ref.landing.y, p0.y + v0.y * t - 0.5 * 9.81 * t * t, 1e-9);
+    // Not the launch height: this level's ground is not level with the muzzle.
+    EXPECT_GT(std::abs(ref.landing.y - p0.y), 0.1);
+    for (const auto& p : paths) {
+        ASSERT_TRUE(p.landed) << p.name;
+        EXPECT_NEAR(p.landing.y, ground.heightAt(p.landing.x), 1e-6) << p.name;
+    }
 }
 
 TEST(Compare, ExplicitEulerIsFirstOrderAtLanding) {
     Match m(level("01_earth_basics.json"));
-    CompareDef d;
+    CompareDef d = onLaunchHeight();
     d.tickSeconds = 1.0 / 120.0;
     const double e1 = find(compareIntegrators(m, 50.0, 30.0, d), phys::Integrator::ExplicitEuler).landingError;
     d.tickSeconds /= 2.0;
