@@ -83,7 +83,7 @@ Command readCommand(const Node& n) {
         else value.fail("expected a number, true/false or a string");
         // Check the value against the setting's type and range now, so a bad script
         // is refused when loaded rather than halfway through a run.
-        phys::WorldDef scratch;
+        LiveSettings scratch;
         if (const std::string why = applySetting(scratch, c.text, c.value); !why.empty())
             (findSetting(c.text) ? value : name).fail(why);
     }

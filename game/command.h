@@ -9,6 +9,9 @@
 //   {"tick": 10,  "cmd": "fire"}
 //   {"tick": 600, "cmd": "end_turn"}
 //   {"tick": 700, "cmd": "set", "name": "integrator", "value": "rk4"}
+//   {"tick": 700, "cmd": "set", "name": "restitution.golf-ball", "value": "tennis"}
+//   {"tick": 700, "cmd": "set", "name": "pair.golf-ball.earth", "value": 0.5}
+// (every setting, what it takes and its refusal messages: game/settings.h)
 // The sandbox's verbs (refused until the level is a sandbox, or a "sandbox" command
 // has made it one):
 //   {"tick": 0,   "cmd": "sandbox"}                       no budget, no score, tools on

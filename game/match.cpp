@@ -65,6 +65,10 @@ WorldDef worldDefFor(const LevelPhysics& p) {
     return d;
 }
 
+template <class T> void appendOnce(std::vector<T>& list, const T& x) {
+    if (std::find(list.begin(), list.end(), x) == list.end()) list.push_back(x);
+}
+
 /// A uniform draw in [0, 1) from the top 53 bits: the same on every platform (the
 /// standard distributions are not specified bit for bit).
 double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
@@ -74,6 +78,9 @@ double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x
 Match::Match(const Level& level)
     : level_(level), world_(worldDefFor(level.physics)), terrain_(level.terrain.points),
       rng_(level.seed) {
+    // Each projectile bounces with a material of its own name, so that
+    // restitution.<projectile> changes that projectile alone (game/settings.h).
+    for (const ProjectilePreset& p : projectilePresets()) projectileMaterial(world_.materials, p);
     RigidWorldDef rd;
     rd.gravity = world_.def().forces.gravity;
     rigid_ = std::make_unique<RigidWorld>(rd);
@@ -101,8 +108,13 @@ void Match::rebuildStaticShapes() {
         }
     }
     // The rigid layer needs the same ground for blocks to stand on.
-    if (rigidTerrain_.valid()) rigid_->destroyBody(rigidTerrain_);
+    // Particles meet the ground as the shapes above, not through its Box2D mirror.
+    if (rigidTerrain_.valid()) {
+        coupling_.unmirror(rigidTerrain_);
+        rigid_->destroyBody(rigidTerrain_);
+    }
     rigidTerrain_ = rigid_->createTerrain(terrain_.points(), RigidMaterial{0.0, 0.8, 0.0});
+    coupling_.mirror(rigidTerrain_);
 }
 
 void Match::buildWorld() {
@@ -111,14 +123,16 @@ void Match::buildWorld() {
         BodyDef bd;
         bd.type = BodyType::Static;
         const RigidMaterial m{0.0, 0.5, 0.3};
+        BodyId body;
         switch (o.shape) {
-        case Obstacle::Shape::Polyline: rigid_->createTerrain(o.points, m); break;
-        case Obstacle::Shape::Polygon: rigid_->createPolygon(bd, o.points, m); break;
+        case Obstacle::Shape::Polyline: body = rigid_->createTerrain(o.points, m); break;
+        case Obstacle::Shape::Polygon: body = rigid_->createPolygon(bd, o.points, m); break;
         case Obstacle::Shape::Circle:
             bd.position = o.center;
-            rigid_->createCircle(bd, o.radius, m);
+            body = rigid_->createCircle(bd, o.radius, m);
             break;
         }
+        coupling_.mirror(body); // particles meet the obstacle as a static shape
     }
     for (const Block& b : level_.blocks) addBlock(b);
     for (const Rope& r : level_.ropes) addRope(r);
@@ -232,6 +246,23 @@ Ammo Match::selectedAmmo() const {
     return ammoFromName(c.def.projectiles[c.projectile]).value_or(Ammo{});
 }
 
+MaterialsInPlay Match::materialsInPlay() const {
+    MaterialsInPlay in;
+    for (const CannonState& c : cannons_)
+        for (const std::string& p : c.def.projectiles) appendOnce(in.projectiles, p);
+    if (sandbox())
+        for (const ProjectilePreset& p : projectilePresets()) appendOnce(in.projectiles, std::string(p.name));
+    for (const std::string& name : in.projectiles)
+        if (const auto p = projectileFromName(name))
+            appendOnce(in.moving, projectileMaterial(world_.materials, *p));
+    const ParticleSet& set = world_.particles;
+    for (std::size_t i = 0; i < set.slots(); ++i)
+        if (set.flags[i] & kAlive) appendOnce(in.moving, set.material[i]);
+    for (std::size_t i = 0; i < world_.shapes.count(); ++i)
+        appendOnce(in.surfaces, world_.shapes.material(world_.shapes.ref(i)));
+    return in;
+}
+
 std::string Match::apply(const Command& cmd) {
     auto refuse = [&](std::string why) {
         emit(EventKind::Refused, current_, {}, 0.0, std::string(commandName(cmd.kind)) + ": " + why);
@@ -273,11 +304,12 @@ std::string Match::apply(const Command& cmd) {
         nextTurn();
         return "";
     case CommandKind::Set: {
-        WorldDef d = world_.def();
-        if (std::string why = applySetting(d, cmd.text, cmd.value); !why.empty()) return refuse(why);
-        world_.setDef(d);
+        LiveSettings live = liveSettings();
+        if (std::string why = applySetting(live, cmd.text, cmd.value); !why.empty()) return refuse(why);
+        world_.setDef(live.world);
+        world_.materials = std::move(live.materials); // its pair cache is rebuilt: next contact
         RigidWorldDef rd = rigid_->def();
-        rd.gravity = d.forces.gravity;
+        rd.gravity = live.world.forces.gravity;
         rigid_->setDef(rd);
         emit(EventKind::SettingChanged, current_, {}, 0.0, cmd.text + " = " + describe(cmd.value));
         return "";
@@ -319,6 +351,7 @@ void Match::fire() {
     const double a = c.angleDeg * kDegToRad;
     const Vec2 v{c.speedMps * std::cos(a), c.speedMps * std::sin(a)};
     ParticleDef pd = particleDef(shellAmmo_.preset, muzzle(c.angleDeg), v);
+    pd.material = projectileMaterial(world_.materials, shellAmmo_.preset);
     pd.flags |= kProjectile;
     shell_ = world_.particles.add(pd);
     shellFiredTick_ = tick();

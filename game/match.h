@@ -164,6 +164,13 @@ class Match {
     /// The ammunition selected on the current cannon.
     Ammo selectedAmmo() const;
 
+    /// What the `set` command changes: the world's settings and its material table.
+    LiveSettings liveSettings() const { return {world_.def(), world_.materials}; }
+    /// What the material controls show: the projectiles the cannons fire (every preset
+    /// in a sandbox), the materials of those and of the particles alive now, and the
+    /// materials of the static shapes; each once.
+    MaterialsInPlay materialsInPlay() const;
+
     // --- sandbox --------------------------------------------------------------------
     /// True when the level is a sandbox, or a `sandbox` command made it one: no shot
     /// budget, no score, and spawn, grab, drag and release are allowed.

@@ -67,7 +67,9 @@ std::string Match::spawn(const Command& cmd) {
         } else {
             // A tennis ball hanging on a spring from the anchor at `at` (period ~1 s).
             const ProjectilePreset ball = projectileFromName("tennis-ball").value();
-            const ParticleId id = world_.particles.add(particleDef(ball, cmd.to, {}));
+            ParticleDef pd = particleDef(ball, cmd.to, {});
+            pd.material = projectileMaterial(world_.materials, ball);
+            const ParticleId id = world_.particles.add(pd);
             Spring s;
             s.a = id;
             s.anchor = at;
@@ -85,7 +87,9 @@ std::string Match::spawn(const Command& cmd) {
         b.radius = size > 0.0 ? 0.5 * size : 1.0;
         addBlob(b);
     } else if (const auto preset = projectileFromName(what)) {
-        world_.particles.add(particleDef(*preset, at, {}));
+        ParticleDef pd = particleDef(*preset, at, {});
+        pd.material = projectileMaterial(world_.materials, *preset);
+        world_.particles.add(pd);
     } else {
         return "cannot spawn \"" + what + "\"";
     }

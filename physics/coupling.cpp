@@ -116,7 +116,9 @@ CouplingStats ParticleBodyCoupling::exchange(World& world, RigidWorld& rigid) {
         const auto id = static_cast<ParticleId>(i);
         rigid.circleContacts(set.position(id), set.radius[i], found_);
         for (const RigidCircleContact& c : found_) {
-            if (c.separation > 0.0 || tiedTo(id, c.body)) continue;
+            if (c.separation > 0.0 || tiedTo(id, c.body) ||
+                std::find(mirrors_.begin(), mirrors_.end(), c.body) != mirrors_.end())
+                continue;
             ++stats.contacts;
             const Vec2 n = c.normal;
             const double wb = rigid.inverseEffectiveMass(c.body, c.point, n);

@@ -93,6 +93,14 @@ class ParticleBodyCoupling {
     void detachBody(BodyId body);
     void detachParticle(ParticleId particle);
 
+    /// A static body that only mirrors geometry the particle world already has as static
+    /// shapes (the terrain and obstacles, given to Box2D so blocks stand on them): the
+    /// particles collide with the shapes, exactly at their time of impact, and must not
+    /// meet the mirror too. Box2D's skin (b2_polygonRadius, 1 cm) would otherwise push a
+    /// ball that rests on the shape up by a centimetre and add a second bounce.
+    void mirror(BodyId body) { mirrors_.push_back(body); }
+    void unmirror(BodyId body) { std::erase(mirrors_, body); }
+
     /// Call before the particle step: a spring-held particle that carried a body in the
     /// last exchange is integrated with the body's share of mass lumped onto it, so the
     /// spring pushes the pair as one (see the file comment); exchange() pays the body.
@@ -136,6 +144,7 @@ class ParticleBodyCoupling {
 
     CouplingDef def_;
     std::vector<ParticleBodyJoint> joints_;
+    std::vector<BodyId> mirrors_; ///< static bodies the particle world has as shapes
     std::vector<RigidCircleContact> found_;
     std::vector<BodyContactEvent> events_;
     std::vector<ContactRow> contacts_;

@@ -77,15 +77,39 @@ std::optional<MaterialId> MaterialTable::add(const Material& m) {
     return static_cast<MaterialId>(materials_.size() - 1);
 }
 
+namespace {
+bool samePair(const MaterialTable::Override& o, MaterialId a, MaterialId b) {
+    return (o.a == a && o.b == b) || (o.a == b && o.b == a);
+}
+} // namespace
+
 void MaterialTable::setPair(MaterialId a, MaterialId b, const PairProperties& p) {
     for (auto& o : overrides_)
-        if ((o.a == a && o.b == b) || (o.a == b && o.b == a)) {
+        if (samePair(o, a, b)) {
             o.p = p;
             rebuild();
             return;
         }
     overrides_.push_back({a, b, p});
     rebuild();
+}
+
+void MaterialTable::clearPair(MaterialId a, MaterialId b) {
+    std::erase_if(overrides_, [&](const Override& o) { return samePair(o, a, b); });
+    rebuild();
+}
+
+const PairProperties* MaterialTable::pairOverride(MaterialId a, MaterialId b) const {
+    for (const auto& o : overrides_)
+        if (samePair(o, a, b)) return &o.p;
+    return nullptr;
+}
+
+bool MaterialTable::setRestitution(MaterialId id, double e) {
+    if (id >= materials_.size() || !(e >= 0.0 && e <= 1.0)) return false;
+    materials_[id].restitution = e;
+    rebuild(); // the dense pair table caches e_a e_b: the next contact must see the new e
+    return true;
 }
 
 std::optional<MaterialId> MaterialTable::find(std::string_view name) const {

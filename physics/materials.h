@@ -51,6 +51,12 @@ class MaterialTable {
     std::optional<MaterialId> add(const Material& m);
     /// Overrides the combine rule for the pair (a, b), in both orders.
     void setPair(MaterialId a, MaterialId b, const PairProperties& p);
+    /// Gives the pair (a, b) back to the combine rule.
+    void clearPair(MaterialId a, MaterialId b);
+    /// Changes a material's restitution against the reference floor (0..1); every pair
+    /// without an entry of its own follows from the next contact on. False (and no
+    /// change) when the id or the value is out of range.
+    bool setRestitution(MaterialId id, double e);
 
     /// The pair's properties: its entry if it has one, else the combine rule. O(1).
     const PairProperties& pair(MaterialId a, MaterialId b) const {
@@ -65,13 +71,18 @@ class MaterialTable {
     /// The combine rule itself (see the file comment).
     static PairProperties combine(const Material& a, const Material& b);
 
-  private:
-    void rebuild();
-    std::vector<Material> materials_;
+    /// A pair with an entry of its own (setPair), in the order it was first set.
     struct Override {
         MaterialId a, b;
         PairProperties p;
     };
+    const std::vector<Override>& overrides() const { return overrides_; }
+    /// The pair's own entry, if it has one (either order).
+    const PairProperties* pairOverride(MaterialId a, MaterialId b) const;
+
+  private:
+    void rebuild();
+    std::vector<Material> materials_;
     std::vector<Override> overrides_;
     std::vector<PairProperties> mixed_; // size^2, row-major
 };

@@ -1,5 +1,6 @@
 #include "game/cli/verbs.h"
 
+#include "game/settings.h"
 #include "physics/forces.h"
 
 #include <string>
@@ -7,6 +8,36 @@
 namespace game::cli {
 
 namespace {
+
+/// `run --help`: the options, then every setting a `set` command takes, from the
+/// settings table (its data is constant-initialised, so this is safe during kVerbs'
+/// initialisation).
+const std::string& runUsage() {
+    static const std::string usage = std::string(R"(usage: artillery run LEVEL.json [--replay FILE | --commands FILE] [--ticks N]
+           [--png DIR --every K] [--size WxH] [--no-hud] [--record FILE]
+           [--autoplay] [--difficulty easy|normal|hard] [--json]
+
+Plays LEVEL with no window: the commands of a replay or of a commands script are
+applied at their ticks (the computer plays its own turns), and the run prints the
+events, the score and the final state hash.
+
+  --replay FILE      a recorded game (its level must be LEVEL, same content hash)
+  --commands FILE    a JSON list of {"tick": t, "cmd": ...} (README.md, "Game rules";
+                     the settings of "set" commands are listed below)
+  --ticks N          how many ticks to simulate (default: the replay's length, or until
+                     the match is over, at most 60 s after the last command)
+  --png DIR          write a PNG every K ticks (--every, default 60) into DIR, drawn
+                     headlessly with the window's drawing code (OSMesa, or EGL)
+  --size WxH         frame size (default 1280x720); --no-hud leaves the HUD out
+  --record FILE      save this run as a replay
+  --autoplay         the computer plays every cannon (at --difficulty)
+  --json             {"ticks":n,"final_hash":"hex","score":..,"shots":n,"over":b,
+                      "winner":i,"events":[...],"sim_ms":..,"render_ms":..}
+)") +
+        "\nSettings a commands file's {\"cmd\": \"set\", \"name\": .., \"value\": ..} takes:\n" +
+        settingsHelp();
+    return usage;
+}
 
 const Verb kVerbs[] = {
     {"solve", "firing solution: launch angles and flight times to hit a point",
@@ -134,26 +165,7 @@ Exit code: 0 when every file is valid, 1 when any is not, 2 on bad usage.
      {},
      runCheck},
     {"run", "headless simulation of a level: replay or script in, events, hash, PNG frames out",
-     R"(usage: artillery run LEVEL.json [--replay FILE | --commands FILE] [--ticks N]
-           [--png DIR --every K] [--size WxH] [--no-hud] [--record FILE]
-           [--autoplay] [--difficulty easy|normal|hard] [--json]
-
-Plays LEVEL with no window: the commands of a replay or of a commands script are
-applied at their ticks (the computer plays its own turns), and the run prints the
-events, the score and the final state hash.
-
-  --replay FILE      a recorded game (its level must be LEVEL, same content hash)
-  --commands FILE    a JSON list of {"tick": t, "cmd": ...} (see levels/README.md)
-  --ticks N          how many ticks to simulate (default: the replay's length, or until
-                     the match is over, at most 60 s after the last command)
-  --png DIR          write a PNG every K ticks (--every, default 60) into DIR, drawn
-                     headlessly with the window's drawing code (OSMesa, or EGL)
-  --size WxH         frame size (default 1280x720); --no-hud leaves the HUD out
-  --record FILE      save this run as a replay
-  --autoplay         the computer plays every cannon (at --difficulty)
-  --json             {"ticks":n,"final_hash":"hex","score":..,"shots":n,"over":b,
-                      "winner":i,"events":[...],"sim_ms":..,"render_ms":..}
-)",
+     runUsage().c_str(),
      {"no-hud", "autoplay"},
      runRun},
     {"replay", "replay verify FILE: re-simulate a replay and compare its checkpoints",

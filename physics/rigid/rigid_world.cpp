@@ -963,4 +963,26 @@ void RigidWorld::circleContacts(Vec2 center, double radius, std::vector<RigidCir
     }
 }
 
+void RigidWorld::contacts(std::vector<RigidContactView>& out) const {
+    out.clear();
+    for (const b2Contact* c = world_->GetContactList(); c; c = c->GetNext()) {
+        if (!c->IsTouching()) continue;
+        const int n = c->GetManifold()->pointCount;
+        if (n == 0) continue;
+        b2WorldManifold wm;
+        c->GetWorldManifold(&wm); // normal from fixture A to fixture B
+        BodyId a = idOf(c->GetFixtureA()->GetBody()), b = idOf(c->GetFixtureB()->GetBody());
+        Vec2 normal = fromB2(wm.normal);
+        // Point into the body that moves: a ball on the ground gets a normal pointing up.
+        if (c->GetFixtureB()->GetBody()->GetType() == b2_staticBody &&
+            c->GetFixtureA()->GetBody()->GetType() != b2_staticBody) {
+            std::swap(a, b);
+            normal = -normal;
+        }
+        for (int k = 0; k < n; ++k)
+            out.push_back({a, b, fromB2(wm.points[k]), normal,
+                           static_cast<double>(wm.separations[k])});
+    }
+}
+
 } // namespace phys

@@ -10,7 +10,7 @@
 //   joints        createRevolute / createWeld / createDistance / createPrismatic
 //   step          step(dt), profile(), hash()
 //   coupling      applyImpulse, velocityAt, state, inverseEffectiveMass, applyBlast
-//   queries       queryAABB, rayCast, circleContacts
+//   queries       queryAABB, rayCast, circleContacts, contacts
 //
 // What Box2D 2.4 cannot do exactly (the lead's tests should expect these):
 //   - float state. Positions, velocities and masses are 32-bit floats, so two bodies
@@ -67,6 +67,15 @@ struct RigidShapeView {
     Vec2 center;                    ///< circle centre, world m
     double radius = 0.0;            ///< circle, m
     double angle = 0.0;             ///< the body's angle, rad (marks a circle's spin)
+};
+
+/// One point of a touching contact between two bodies' fixtures, for drawing (contacts()).
+struct RigidContactView {
+    BodyId a;                ///< the normal points from a into b
+    BodyId b;                ///< the body that is not static, when one of the two is
+    Vec2 point;              ///< m
+    Vec2 normal;             ///< unit
+    double separation = 0.0; ///< m; < 0 means overlap
 };
 
 /// "" when the definition is usable at this tick length (s), else what is wrong and the
@@ -206,6 +215,9 @@ class RigidWorld {
     /// slot, then fixture. `ignore` is skipped (the body itself when probing from one).
     void circleContacts(Vec2 center, double radius, std::vector<RigidCircleContact>& out,
                         double margin = 0.0, BodyId ignore = {}) const;
+    /// Box2D's touching contacts after the last step, one entry per manifold point, in
+    /// b2World's contact order. `out` is cleared first.
+    void contacts(std::vector<RigidContactView>& out) const;
 
   private:
     struct BodySlot {

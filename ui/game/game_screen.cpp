@@ -47,6 +47,8 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
     : context_(context), window_(window), def_(def), glLoaded_(loadGLOrThrow(context)),
       imgui_(context, window) {
     stats_.context = context.name();
+    view_ = def_.view;
+    matchView_.followGhosts(view_.draw.ghosts);
     samples_ = autoSamples(def_.msaaSamples);
     msaa_.resize(context.width(), context.height(), samples_);
     if (!def_.settingsFolder.empty()) {
@@ -360,6 +362,7 @@ void GameScreen::drawPlaying() {
     const game::Match& m = *shownMatch();
     MatchViewOptions o;
     o.trails = view_.trails;
+    o.overlays = view_.draw;
     for (const game::CannonState& c : m.cannons())
         o.playerNames.push_back(defaultPlayerName(c.def.player));
     if (viewer_) {
@@ -411,12 +414,13 @@ void GameScreen::drawPanels() {
         const PendingAim shownAim = aim_.editing() ? aim_.pending() : PendingAim{m.cannon().angleDeg, m.cannon().speedMps};
         if (auto d = statsPanel_.panel(m, shownAim)) submit(settingCommands(m.world().def(), *d));
         if (settings_.physicsPanel) {
-            const phys::WorldDef before = m.world().def();
-            phys::WorldDef edited = before;
+            const game::LiveSettings before = m.liveSettings();
+            game::LiveSettings edited = before;
             SceneRequests scene;
             // Folded at first: the sky is where the shells fly. Its layout persists.
             ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
-            if (physicsPanel(edited, time_, view_, scene, stats_)) submit(settingCommands(before, edited));
+            if (physicsPanel(edited, m.materialsInPlay(), time_, view_, scene, stats_))
+                submit(settingCommands(before, edited));
             if (scene.fire && humanTurn()) submit(aim_.fire(m.cannon()));
             if (scene.reset) restart();
         }

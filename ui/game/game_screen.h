@@ -56,6 +56,8 @@ struct GameScreenDef {
     std::optional<bool> hotseat;
     /// Open the level as a sandbox (a `sandbox` command at its first tick).
     bool sandbox = false;
+    /// What to draw at the start: trails and the debug view's overlays (play flags).
+    ViewControls view;
 };
 
 class GameScreen final : public Screen {

@@ -664,9 +664,14 @@ void MatchView::reset() {
     previewKey_ = hintKey_ = {};
     preview_.clear();
     hint_.reset();
+    ghosts_.clear();
 }
 
 void MatchView::observe(const Match& m) {
+    if (ghostsShown_)
+        ghosts_.observe(m.world());
+    else
+        ghosts_.clear();
     const auto shell = m.shell();
     if (!shell) {
         trailShell_ = phys::kNoParticle;
@@ -788,6 +793,16 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
     }
     drawWater(r, m);
     drawEffects(r, m);
+    ghostsShown_ = o.overlays.ghosts;
+    if (o.overlays.any()) {
+        WorldDrawOptions w;
+        w.overlays = o.overlays;
+        w.pixel = r.camera().metres(1.0);
+        w.minRadius = r.camera().metres(2.0); // as the loose particles are drawn
+        w.ghosts = &ghosts_;
+        w.rigid = &m.rigid();
+        drawOverlays(r, m.world(), w);
+    }
     if (o.hud) drawHud(r, m, o, aim);
 }
 

@@ -16,6 +16,7 @@
 #include "game/match.h"
 #include "ui/render/camera.h"
 #include "ui/render/renderer2d.h"
+#include "ui/render/world_view.h"
 
 #include <cstdint>
 #include <optional>
@@ -35,6 +36,9 @@ struct MatchViewOptions {
     bool solutionHint = false;     ///< the computer's aim (aimAt) as a golden ghost barrel
     bool hud = true;               ///< turn, wind, angle, power, shots, score, stars
     bool trails = true;            ///< the shell's path so far
+    /// The debug view over the match: velocities, forces, closed-form ghosts, contacts,
+    /// grid cells, sleeping state, models (ui/render/world_view.h).
+    DebugOverlays overlays;
     /// The aim being edited in the window; the barrel, the power bar and the preview
     /// follow it instead of the cannon's committed aim.
     std::optional<PendingAim> pending;
@@ -66,10 +70,14 @@ Camera levelCamera(const game::Match& match, int width, int height);
 
 class MatchView {
   public:
-    /// Call after each tick (or each rendered tick headless): extends the shell's trail.
+    /// Call after each tick (or each rendered tick headless): extends the shell's trail
+    /// and, while the last draw() showed them, follows the closed-form ghosts.
     void observe(const game::Match& match);
     /// Forgets the trails and caches (a new match).
     void reset();
+    /// Follows the closed-form ghosts from the next observe() on, before any draw() asks
+    /// for them (a warm-up, a replay's first seconds); draw() then keeps it up to date.
+    void followGhosts(bool on) { ghostsShown_ = on; }
     /// Draws the match through `r` (begin() must have been called with the camera).
     void draw(Renderer2D& r, const game::Match& match, const MatchViewOptions& options);
 
@@ -86,6 +94,8 @@ class MatchView {
     std::vector<Trail> old_; ///< the last few shots, fading
     phys::ParticleId trailShell_ = phys::kNoParticle;
     int trailShot_ = -1;
+    phys::ClosedFormGhosts ghosts_;
+    bool ghostsShown_ = false;
 
     // The preview and the hint are re-simulated only when what they depend on changes.
     struct AimKey {

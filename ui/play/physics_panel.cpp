@@ -1,9 +1,11 @@
 #include "ui/play/physics_panel.h"
 
+#include "game/settings.h"
 #include "physics/integrators.h"
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -85,6 +87,191 @@ bool gravityCombo(phys::WorldDef& def) {
     return changed;
 }
 
+/// The setting's help from the settings table, as the hovered item's tooltip.
+void settingTooltip(const char* name) {
+    if (!ImGui::IsItemHovered()) return;
+    if (const game::SettingInfo* s = game::findSetting(name))
+        ImGui::SetTooltip("%s\n\nset %s: %s", s->help, name, game::expectation(*s).c_str());
+}
+
+/// A combo over the names a Choice setting takes; edits go through game::applySetting.
+template <class Settings>
+bool choiceCombo(const char* label, Settings& s, const std::string& name) {
+    const game::SettingInfo* info = game::findSetting(name);
+    const game::SettingValue now = game::readSetting(s, name);
+    const std::string* current = std::get_if<std::string>(&now);
+    bool changed = false;
+    if (ImGui::BeginCombo(label, current ? current->c_str() : "custom")) {
+        for (const std::string& choice : game::settingChoices(*info)) {
+            const bool selected = current && *current == choice;
+            if (ImGui::Selectable(choice.c_str(), selected) && !selected)
+                changed = game::applySetting(s, name, choice).empty();
+        }
+        ImGui::EndCombo();
+    }
+    settingTooltip(info->name);
+    return changed;
+}
+
+/// Contact model and continuous detection: world settings, in the demo and in matches.
+bool contactControls(phys::WorldDef& def) {
+    bool changed = choiceCombo("contact model", def, "contact_model");
+    bool continuous = def.collision.continuous;
+    if (ImGui::Checkbox("continuous detection", &continuous))
+        changed |= game::applySetting(def, "continuous", continuous).empty();
+    settingTooltip("continuous");
+    return changed;
+}
+
+/// The last refusal of a typed value, shown under the material controls until the next
+/// edit succeeds (the panel has no other state to keep it in).
+std::string& materialRefusal() {
+    static std::string why;
+    return why;
+}
+
+/// Applies a typed value; a refusal is kept for display.
+bool applyTyped(game::LiveSettings& s, const std::string& name, const game::SettingValue& v) {
+    materialRefusal() = game::applySetting(s, name, v);
+    return materialRefusal().empty();
+}
+
+/// A number typed and confirmed with Enter (dragging would send a command per frame).
+bool typedNumber(const char* id, double shown, double& typed) {
+    typed = shown;
+    ImGui::SetNextItemWidth(60);
+    return ImGui::InputDouble(id, &typed, 0.0, 0.0, "%.3f", ImGuiInputTextFlags_EnterReturnsTrue);
+}
+
+/// Per projectile: which of the notes' restitution presets it bounces with, or its e.
+bool projectileRestitution(game::LiveSettings& s, const std::string& projectile) {
+    const std::string name = "restitution." + projectile;
+    const auto preset = phys::projectileFromName(projectile);
+    if (!preset) return false;
+    const double e = s.materials[game::projectileMaterial(s.materials, *preset)].restitution;
+    bool changed = false;
+    ImGui::PushID(projectile.c_str());
+    ImGui::SetNextItemWidth(140);
+    const game::SettingValue now = game::readSetting(s, name);
+    const std::string* presetName = std::get_if<std::string>(&now);
+    if (ImGui::BeginCombo("##preset", presetName ? presetName->c_str() : "custom e")) {
+        for (const phys::RestitutionPreset& p : phys::kRestitutionPresets) {
+            char item[64];
+            std::snprintf(item, sizeof item, "%s  e %.3f", p.name, p.restitution);
+            if (ImGui::Selectable(item, p.restitution == e) && p.restitution != e)
+                changed = applyTyped(s, name, std::string(p.name));
+        }
+        ImGui::EndCombo();
+    }
+    settingTooltip(name.c_str());
+    ImGui::SameLine();
+    double typed = e;
+    if (typedNumber("##e", e, typed)) changed = applyTyped(s, name, typed);
+    ImGui::SameLine();
+    ImGui::TextUnformatted(projectile.c_str());
+    ImGui::PopID();
+    return changed;
+}
+
+/// One row of the pair table: the pair's e and friction, its e typed to override it.
+bool pairRow(game::LiveSettings& s, phys::MaterialId a, phys::MaterialId b) {
+    const std::string name = "pair." + s.materials[a].name + "." + s.materials[b].name;
+    const phys::PairProperties& p = s.materials.pair(a, b);
+    const bool own = s.materials.pairOverride(a, b) != nullptr;
+    bool changed = false;
+    ImGui::PushID(name.c_str());
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::Text("%s/%s", s.materials[a].name.c_str(), s.materials[b].name.c_str());
+    if (ImGui::IsItemHovered()) {
+        if (own)
+            ImGui::SetTooltip("its own e (%s); \"rule\" gives it back to e_a e_b", name.c_str());
+        else
+            ImGui::SetTooltip("the rule: e = e_a e_b = %.3f x %.3f; type an e to override it",
+                              s.materials[a].restitution, s.materials[b].restitution);
+    }
+    ImGui::TableNextColumn();
+    double typed = p.restitution;
+    if (typedNumber("##e", p.restitution, typed)) changed = applyTyped(s, name, typed);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.2f/%.2f", p.staticFriction, p.dynamicFriction);
+    ImGui::TableNextColumn();
+    if (own && ImGui::SmallButton("rule")) changed = applyTyped(s, name, std::string("combine"));
+    ImGui::PopID();
+    return changed;
+}
+
+/// The match's materials: each projectile's restitution and the table of pairs that can
+/// touch (moving with moving, moving with surfaces).
+bool materialControls(game::LiveSettings& s, const game::MaterialsInPlay& in) {
+    bool changed = false;
+    section("restitution (vs the rigid floor)");
+    for (const std::string& p : in.projectiles) changed |= projectileRestitution(s, p);
+    section("material pairs");
+    if (ImGui::BeginTable("pairs", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+        ImGui::TableSetupColumn("pair");
+        ImGui::TableSetupColumn("e");
+        ImGui::TableSetupColumn("mu_s/mu_d");
+        ImGui::TableSetupColumn("");
+        ImGui::TableHeadersRow();
+        for (std::size_t i = 0; i < in.moving.size(); ++i) {
+            for (std::size_t j = i; j < in.moving.size(); ++j)
+                changed |= pairRow(s, in.moving[i], in.moving[j]);
+            for (phys::MaterialId surface : in.surfaces)
+                if (std::find(in.moving.begin(), in.moving.end(), surface) == in.moving.end())
+                    changed |= pairRow(s, in.moving[i], surface); // else a row above has it
+        }
+        ImGui::EndTable();
+    }
+    if (!materialRefusal().empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", materialRefusal().c_str());
+    return changed;
+}
+
+ImVec4 imColor(phys::Color c) { return ImVec4(c.r, c.g, c.b, 1.0f); }
+
+/// A checkbox with a tooltip; the next one goes on the same line when `sameLine`.
+void toggle(const char* label, bool& value, const char* tip, bool sameLine) {
+    ImGui::Checkbox(label, &value);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+    if (sameLine) ImGui::SameLine();
+}
+
+/// The debug view's toggles (ui/render/world_view.h DebugOverlays), with a legend of the
+/// models' colours while they are shown.
+void overlayControls(DebugOverlays& d) {
+    toggle("forces", d.forces,
+           "net force of gravity, drag, wind, springs, buoyancy (magenta), in weights:\n"
+           "30 px of arrow = m g, clipped past 3; contacts act as impulses, so a resting ball shows its weight",
+           true);
+    toggle("closed-form ghost", d.ghosts,
+           "where the exact parabola p0 + v0 t + g t^2/2 puts each integrated flight (ghost),\n"
+           "the parabola itself, and the integrator's error (orange line, metres)",
+           false);
+    toggle("contacts", d.contacts,
+           "contact points and normals of the last tick: particles, particles on bodies,\n"
+           "Box2D bodies", true);
+    toggle("grid cells", d.cells,
+           "broad-phase uniform grid cells that hold particles (grid broad phase only)", false);
+    toggle("sleeping", d.sleeping, "sleeping particles and bodies dimmed, marked with a z", true);
+    toggle("models", d.models,
+           "ring per particle / outline per body in the colour of the model that moves it", false);
+    if (!d.models) return;
+    const struct {
+        phys::Color color;
+        const char* name;
+    } legend[] = {{modelColor(phys::ParticleModel::ClosedForm), "closed form"},
+                  {modelColor(phys::ParticleModel::Integrated), "integrated"},
+                  {modelColor(phys::ParticleModel::Sleeping), "asleep"},
+                  {modelColor(phys::ParticleModel::Fixed), "fixed"},
+                  {kOverlayRigidAwake, "rigid"},
+                  {kOverlayRigidAsleep, "rigid asleep"}};
+    for (std::size_t i = 0; i < std::size(legend); ++i) {
+        if (i % 3 != 0) ImGui::SameLine();
+        ImGui::TextColored(imColor(legend[i].color), "%s", legend[i].name);
+    }
+}
+
 } // namespace
 
 int gravityPresetIndex(double g) {
@@ -93,14 +280,17 @@ int gravityPresetIndex(double g) {
     return -1;
 }
 
-bool physicsPanel(phys::WorldDef& def, TimeControls& time, ViewControls& view, SceneRequests& scene,
-                  const FrameStats& stats) {
+namespace {
+/// The panel; `live` and `inPlay` (a match's) add the material controls, and then `def`
+/// is live->world.
+bool drawPanel(phys::WorldDef& def, game::LiveSettings* live, const game::MaterialsInPlay* inPlay,
+               TimeControls& time, ViewControls& view, SceneRequests& scene, const FrameStats& stats) {
     bool changed = false;
     // Top right: the shots rise on the left, and the sky over the landing zone is free.
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(display.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver,
                             ImVec2(1.0f, 0.0f));
-    ImGui::SetNextWindowSize(ImVec2(310, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver); // the pair table's width
     ImGui::Begin("Physics", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
     ImGui::PushItemWidth(160);
 
@@ -120,6 +310,10 @@ bool physicsPanel(phys::WorldDef& def, TimeControls& time, ViewControls& view, S
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("drag acts on v - wind; off when drag is off");
 
+    section("collisions");
+    changed |= contactControls(def);
+    if (live && inPlay) changed |= materialControls(*live, *inPlay);
+
     section("time");
     if (ImGui::Button(time.paused ? "resume" : "pause")) time.paused = !time.paused;
     ImGui::SameLine();
@@ -136,10 +330,11 @@ bool physicsPanel(phys::WorldDef& def, TimeControls& time, ViewControls& view, S
     section("draw");
     ImGui::Checkbox("trails", &view.trails);
     ImGui::SameLine();
-    ImGui::Checkbox("velocities", &view.velocities);
+    ImGui::Checkbox("velocities", &view.draw.velocities);
     ImGui::Checkbox("labels", &view.labels);
     ImGui::SameLine();
     ImGui::Checkbox("interpolate", &view.interpolate);
+    overlayControls(view.draw);
 
     section("stats");
     ImGui::Text("frame %.2f ms  physics %.1f us/tick", stats.frameMs, stats.physicsUs);
@@ -154,6 +349,18 @@ bool physicsPanel(phys::WorldDef& def, TimeControls& time, ViewControls& view, S
     ImGui::PopItemWidth();
     ImGui::End();
     return changed;
+}
+} // namespace
+
+bool physicsPanel(phys::WorldDef& def, TimeControls& time, ViewControls& view, SceneRequests& scene,
+                  const FrameStats& stats) {
+    return drawPanel(def, nullptr, nullptr, time, view, scene, stats);
+}
+
+bool physicsPanel(game::LiveSettings& settings, const game::MaterialsInPlay& inPlay,
+                  TimeControls& time, ViewControls& view, SceneRequests& scene,
+                  const FrameStats& stats) {
+    return drawPanel(settings.world, &settings, &inPlay, time, view, scene, stats);
 }
 
 } // namespace ui

@@ -1,10 +1,13 @@
 // The live controls (ImGui): every setting the world has (integrator, tick rate,
-// sub-steps, gravity, drag, wind), time (pause, single step, slow motion), what to
-// draw, and the stats line. A panel is a function that edits settings structs and says
-// whether it changed them (STYLE.md, "Dear ImGui").
+// sub-steps, gravity, drag, wind, contact model, continuous detection; in a match also
+// each projectile's restitution and the material pairs), time (pause, single step,
+// slow motion), what to draw, and the stats line. A panel is a function that edits
+// settings structs and says whether it changed them (STYLE.md, "Dear ImGui").
 #pragma once
 
+#include "game/settings.h"
 #include "physics/world.h"
+#include "ui/render/world_view.h"
 
 #include <cstdint>
 #include <string>
@@ -19,9 +22,9 @@ struct TimeControls {
 
 struct ViewControls {
     bool trails = true;
-    bool velocities = false;
     bool labels = true;
     bool interpolate = true; ///< blend the last two ticks by the clock's alpha
+    DebugOverlays draw;      ///< velocities, forces, ghosts, contacts, cells, sleeping, models
 };
 
 struct SceneRequests {
@@ -47,6 +50,12 @@ struct FrameStats {
 
 /// Draws the panel. Returns true when `def` was edited (apply it at the next tick).
 bool physicsPanel(phys::WorldDef& def, TimeControls& time, ViewControls& view, SceneRequests& scene,
+                  const FrameStats& stats);
+/// The panel of a match: also each projectile's restitution (a preset of the notes, or e
+/// typed) and the table of the material pairs in play (e, friction, e typed to override
+/// it). Every edit goes through game::applySetting. Returns true when `settings` changed.
+bool physicsPanel(game::LiveSettings& settings, const game::MaterialsInPlay& inPlay,
+                  TimeControls& time, ViewControls& view, SceneRequests& scene,
                   const FrameStats& stats);
 
 /// Index of the gravity preset whose g matches, or -1 for a custom value.

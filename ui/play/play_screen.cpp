@@ -55,6 +55,7 @@ void PlayScreen::simulate(double wallSeconds) {
         // The state before the last tick is what the frame blends from.
         previous_.capture(scene_.world.particles);
         scene_.tick();
+        observeTick();
         physicsUs += scene_.world.profile().totalUs;
     }
     stats_.ticksThisFrame = ticks;
@@ -74,8 +75,10 @@ void PlayScreen::drawScene() {
     DemoViewOptions o;
     o.trails = view_.trails;
     o.labels = view_.labels;
-    o.world.velocities = view_.velocities;
     o.world.minRadius = camera_.metres(3.0);
+    o.world.overlays = view_.draw;
+    o.world.pixel = camera_.metres(1.0);
+    o.world.ghosts = &ghosts_;
     // Paused or single-stepping shows the tick itself, not a blend toward it.
     if (view_.interpolate && !time_.paused && !previous_.x.empty()) {
         o.world.previous = &previous_;
@@ -134,6 +137,7 @@ void PlayScreen::frame(double wallSeconds) {
         if (requests.reset) {
             scene_.reset();
             previous_ = {};
+            ghosts_.clear();
         }
     }
     imgui_.drawLabels(renderer_.labels());
@@ -165,9 +169,10 @@ bool PlayScreen::handleEvent(const SDL_Event& e) {
         case SDLK_r:
             scene_.reset();
             previous_ = {};
+            ghosts_.clear();
             break;
         case SDLK_v:
-            view_.velocities = !view_.velocities;
+            view_.draw.velocities = !view_.draw.velocities;
             break;
         case SDLK_t:
             view_.trails = !view_.trails;
@@ -228,8 +233,18 @@ bool PlayScreen::takeScreenshotRequest() {
 
 void PlayScreen::warmUp(double seconds) {
     const int ticks = static_cast<int>(seconds / scene_.world.def().tickSeconds);
-    for (int i = 0; i < ticks; ++i)
+    for (int i = 0; i < ticks; ++i) {
         scene_.tick();
+        observeTick();
+    }
+}
+
+void PlayScreen::observeTick() {
+    // The ghosts' launch states are kept only while they are shown.
+    if (view_.draw.ghosts)
+        ghosts_.observe(scene_.world);
+    else
+        ghosts_.clear();
 }
 
 void PlayScreen::setMeasuredFrameMs(double ms) {

@@ -66,6 +66,8 @@ class PlayScreen final : public Screen {
     void applySettings(const phys::WorldDef& def);
     void drawScene();
     void drawHud();
+    /// After each tick: what the overlays keep across ticks (the ghosts' launches).
+    void observeTick();
 
     GLContext& context_;
     bool glLoaded_;
@@ -82,6 +84,7 @@ class PlayScreen final : public Screen {
     ViewControls view_;
     FrameStats stats_;
     PositionSnapshot previous_;
+    phys::ClosedFormGhosts ghosts_;
     bool screenshotRequested_ = false;
     int framesMeasured_ = 0;
 };

@@ -30,7 +30,8 @@ constexpr const char* kPlayUsage =
                       [--size WxH] [--headless] [--context auto|osmesa|egl]
                       [--warmup SECONDS] [--msaa N] [--no-panel]
                       [--difficulty easy|normal|hard] [--hotseat] [--sandbox] [--demo]
-                      [--json]
+                      [--velocities] [--forces] [--ghosts] [--contacts] [--cells]
+                      [--sleeping] [--models] [--json]
 
 Plays LEVEL in a window; without LEVEL the level select screen opens (every level in
 levels/ with its lesson and your best result). Aim by dragging from the cannon
@@ -72,8 +73,22 @@ options:
   --demo                the physics demo scene instead of a level (a cannon with a
                         drag-free twin and a swinging spring chain); with it:
                         --integrator NAME, --planet NAME | --gravity G, --wind VX,
-                        --no-drag, --velocities
+                        --no-drag
   --json                print the run's figures as JSON
+
+draw (the physics panel's "draw" toggles, on from the start; levels and --demo):
+  --velocities          velocity arrows (yellow, 0.1 m per m/s)
+  --forces              net force of gravity, drag, wind, springs and buoyancy
+                        (magenta), in weights: 30 px of arrow = m g
+  --ghosts              closed-form ghost of every integrated flight: where the
+                        exact parabola puts it, the parabola, and the integrator's
+                        error (orange line, with its length in metres)
+  --contacts            the last tick's contact points and normals (red)
+  --cells               broad-phase grid cells that hold particles (green)
+  --sleeping            sleeping particles and bodies dimmed, marked with a z
+  --models              a ring per particle, an outline per body, coloured by the
+                        model that moves it: closed form green, integrated orange,
+                        asleep blue, fixed grey, Box2D pink (asleep: dark pink)
 
 keys:  mouse drag aim   arrows angle/power   hold Space charge, release fire
        Enter/F fire   1-8 projectile   E end turn   P preview   H hint
@@ -101,7 +116,7 @@ struct PlayOptions {
     int msaa = 0;
     bool panel = true;
     bool json = false;
-    bool velocities = false;
+    ViewControls view; ///< what to draw from the start (the draw flags)
     phys::WorldDef world = demoWorldDef();
     std::string level;  ///< "" = level select (window) or the demo (headless)
     std::string replay; ///< a replay to watch instead
@@ -154,7 +169,14 @@ PlayOptions parseOptions(const Args& args) {
     o.warmupSeconds = args.number("warmup", 0.0, 0.0, 3600.0, "s");
     o.msaa = static_cast<int>(args.integer("msaa", 0, 0, 16));
     o.panel = !args.flag("no-panel");
-    o.velocities = args.flag("velocities");
+    DebugOverlays& draw = o.view.draw;
+    draw.velocities = args.flag("velocities");
+    draw.forces = args.flag("forces");
+    draw.ghosts = args.flag("ghosts");
+    draw.contacts = args.flag("contacts");
+    draw.cells = args.flag("cells");
+    draw.sleeping = args.flag("sleeping");
+    draw.models = args.flag("models");
     o.world.integrator = game::cli::integratorOption(args, o.world.integrator);
     o.world.forces.gravity = {0.0, -game::cli::gravityOption(args)};
     o.world.forces.wind = {args.number("wind", 0.0, -100.0, 100.0, "m/s"), 0.0};
@@ -200,7 +222,7 @@ PlayScreenDef screenDef(const PlayOptions& o) {
     PlayScreenDef d;
     d.msaaSamples = o.msaa;
     d.panel = o.panel;
-    d.view.velocities = o.velocities;
+    d.view = o.view;
     d.world = o.world;
     return d;
 }
@@ -230,6 +252,7 @@ std::unique_ptr<Screen> makeScreen(GLContext& context, SdlWindow* window, const 
     d.difficulty = o.difficulty;
     d.hotseat = o.hotseat;
     d.sandbox = o.sandbox;
+    d.view = o.view;
     // A person playing keeps results and layout; check runs (--frames) and headless
     // pictures leave nothing behind.
     if (window && !o.frames) d.settingsFolder = configFolder();
@@ -399,7 +422,8 @@ const game::cli::Verb& playVerb() {
     static const game::cli::Verb verb{"play",
                                       "play in a window (headless picture without a display)",
                                       kPlayUsage,
-                                      {"headless", "no-panel", "no-drag", "velocities", "demo",
+                                      {"headless", "no-panel", "no-drag", "velocities", "forces",
+                                       "ghosts", "contacts", "cells", "sleeping", "models", "demo",
                                        "hotseat", "sandbox"},
                                       runPlay};
     return verb;
