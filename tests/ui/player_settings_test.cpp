@@ -38,3 +38,40 @@ TEST(PlayerSettingsFiles, ADamagedFileIsReportedAndLeftAsItIs) {
     EXPECT_EQ(warning, "");
     std::filesystem::remove_all(dir);
 }
+
+TEST(PlayerSettingsFiles, DrawTogglesRoundTripAndAreReadStrictly) {
+    const auto dir = std::filesystem::temp_directory_path() / "artillery-draw-settings-test";
+    std::filesystem::remove_all(dir);
+    const std::string file = (dir / "settings.json").string();
+    ui::PlayerSettings s;
+    s.draw.trails = false;
+    s.draw.forces = true;
+    s.draw.cells = true;
+    s.draw.models = true;
+    ASSERT_EQ(ui::savePlayerSettings(file, s), "");
+    std::string warning;
+    const ui::PlayerSettings back = ui::loadPlayerSettings(file, warning);
+    EXPECT_EQ(warning, "");
+    EXPECT_EQ(back.draw, s.draw);
+    EXPECT_FALSE(back.draw.velocities);
+    // A file without "draw" keeps the defaults; a toggle the game does not have, or one
+    // that is not a boolean, is refused with its path.
+    EXPECT_EQ(ui::parsePlayerSettings("a.json", R"({"format": 1})").draw, ui::DrawChoices{});
+    const auto message = [](const std::string& text) {
+        try {
+            ui::parsePlayerSettings("s.json", text);
+        } catch (const game::LoadError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_NE(message(R"({"format": 1, "draw": {"force": true}})").find("s.json: $.draw"),
+              std::string::npos)
+        << message(R"({"format": 1, "draw": {"force": true}})");
+    EXPECT_NE(message(R"({"format": 1, "draw": {"cells": 1}})").find("$.draw.cells"),
+              std::string::npos)
+        << message(R"({"format": 1, "draw": {"cells": 1}})");
+    EXPECT_NE(message(R"({"format": 1, "draw": [true]})").find("expected an object of draw toggles"),
+              std::string::npos);
+    std::filesystem::remove_all(dir);
+}

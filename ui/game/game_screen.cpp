@@ -40,6 +40,28 @@ game::Level withHotseat(game::Level level) {
 /// Time scales the [ and ] keys step through.
 constexpr float kSpeeds[] = {1.0f / 16, 0.125f, 0.25f, 0.5f, 1.0f, 2.0f, 4.0f};
 
+/// The view the window opens with: the player's stored draw choices, plus what the
+/// command line turns on (its draw flags only switch things on).
+ViewControls openingView(ViewControls flags, const DrawChoices& stored) {
+    DebugOverlays& d = flags.draw;
+    flags.trails = flags.trails && stored.trails;
+    flags.labels = flags.labels && stored.labels;
+    d.velocities = d.velocities || stored.velocities;
+    d.forces = d.forces || stored.forces;
+    d.ghosts = d.ghosts || stored.ghosts;
+    d.contacts = d.contacts || stored.contacts;
+    d.cells = d.cells || stored.cells;
+    d.sleeping = d.sleeping || stored.sleeping;
+    d.models = d.models || stored.models;
+    return flags;
+}
+
+DrawChoices drawChoices(const ViewControls& v) {
+    const DebugOverlays& d = v.draw;
+    return {v.trails,   v.labels, d.velocities, d.forces, d.ghosts,
+            d.contacts, d.cells,  d.sleeping,   d.models};
+}
+
 } // namespace
 
 // ---- set-up ---------------------------------------------------------------------------
@@ -47,8 +69,6 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
     : context_(context), window_(window), def_(def), glLoaded_(loadGLOrThrow(context)),
       imgui_(context, window) {
     stats_.context = context.name();
-    view_ = def_.view;
-    matchView_.followGhosts(view_.draw.ghosts);
     samples_ = autoSamples(def_.msaaSamples);
     msaa_.resize(context.width(), context.height(), samples_);
     if (!def_.settingsFolder.empty()) {
@@ -69,6 +89,8 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
             ImGui::LoadIniSettingsFromMemory(ini.data(), ini.size());
         }
     }
+    view_ = openingView(def_.view, settings_.draw);
+    matchView_.followGhosts(view_.draw.ghosts);
     if (def_.difficulty) settings_.difficulty = *def_.difficulty;
     if (def_.hotseat) settings_.hotseat = *def_.hotseat;
     if (!def_.panel) settings_.physicsPanel = false;
@@ -94,6 +116,7 @@ GameScreen::~GameScreen() {
 
 void GameScreen::persist() {
     if (settingsFile_.empty()) return;
+    settings_.draw = drawChoices(view_);
     if (const std::string err = savePlayerSettings(settingsFile_, settings_); !err.empty())
         std::cerr << "artillery: settings not saved: " << err << "\n";
     std::size_t size = 0;

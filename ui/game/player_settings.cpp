@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -39,6 +40,21 @@ const LevelResult* PlayerSettings::result(const std::string& levelFile) const {
     return it == results.end() ? nullptr : &it->second;
 }
 
+namespace {
+/// The draw toggles by their names in the file, in the panel's order.
+std::array<std::pair<const char*, bool*>, 9> drawFlags(DrawChoices& d) {
+    return {{{"trails", &d.trails},
+             {"labels", &d.labels},
+             {"velocities", &d.velocities},
+             {"forces", &d.forces},
+             {"ghosts", &d.ghosts},
+             {"contacts", &d.contacts},
+             {"cells", &d.cells},
+             {"sleeping", &d.sleeping},
+             {"models", &d.models}}};
+}
+} // namespace
+
 std::string configFolder() {
     if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
         return (std::filesystem::path(xdg) / "artillery").string();
@@ -60,6 +76,11 @@ PlayerSettings parsePlayerSettings(const std::string& file, const std::string& t
     s.trajectoryPreview = root.boolean("trajectory_preview", s.trajectoryPreview);
     s.solutionHint = root.boolean("solution_hint", s.solutionHint);
     s.physicsPanel = root.boolean("physics_panel", s.physicsPanel);
+    if (const auto draw = root.find("draw")) {
+        if (!draw->isObject()) draw->fail("expected an object of draw toggles (true or false)");
+        for (auto& [name, flag] : drawFlags(s.draw)) *flag = draw->boolean(name, *flag);
+        draw->finish();
+    }
     if (const auto levels = root.find("levels")) {
         if (!levels->isObject()) levels->fail("expected an object of results by level file name");
         if (levels->json().size() > kMaxLevelResults)
@@ -102,6 +123,8 @@ std::string savePlayerSettings(const std::string& file, const PlayerSettings& s)
     j["trajectory_preview"] = s.trajectoryPreview;
     j["solution_hint"] = s.solutionHint;
     j["physics_panel"] = s.physicsPanel;
+    DrawChoices draw = s.draw;
+    for (const auto& [name, flag] : drawFlags(draw)) j["draw"][name] = *flag;
     nlohmann::json levels = nlohmann::json::object();
     for (const auto& [name, r] : s.results)
         levels[name] = {{"best_score", r.bestScore}, {"stars", r.stars}, {"plays", r.plays}, {"won", r.won}};

@@ -1,5 +1,6 @@
 // What the game remembers between runs: the best result of every level, the player's
-// choices (difficulty, hotseat, preview and hint toggles) and the ImGui layout. Kept in
+// choices (difficulty, hotseat, preview and hint toggles, what to draw) and the ImGui
+// layout. Kept in
 // $XDG_CONFIG_HOME/artillery (else ~/.config/artillery), written atomically (temp file
 // + rename) so a crash never leaves half a file.
 #pragma once
@@ -18,12 +19,28 @@ struct LevelResult {
     bool won = false;   ///< duel: beaten at least once
 };
 
+/// The Draw toggles as the player left them (the panel's view section: MatchView's trails,
+/// the labels, and the debug overlays of ui/render/world_view.h).
+struct DrawChoices {
+    bool trails = true;
+    bool labels = true;
+    bool velocities = false;
+    bool forces = false;
+    bool ghosts = false;
+    bool contacts = false;
+    bool cells = false;
+    bool sleeping = false;
+    bool models = false;
+    bool operator==(const DrawChoices&) const = default;
+};
+
 struct PlayerSettings {
     game::Difficulty difficulty = game::Difficulty::Normal;
     bool hotseat = false;          ///< a duel's "cpu" cannon is played by a second person
     bool trajectoryPreview = true;
     bool solutionHint = false;
     bool physicsPanel = true;
+    DrawChoices draw;
     /// By level file name (not path), so results survive moving the folder.
     std::map<std::string, LevelResult> results;
 
