@@ -61,7 +61,10 @@ sanitize: deps
 	cd $(SAN_BUILD) && ARTILLERY_TRAP_FP=1 ASAN_OPTIONS=detect_leaks=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
 
-# make fuzz: libFuzzer on the level, replay and commands loaders, FUZZ_SECONDS each.
+# make fuzz: libFuzzer on the level, replay, commands and player settings loaders,
+# FUZZ_SECONDS each. What a fuzzer finds (crash-*, leak-*, timeout-*, oom-*) is saved in
+# $(FUZZ_BUILD)/artifacts/LOADER/, never in the source tree; the target fails if any
+# fuzzer did.
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_PACKAGES := clang libclang-rt-14-dev
@@ -74,14 +77,25 @@ fuzz: deps
 	fi
 	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARTILLERY_FUZZ=ON
 	cmake --build $(FUZZ_BUILD) -j $(JOBS)
-	@for t in level replay commands; do \
+	@failed=""; \
+	for t in level replay commands settings; do \
 	  case $$t in \
 	    level) seeds="levels tests/data/bad_levels" ;; \
 	    replay) seeds="tests/replays tests/data/bad_replays" ;; \
 	    commands) seeds="tests/data/bad_commands" ;; \
+	    settings) seeds="tests/data/bad_settings" ;; \
 	  esac; \
-	  corpus=$(FUZZ_BUILD)/corpus/$$t; mkdir -p $$corpus; \
+	  corpus=$(FUZZ_BUILD)/corpus/$$t; artifacts=$(FUZZ_BUILD)/artifacts/$$t; \
+	  log=$(FUZZ_BUILD)/fuzz_$$t.log; mkdir -p $$corpus $$artifacts; \
 	  echo "fuzzing the $$t loader for $(FUZZ_SECONDS) s"; \
-	  $(FUZZ_BUILD)/tests/fuzz/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -max_len=65536 \
-	    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 $$corpus $$seeds 2>&1 | tail -4 || exit 1; \
-	done
+	  if $(FUZZ_BUILD)/tests/fuzz/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -max_len=65536 \
+	      -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix=$$artifacts/ \
+	      $$corpus $$seeds > $$log 2>&1; then \
+	    tail -4 $$log; \
+	  else \
+	    tail -40 $$log; failed="$$failed $$t"; \
+	  fi; \
+	done; \
+	if [ -n "$$failed" ]; then \
+	  echo "fuzz: the$$failed loader(s) failed; the inputs are in $(FUZZ_BUILD)/artifacts/"; exit 1; \
+	fi

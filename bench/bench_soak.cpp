@@ -1,111 +1,270 @@
-// bench_soak: one simulated hour (by default) of a busy scene — thousands of particles
-// bouncing in a closed box with perfectly elastic walls, springs holding a soft lattice,
-// and Box2D crates coupled to the particles — printing every simulated minute the total
-// energy against the start, the particles the guard had to remove (NaN or runaway: must
-// stay 0) and the process's resident memory (must stay flat once warm).
+// bench_soak: one simulated hour (by default) at the game tick, to show that nothing
+// drifts, blows up or leaks over a long session (issue 8). It runs, side by side:
 //
-//   bench_soak [--seconds S] [--particles N] [--bodies M]
-#include "physics/coupling.h"
-#include "physics/guard.h"
-#include "physics/rigid/rigid_world.h"
-#include "physics/world.h"
+//   busy          a dissipative game-like scene (a particle gas settling into a pile,
+//                 springs, Box2D crates coupled to the particles, resting contact, sleep):
+//                 its energy falls by design; it is here for the guard (0 removals),
+//                 NaN (0) and memory (flat).
+//   oscillators   particles on undamped springs, one bank per integrator (symplectic
+//                 Euler, Verlet, velocity Verlet, leapfrog, RK4): energy drift per
+//                 integrator; for symplectic Euler and velocity Verlet the exactly
+//                 conserved modified energy is checked every tick.
+//   gas           particles in a box, e = 1, no friction, no sleep, no gravity.
+//   bodies        Box2D circles and boxes in a box, e = 1, no friction, no sleep.
+//
+// Every report interval it prints the energy drift of each scene, the non-finite values
+// and guard removals so far (must stay 0), the resident memory (from /proc/self/statm;
+// must stay flat once warm) and the wall time; at the end a summary. Exit 0 when there
+// was no fault and the exact invariants held, 1 otherwise, 2 on bad arguments.
+//
+//   bench_soak [--seconds S] [--scenes busy,oscillators,gas,bodies] [--report S]
+//              [--particles N] [--crates M] [--oscillators N] [--gas N] [--bodies M]
+#include "soak_scenes.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <random>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <unistd.h>
+#include <vector>
 
 namespace {
+
+constexpr std::string_view kScenes = "busy,oscillators,gas,bodies";
+std::vector<std::string_view> names(std::string_view list);
+
+struct Options {
+    double seconds = 3600.0; ///< simulated time, s
+    double report = 60.0;    ///< simulated seconds between progress lines
+    std::string scenes{kScenes};
+    int particles = 1000;  ///< busy scene
+    int crates = 100;      ///< busy scene
+    int oscillators = 400; ///< per integrator
+    int gas = 1000;
+    int bodies = 1000;
+    bool has(std::string_view scene) const { return std::ranges::count(names(scenes), scene) > 0; }
+};
+
+/// The names of a comma-separated list ("busy,gas" -> busy, gas).
+std::vector<std::string_view> names(std::string_view list) {
+    std::vector<std::string_view> out;
+    for (;;) {
+        const auto comma = list.find(',');
+        out.push_back(list.substr(0, comma));
+        if (comma == std::string_view::npos) return out;
+        list.remove_prefix(comma + 1);
+    }
+}
+
+constexpr const char* kUsage =
+    "usage: bench_soak [--seconds S > 0 (3600)] [--report S > 0 (60)]\n"
+    "                  [--scenes LIST of busy,oscillators,gas,bodies (all)]\n"
+    "                  [--particles N >= 1 (1000)] [--crates M >= 0 (100)]   busy scene\n"
+    "                  [--oscillators N >= 1 (400, per integrator)] [--gas N >= 1 (1000)]\n"
+    "                  [--bodies M >= 1 (1000)]\n";
+
+bool parse(int argc, char** argv, Options& o) {
+    for (int i = 1; i < argc; i += 2) {
+        if (i + 1 >= argc) return false;
+        const char* flag = argv[i];
+        const char* value = argv[i + 1];
+        char* end = nullptr;
+        const double number = std::strtod(value, &end);
+        const bool numeric = end != value && *end == '\0';
+        const auto count = [&](int& out, int least) {
+            if (!numeric || number < least || number > 1e6 || number != std::floor(number))
+                return false;
+            out = static_cast<int>(number);
+            return true;
+        };
+        bool ok = true;
+        if (!std::strcmp(flag, "--seconds"))
+            ok = numeric && number > 0, o.seconds = number;
+        else if (!std::strcmp(flag, "--report"))
+            ok = numeric && number > 0, o.report = number;
+        else if (!std::strcmp(flag, "--scenes")) {
+            o.scenes = value;
+            for (const std::string_view name : names(value))
+                ok = ok && std::ranges::count(names(kScenes), name) > 0;
+        } else if (!std::strcmp(flag, "--particles"))
+            ok = count(o.particles, 1);
+        else if (!std::strcmp(flag, "--crates"))
+            ok = count(o.crates, 0);
+        else if (!std::strcmp(flag, "--oscillators"))
+            ok = count(o.oscillators, 1);
+        else if (!std::strcmp(flag, "--gas"))
+            ok = count(o.gas, 1);
+        else if (!std::strcmp(flag, "--bodies"))
+            ok = count(o.bodies, 1);
+        else
+            ok = false;
+        if (!ok) {
+            std::fprintf(stderr, "bench_soak: bad option %s %s\n", flag, value);
+            return false;
+        }
+    }
+    return true;
+}
 
 double residentMiB() {
     std::ifstream statm("/proc/self/statm");
     long pages = 0, resident = 0;
     statm >> pages >> resident;
-    return static_cast<double>(resident) * 4096.0 / (1024.0 * 1024.0);
+    return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) /
+           (1024.0 * 1024.0);
 }
 
-double energyOf(const phys::World& w, const phys::RigidWorld& rigid) {
-    double e = phys::energy(w.particles, w.springs, w.def().forces).total();
-    for (const phys::BodyId id : rigid.bodies()) {
-        const phys::RigidBodyState s = rigid.state(id);
-        if (s.mass <= 0.0) continue;
-        e += 0.5 * s.mass * phys::lengthSquared(s.linearVelocity) +
-             0.5 * s.inertia * s.angularVelocity * s.angularVelocity + s.mass * 9.81 * s.position.y;
+/// Resident memory at the start, after the first report (warm), at the end, and its max.
+struct MemoryTrace {
+    double start = 0.0, warm = -1.0, last = 0.0, max = 0.0;
+    void sample() {
+        last = residentMiB();
+        if (warm < 0.0) warm = last;
+        max = std::max(max, last);
     }
-    return e;
+};
+
+/// Column label of an integrator's drift (the header has 11 characters per column).
+const char* columnLabel(phys::Integrator m) {
+    switch (m) {
+    case phys::Integrator::SymplecticEuler:
+        return "sympl-euler";
+    case phys::Integrator::VelocityVerlet:
+        return "vel-verlet";
+    default:
+        return phys::info(m).name;
+    }
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
-    double seconds = 3600.0;
-    int particles = 2000, bodies = 100;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        if (!std::strcmp(argv[i], "--seconds")) seconds = std::atof(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--particles")) particles = std::atoi(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--bodies")) bodies = std::atoi(argv[i + 1]);
-    }
-    if (!(seconds > 0.0) || particles < 1 || bodies < 0) {
-        std::fprintf(stderr, "usage: bench_soak [--seconds S > 0] [--particles N >= 1] [--bodies M >= 0]\n");
+    Options opt;
+    if (!parse(argc, argv, opt)) {
+        std::fputs(kUsage, stderr);
         return 2;
     }
-    using namespace phys;
-    World w;
-    RigidWorld rigid;
-    ParticleBodyCoupling coupling;
-    const std::vector<Vec2> box{{0, 40}, {0, 0}, {60, 0}, {60, 40}, {0, 40}};
-    w.shapes.addPolyline(box, material::kFloor);
-    rigid.createTerrain(box, RigidMaterial{0.0, 0.3, 0.0});
-    std::mt19937_64 rng(2026);
-    std::uniform_real_distribution<double> x(1.0, 59.0), y(5.0, 38.0), v(-8.0, 8.0);
-    for (int i = 0; i < particles; ++i) {
-        ParticleDef pd;
-        pd.position = {x(rng), y(rng)};
-        pd.velocity = {v(rng), v(rng)};
-        pd.radius = 0.1;
-        pd.material = material::kPerfectlyElastic;
-        w.particles.add(pd);
-    }
-    // A soft lattice of springs among the first particles.
-    for (int i = 0; i + 1 < std::min(particles, 200); i += 2) {
-        Spring s;
-        s.a = static_cast<ParticleId>(i);
-        s.b = static_cast<ParticleId>(i + 1);
-        s.restLength = 0.5;
-        s.stiffness = 200.0;
-        s.damping = 0.1;
-        w.springs.push_back(s);
-    }
-    for (int i = 0; i < bodies; ++i) {
-        BodyDef bd;
-        bd.position = {x(rng), y(rng)};
-        rigid.createBox(bd, {0.4, 0.4}, RigidMaterial{50.0, 0.4, 0.5});
-    }
-    const double tick = w.def().tickSeconds;
-    const long ticks = static_cast<long>(seconds / tick);
-    const long perMinute = static_cast<long>(60.0 / tick);
-    const double e0 = energyOf(w, rigid);
-    long removed = 0;
+    using soak::kTick;
+    const phys::Integrator methods[] = {phys::Integrator::SymplecticEuler, phys::Integrator::Verlet,
+                                        phys::Integrator::VelocityVerlet,
+                                        phys::Integrator::Leapfrog, phys::Integrator::RK4};
+    std::unique_ptr<soak::BusyScene> busy;
+    std::vector<std::unique_ptr<soak::OscillatorBank>> banks;
+    std::unique_ptr<soak::ElasticGas> gas;
+    std::unique_ptr<soak::ElasticBodies> bodies;
+    std::uint64_t seed = 2026;
+    if (opt.has("busy"))
+        busy = std::make_unique<soak::BusyScene>(opt.particles, opt.crates, seed++);
+    if (opt.has("oscillators"))
+        for (const phys::Integrator m : methods)
+            banks.push_back(std::make_unique<soak::OscillatorBank>(m, opt.oscillators, seed++));
+    if (opt.has("gas")) gas = std::make_unique<soak::ElasticGas>(opt.gas, seed++);
+    if (opt.has("bodies")) bodies = std::make_unique<soak::ElasticBodies>(opt.bodies, seed++);
+    MemoryTrace memory;
+    memory.start = residentMiB();
+
+    const long ticks = std::lround(opt.seconds / kTick);
+    const long perReport = std::max(1L, std::lround(opt.report / kTick));
+    std::printf("soak: %.0f s simulated at %.0f Hz (%ld ticks), a line every %.0f s\n", opt.seconds,
+                1.0 / kTick, ticks, opt.report);
+    if (busy)
+        std::printf("  busy: %d particles, %zu springs, %d Box2D crates in a %.0f m x 40 m box "
+                    "(dissipative)\n",
+                    opt.particles, busy->world.springs.size(), opt.crates,
+                    soak::BusyScene::width(opt.particles));
+    if (!banks.empty())
+        std::printf("  oscillators: %d per integrator x %zu, k %.0f..%.0f N/m, 1 kg "
+                    "(w dt %.3f..%.3f), undamped\n",
+                    opt.oscillators, banks.size(), soak::OscillatorBank::kMin,
+                    soak::OscillatorBank::kMax, std::sqrt(soak::OscillatorBank::kMin) * kTick,
+                    std::sqrt(soak::OscillatorBank::kMax) * kTick);
+    if (gas)
+        std::printf("  gas: %d particles, e = 1, frictionless, no gravity, no sleep\n", opt.gas);
+    if (bodies)
+        std::printf(
+            "  bodies: %d Box2D circles and boxes, e = 1, frictionless, no gravity, no sleep\n",
+            opt.bodies);
+    // Progress header: relative energy drift (E - E0)/E0 of each scene.
+    std::printf("\n%8s", "minute");
+    if (busy) std::printf(" %10s", "busy E/E0");
+    for (const auto& b : banks)
+        std::printf(" %11s", columnLabel(b->method));
+    if (gas) std::printf(" %11s", "gas");
+    if (bodies) std::printf(" %11s", "Box2D");
+    if (busy) std::printf(" %7s", "awake");
+    std::printf(" %6s %7s %8s %8s\n", "NaN", "removed", "RSS MiB", "wall s");
+
+    soak::Faults faults;
     const auto t0 = std::chrono::steady_clock::now();
-    std::printf("soak: %d particles, %zu springs, %d bodies, %.0f s at %.0f Hz\n", particles,
-                w.springs.size(), bodies, seconds, 1.0 / tick);
-    std::printf("%8s %14s %10s %10s %12s\n", "minute", "energy/E0", "removed", "RSS MiB", "wall s");
+    const auto wallSeconds = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
     for (long t = 1; t <= ticks; ++t) {
-        coupling.prepare(w, rigid);
-        w.step();
-        coupling.exchange(w, rigid);
-        rigid.step(tick);
-        removed += guardWorld(w).removed;
-        if (t % perMinute == 0 || t == ticks) {
-            const double wall =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            std::printf("%8.1f %14.6f %10ld %10.1f %12.1f\n", static_cast<double>(t) * tick / 60.0,
-                        energyOf(w, rigid) / e0, removed, residentMiB(), wall);
-            std::fflush(stdout);
+        if (busy) busy->step(faults);
+        for (auto& b : banks)
+            b->step(faults);
+        if (gas) gas->step(faults);
+        if (bodies) bodies->step(faults);
+        if (t % perReport != 0 && t != ticks) continue;
+        memory.sample();
+        std::printf("%8.2f", static_cast<double>(t) * kTick / 60.0);
+        if (busy) std::printf(" %10.6f", busy->energy() / busy->energy0);
+        for (const auto& b : banks)
+            std::printf(" %+11.3e", b->total.drift());
+        if (gas) std::printf(" %+11.3e", gas->drift.drift());
+        if (bodies) std::printf(" %+11.3e", bodies->drift.drift());
+        if (busy) {
+            const phys::StepProfile& p = busy->world.profile();
+            std::printf(" %7d", p.integrated + p.closedForm);
+        }
+        std::printf(" %6ld %7ld %8.1f %8.1f\n", faults.nonFinite, faults.removed, memory.last,
+                    wallSeconds());
+        if (faults.newCause) std::printf("         guard: %s\n", faults.cause.c_str());
+        faults.newCause = false;
+        std::fflush(stdout);
+    }
+
+    // Summary.
+    const double wall = wallSeconds();
+    bool invariantsHeld = true;
+    std::printf("\nenergy over %.0f s (drift = (E_end - E0)/E0; max dev = max |E - E0|/E0 over "
+                "every tick)\n",
+                opt.seconds);
+    std::printf("  %-22s %12s %12s %14s %14s %10s\n", "scene", "drift", "max dev", "worst single",
+                "H drift", "E/H band");
+    for (const auto& b : banks) {
+        std::printf("  %-22s %+12.3e %12.3e %14.3e", phys::info(b->method).name, b->total.drift(),
+                    b->total.maxDeviation, b->worstSingle);
+        if (b->hasInvariant()) {
+            // H is conserved up to rounding; E/H stays inside its band (used <= 1).
+            const bool held = b->invariantDrift < 1e-9 && b->bandExcess < 1e-12;
+            invariantsHeld = invariantsHeld && held;
+            std::printf(" %14.3e %9.4f%s\n", b->invariantDrift, b->bandUsed, held ? "" : " FAILED");
+        } else {
+            std::printf(" %14s %10s\n", "-", "-");
         }
     }
-    std::printf("non-finite or runaway particles removed: %ld (must be 0)\n", removed);
-    return removed == 0 ? 0 : 1;
+    if (gas)
+        std::printf("  %-22s %+12.3e %12.3e\n", "particle gas (e = 1)", gas->drift.drift(),
+                    gas->drift.maxDeviation);
+    if (bodies)
+        std::printf("  %-22s %+12.3e %12.3e\n", "Box2D bodies (e = 1)", bodies->drift.drift(),
+                    bodies->drift.maxDeviation);
+    if (busy)
+        std::printf("  %-22s E/E0 = %.4f at the end (dissipative by design)\n", "busy",
+                    busy->energy() / busy->energy0);
+    std::printf("non-finite values: %ld, guard removals: %ld (both must be 0)\n", faults.nonFinite,
+                faults.removed);
+    std::printf("resident memory: %.1f MiB after set-up, %.1f MiB after the first report, %.1f MiB "
+                "at the end, %.1f MiB at most\n",
+                memory.start, memory.warm, memory.last, memory.max);
+    std::printf("wall time: %.1f s (%.3f s per simulated second)\n", wall, wall / opt.seconds);
+    if (!invariantsHeld) std::printf("an exactly conserved quantity drifted or left its band\n");
+    return faults.nonFinite == 0 && faults.removed == 0 && invariantsHeld ? 0 : 1;
 }

@@ -1,5 +1,6 @@
 #include "game/files/json_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fcntl.h>
@@ -12,26 +13,50 @@ namespace game {
 LoadError::LoadError(const std::string& f, const std::string& p, const std::string& m)
     : std::runtime_error(f + ": " + p + ": " + m), file(f), path(p), detail(m) {}
 
+namespace {
+
+/// "line L, column C" of a byte offset, which is what an editor shows.
+std::string lineColumn(const std::string& text, std::size_t offset) {
+    std::size_t line = 1, col = 1;
+    for (std::size_t i = 0; i < std::min(offset, text.size()); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            col = 1;
+        } else {
+            ++col;
+        }
+    }
+    return "line " + std::to_string(line) + ", column " + std::to_string(col);
+}
+
+/// A number literal beyond what a double holds (1e+315, four hundred digits): the JSON
+/// grammar allows it, nlohmann refuses it with out_of_range 406 (not a parse_error), and
+/// names the literal but not where it is.
+LoadError numberOutOfRange(const std::string& file, const std::string& text,
+                           const std::string& what) {
+    const auto open = what.find('\''), close = what.rfind('\'');
+    const std::string literal =
+        open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+    const std::size_t at = literal.empty() ? std::string::npos : text.find(literal);
+    const std::string shown = literal.size() > 24 ? literal.substr(0, 24) + "..." : literal;
+    return LoadError(file, at != std::string::npos ? lineColumn(text, at) : "$",
+                     "number out of range: " + shown +
+                         " does not fit in a double (magnitude up to 1.8e308)");
+}
+
+} // namespace
+
 nlohmann::json parseJson(const std::string& file, const std::string& text) {
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
-        // Turn the byte offset into line:column, which is what an editor shows.
-        std::size_t line = 1, col = 1;
-        const std::size_t end = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
-        for (std::size_t i = 0; i < end; ++i) {
-            if (text[i] == '\n') {
-                ++line;
-                col = 1;
-            } else {
-                ++col;
-            }
-        }
         const std::string what = e.what();
         const auto cut = what.find("syntax error");
-        throw LoadError(file, "line " + std::to_string(line) + ", column " + std::to_string(col),
+        throw LoadError(file, lineColumn(text, e.byte > 0 ? e.byte - 1 : 0),
                         "not valid JSON: " +
                             (cut != std::string::npos ? what.substr(cut) : what));
+    } catch (const nlohmann::json::out_of_range& e) {
+        throw numberOutOfRange(file, text, e.what());
     }
 }
 
