@@ -61,6 +61,28 @@ void ParticleBodyCoupling::settle(World& world, RigidWorld& rigid) {
     carried_.clear();
 }
 
+// Would moving the particle `depth` along `push` (out of a body) press it onto a static
+// shape, or through one? Onto: it touches the shape (within a twentieth of its radius)
+// and the push has it against the shape's normal by more than about 80 degrees from
+// sliding along it; through: the moved particle would overlap the shape, or its centre
+// would cross it (a segment has two sides).
+bool ParticleBodyCoupling::grounded(const World& world, ParticleId particle, Vec2 push,
+                                    double depth) const {
+    const StaticShapes& shapes = world.shapes;
+    const Vec2 p = world.particles.position(particle), q = p + push * depth;
+    const double r = world.particles.radius[particle], reach = 1.05 * r + depth;
+    const Aabb box{p - Vec2{reach, reach}, p + Vec2{reach, reach}};
+    for (std::size_t k = 0; k < shapes.count(); ++k) {
+        const ShapeRef ref = shapes.ref(k);
+        if (!shapes.bounds(ref).overlaps(box)) continue;
+        const SurfacePoint at = shapes.closestPoint(ref, p), moved = shapes.closestPoint(ref, q);
+        if (dot(push, at.normal) >= -0.2) continue; // along or away from the shape
+        if (at.distance < 1.05 * r || moved.distance < r || dot(at.normal, moved.normal) < 0.0)
+            return true;
+    }
+    return false;
+}
+
 bool ParticleBodyCoupling::tiedTo(ParticleId particle, BodyId body) const {
     // A rope's end inside the crate it holds does not collide with it (Box2D's
     // collideConnected = false for joints).
@@ -127,12 +149,16 @@ CouplingStats ParticleBodyCoupling::exchange(World& world, RigidWorld& rigid) {
             anyLinked = anyLinked || linked;
             anyRodLinked = anyRodLinked || byRods;
             double bias = 0.0;
-            if (byRods) {
+            // On (or pushed into) the ground: not moved by position; a free particle is
+            // immovable there, one on springs keeps its mass (lumped with its springs).
+            const bool onGround = !byRods && grounded(world, id, n, std::max(-c.separation, 0.0));
+            if (byRods || onGround) {
                 bias = def_.baumgarte * std::max(-c.separation - def_.slop, 0.0) / dt;
             } else {
                 set.px[i] -= c.separation * n.x;
                 set.py[i] -= c.separation * n.y;
             }
+            const double wp = onGround && !linked ? 0.0 : set.invMass[i];
             const Material& pm = world.materials[set.material[i]];
             ContactRow& row = contacts_.emplace_back();
             row.particle = id;
@@ -141,7 +167,8 @@ CouplingStats ParticleBodyCoupling::exchange(World& world, RigidWorld& rigid) {
             row.normal = n;
             row.restitution = pm.restitution * c.restitution;
             row.friction = std::sqrt(pm.dynamicFriction * c.friction);
-            row.wn = set.invMass[i] + wb;
+            row.wp = wp;
+            row.wn = wp + wb;
             row.bias = bias;
             row.linked = linked;
             row.springHeld = linked && !byRods;
@@ -210,7 +237,7 @@ CouplingStats ParticleBodyCoupling::exchange(World& world, RigidWorld& rigid) {
 void ParticleBodyCoupling::contactPass(ParticleSet& set, RigidWorld& rigid, bool first) {
     for (ContactRow& row : contacts_) {
         const ParticleId id = row.particle;
-        const double wp = set.invMass[id];
+        const double wp = row.wp;
         const Vec2 n = row.normal;
         const Vec2 u = set.velocity(id) - rigid.velocityAt(row.body, row.point);
         const double un = dot(u, n);

@@ -13,7 +13,11 @@
 //   the body receives J = j_n n + j_t t at r; the particle receives minus what the body
 //   actually got (Box2D rounds to float), so total momentum is conserved to double
 //   rounding whatever Box2D's precision.
-//   A penetrating free particle is moved out along n (position only; no momentum change).
+//   A penetrating free particle is moved out along n (position only; no momentum change),
+//   unless n presses it onto a static shape it touches (a ball on the ground under a
+//   crate): then it is grounded, w_p = 0, the ground carries the body through it, and a
+//   Baumgarte bias pushes the body out instead. Moved, it would be pushed through the
+//   ground, and fall for ever.
 // e = e_particle * e_body (the particle material's e against the reference floor times
 // the fixture's: the combine rule of physics/materials.h), mu = sqrt(mu_p mu_body).
 //
@@ -118,6 +122,7 @@ class ParticleBodyCoupling {
         BodyId body;
         Vec2 point, normal;
         double restitution, friction;
+        double wp;             ///< the particle's inverse mass here: 0 when grounded
         double wn;             ///< w_p + w_b along the normal
         double bias;           ///< m/s the normal velocity is driven to at least (rope contacts)
         bool linked;           ///< the particle is held by a rod, cable or spring; the body is dynamic
@@ -136,6 +141,7 @@ class ParticleBodyCoupling {
         double lumpMass = 0.0;
     };
     bool tiedTo(ParticleId particle, BodyId body) const;
+    bool grounded(const World& world, ParticleId particle, Vec2 push, double depth) const;
     void settle(World& world, RigidWorld& rigid);
     void contactPass(ParticleSet& set, RigidWorld& rigid, bool first);
     void jointPass(ParticleSet& set, RigidWorld& rigid);

@@ -486,9 +486,13 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
                                        Vec2 up) {
     const auto t0 = std::chrono::steady_clock::now(); // profile only
     const std::size_t n = set.slots();
-    for (std::size_t i = 0; i < n; ++i)
-        path_[i] = {set.position(static_cast<ParticleId>(i)), {}, {}, h};
-    buildProxies(set, shapes, def, h, true, kSpeculative);
+    // Boxes from where each particle started the step to where it ends: a shape whose
+    // side it crossed in the step (the passes ran out) is found, and puts it back.
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2 start{x0_[i], y0_[i]};
+        path_[i] = {start, (set.position(static_cast<ParticleId>(i)) - start) / h, {}, 0.0};
+    }
+    buildProxies(set, shapes, def, h, false, kSpeculative);
     findPairs(def);
     detectMicros_ +=
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
@@ -515,6 +519,13 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
             const SurfacePoint sp = shapes.closestPoint(c.shape, set.position(a));
             c.normal = sp.normal;
             c.depth = set.radius[a] - sp.distance;
+            // A centre that crossed the shape in this step (a segment has two sides)
+            // belongs on the side it started from: the contact pushes it back there.
+            const SurfacePoint from = shapes.closestPoint(c.shape, {x0_[a], y0_[a]});
+            if (dot(from.normal, sp.normal) < 0.0) {
+                c.normal = from.normal;
+                c.depth = set.radius[a] + sp.distance;
+            }
             c.friction = mats.pair(set.material[a], shapes.material(c.shape)).staticFriction;
         } else {
             c.b = b;
@@ -526,6 +537,16 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
         }
         const double reach = set.radius[a] + (isStatic ? 0.0 : set.radius[b]);
         if (!(c.depth > -def.toiTolerance - kSpeculative * reach)) continue;
+        if (c.depth < -def.toiTolerance) {
+            // A gap: a constraint only if it closes as slowly as a resting contact would
+            // (Millington's rule, restingLimit). One closing faster is an impact of the
+            // next step, which the passes resolve at its time of impact with the pair's
+            // e; held here to the speed the gap allows, it would lose its energy.
+            const Vec2 vb = isStatic ? Vec2{} : set.velocity(b);
+            const double approach = -dot(set.velocity(a) - vb, c.normal);
+            const double accel = accel0_[a] + (isStatic ? 0.0 : accel0_[b]);
+            if (approach > def.restingSpeed + accel * h) continue;
+        }
         // The closing speed the gap allows; a gap within the slop counts as touching, so
         // that what projection left a hair apart does not keep closing on it for ever.
         c.closing = std::max(-c.depth - kSlop * reach, 0.0) / h;
@@ -602,8 +623,16 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
         if (!(wa + wb > 0.0)) return;
         SurfacePoint sp;
         double reach = set.radius[c.a], smallest = reach;
+        bool crossed = false;
         if (c.b == kNoParticle) {
             sp = shapes.closestPoint(c.shape, set.position(c.a));
+            // Keep the side the contact was found on: a segment has two, and a centre
+            // that the other contacts pushed across it must come back across, at once,
+            // not be pushed out of the far side (and fall out of the level).
+            if (dot(sp.normal, c.normal) < 0.0) {
+                crossed = true;
+                sp = {-sp.distance, c.normal};
+            }
         } else {
             const Vec2 d = set.position(c.a) - set.position(c.b);
             const double L = length(d);
@@ -611,7 +640,7 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
             reach += set.radius[c.b];
             smallest = std::min(smallest, set.radius[c.b]);
         }
-        const double depth = std::min(reach - sp.distance, 0.2 * smallest);
+        const double depth = crossed ? reach - sp.distance : std::min(reach - sp.distance, 0.2 * smallest);
         if (!(depth > 0.0)) return;
         const Vec2 move = sp.normal * depth;
         const double fa = wa / (wa + wb), fb = wb / (wa + wb);
