@@ -29,6 +29,16 @@ static_assert(std::size(kSpeedNames) == std::size(kReplaySpeeds));
 /// x16 at 30 frames per second is 64 ticks of 1/120 s a frame; a cap well above it.
 constexpr int kMaxReplayTicksPerFrame = 256;
 
+// A button that can be greyed out, with a tooltip that shows either way. True when
+// pressed (never while disabled).
+bool buttonWhen(bool enabled, const char* label, const char* tooltip) {
+    ImGui::BeginDisabled(!enabled);
+    const bool pressed = ImGui::Button(label);
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", tooltip);
+    return pressed;
+}
+
 } // namespace
 
 // ---- set-up ---------------------------------------------------------------------------
@@ -139,33 +149,21 @@ ReplayRequests ReplayViewer::panel() {
         ImGui::SetTooltip("Drag to any moment (going back re-simulates from the start)");
 
     const auto prevShot = previousShot(), nextShot = p.shotAfter(seek_.value_or(p.tick()));
-    ImGui::BeginDisabled(!prevShot);
-    if (ImGui::Button("|< shot")) seek_ = prevShot;
-    ImGui::EndDisabled();
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("previous shot (Page Up)");
+    if (buttonWhen(prevShot.has_value(), "|< shot", "previous shot (Page Up)")) seek_ = prevShot;
     ImGui::SameLine();
     if (ImGui::Button("< 1 s")) jumpBy(-1.0);
     ImGui::SameLine();
     if (ImGui::Button(paused_ ? (p.atEnd() ? "Play again" : "Play") : "Pause", ImVec2(90, 0)))
         togglePlay();
     ImGui::SameLine();
-    ImGui::BeginDisabled(p.atEnd());
-    if (ImGui::Button("Step")) {
+    if (buttonWhen(!p.atEnd(), "Step", "one tick (.); one back: ,")) {
         paused_ = true;
         stepRequested_ = true;
     }
-    ImGui::EndDisabled();
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("one tick (.); one back: ,");
     ImGui::SameLine();
     if (ImGui::Button("1 s >")) jumpBy(1.0);
     ImGui::SameLine();
-    ImGui::BeginDisabled(!nextShot);
-    if (ImGui::Button("shot >|")) seek_ = nextShot;
-    ImGui::EndDisabled();
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("next shot (Page Down)");
+    if (buttonWhen(nextShot.has_value(), "shot >|", "next shot (Page Down)")) seek_ = nextShot;
     ImGui::SameLine();
     ImGui::SetNextItemWidth(110);
     ImGui::SliderInt("speed", &speed_, 0, static_cast<int>(std::size(kReplaySpeeds)) - 1,
