@@ -18,6 +18,7 @@ const char* commandName(CommandKind k) {
     case CommandKind::Grab: return "grab";
     case CommandKind::Drag: return "drag";
     case CommandKind::Release: return "release";
+    case CommandKind::Assist: return "assist";
     }
     return "?";
 }
@@ -31,6 +32,11 @@ const std::vector<std::string>& spawnKinds() {
     return kinds;
 }
 
+const std::vector<std::string>& assistKinds() {
+    static const std::vector<std::string> kinds{"preview", "hint"};
+    return kinds;
+}
+
 namespace {
 
 /// Largest coordinate a sandbox command may name, m (the level checks its own bounds).
@@ -41,7 +47,7 @@ Command readCommand(const Node& n) {
     c.tick = static_cast<std::uint64_t>(n.at("tick").integer(0, kMaxCommandTick));
     const std::string cmd =
         n.at("cmd").choice({"aim", "power", "select", "fire", "end_turn", "set", "sandbox", "spawn",
-                            "grab", "drag", "release"});
+                            "grab", "drag", "release", "assist"});
     if (cmd == "aim") {
         c.kind = CommandKind::Aim;
         c.number = n.number("angle_deg", -180.0, 180.0, "degrees");
@@ -71,6 +77,9 @@ Command readCommand(const Node& n) {
         c.at = n.at("at").vec2(kMaxCoordinate);
     } else if (cmd == "release") {
         c.kind = CommandKind::Release;
+    } else if (cmd == "assist") {
+        c.kind = CommandKind::Assist;
+        c.text = n.at("what").choice(assistKinds());
     } else {
         c.kind = CommandKind::Set;
         const Node name = n.at("name");
@@ -124,6 +133,7 @@ std::string commandsToJson(const std::vector<Command>& commands) {
         case CommandKind::Aim: j["angle_deg"] = c.number; break;
         case CommandKind::Power: j["speed_mps"] = c.number; break;
         case CommandKind::Select: j["projectile"] = c.text; break;
+        case CommandKind::Assist: j["what"] = c.text; break;
         case CommandKind::Set:
             j["name"] = c.text;
             std::visit([&](const auto& v) { j["value"] = v; }, c.value);

@@ -19,6 +19,9 @@
 //   {"tick": 9,   "cmd": "spawn", "what": "rope", "at": [30, 20], "to": [34, 12]}
 //   {"tick": 20,  "cmd": "grab", "at": [40, 10]}   then "drag" {"at": [..]}, "release"
 // `what` is block, rope, cloth, blob, spring or a projectile preset (a ball).
+// The learning aids, which cap a practice result at two stars (game/effects/assist.h):
+//   {"tick": 0,   "cmd": "assist", "what": "preview"}      the full trajectory preview
+//   {"tick": 0,   "cmd": "assist", "what": "hint"}         the firing-solution hint
 #pragma once
 
 #include "game/settings.h"
@@ -30,14 +33,14 @@
 
 namespace game {
 
-enum class CommandKind { Aim, Power, Select, Fire, EndTurn, Set, Sandbox, Spawn, Grab, Drag, Release };
+enum class CommandKind { Aim, Power, Select, Fire, EndTurn, Set, Sandbox, Spawn, Grab, Drag, Release, Assist };
 const char* commandName(CommandKind k);
 
 struct Command {
     std::uint64_t tick = 0;
     CommandKind kind = CommandKind::Fire;
     double number = 0.0;     ///< aim: angle_deg; power: speed_mps; spawn: size (m, 0 = default)
-    std::string text;        ///< select: projectile; set: setting name; spawn: what
+    std::string text;        ///< select: projectile; set: setting name; spawn, assist: what
     SettingValue value;      ///< set: the value
     phys::Vec2 at;           ///< spawn, grab, drag: where, m
     phys::Vec2 to;           ///< spawn rope or spring: the other end, m
@@ -45,6 +48,9 @@ struct Command {
 
 /// What `spawn` can make: block, rope, cloth, blob, spring and every projectile preset.
 const std::vector<std::string>& spawnKinds();
+
+/// What `assist` names: preview (the full trajectory preview), hint (the firing solution).
+const std::vector<std::string>& assistKinds();
 
 /// Largest tick a script may name (a day at 1000 Hz); keeps absurd files bounded.
 inline constexpr std::uint64_t kMaxCommandTick = 86'400'000;

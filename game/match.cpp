@@ -314,6 +314,14 @@ std::string Match::apply(const Command& cmd) {
         emit(EventKind::SettingChanged, current_, {}, 0.0, cmd.text + " = " + describe(cmd.value));
         return "";
     }
+    case CommandKind::Assist: {
+        // A learning aid in view: the result can no longer earn the third star.
+        const int bit = cmd.text == "hint" ? kAssistHint : cmd.text == "preview" ? kAssistPreview : 0;
+        if (bit == 0) return refuse("expected preview or hint, got \"" + cmd.text + "\"");
+        if (!(assisted_ & bit)) emit(EventKind::SettingChanged, current_, {}, 0.0, "assist = " + cmd.text);
+        assisted_ |= bit;
+        return "";
+    }
     case CommandKind::Sandbox:
         if (sandbox()) return refuse("the level is already a sandbox");
         level_.mode = Mode::Sandbox;
@@ -635,7 +643,8 @@ int Match::maxScore() const {
 int Match::stars() const {
     if (level_.mode != Mode::Practice || winner_ != 0) return 0;
     const double f = static_cast<double>(score()) / std::max(1, maxScore());
-    return f >= 0.85 ? 3 : f >= 0.6 ? 2 : 1;
+    const int earned = f >= 0.85 ? 3 : f >= 0.6 ? 2 : 1;
+    return assisted_ ? std::min(earned, kAssistedMaxStars) : earned;
 }
 
 std::uint64_t Match::gameHash() const {
@@ -653,6 +662,8 @@ std::uint64_t Match::gameHash() const {
     h = hashBytes(h, state, sizeof state);
     const double w = wind();
     h = hashBytes(h, &w, sizeof w);
+    // Only when set, so the hashes of matches played without aids stay what they were.
+    if (assisted_) h = hashBytes(h, &assisted_, sizeof assisted_);
     for (const auto& p : terrain_.points()) h = hashBytes(h, &p.y, sizeof p.y);
     return h;
 }

@@ -103,6 +103,11 @@ struct GrabState {
 /// Hit points of a duel cannon, and how close a shell must pass to hit it (m).
 inline constexpr int kCannonHitPoints = 3;
 inline constexpr double kCannonRadius = 1.5;
+/// The learning aids an `assist` command names (bits of Match::assisted()), and the most
+/// stars a result can earn with any of them in view.
+inline constexpr int kAssistPreview = 1;
+inline constexpr int kAssistHint = 2;
+inline constexpr int kAssistedMaxStars = 2;
 /// A shell still flying after this long is over (s).
 inline constexpr double kMaxFlightSeconds = 30.0;
 
@@ -136,7 +141,10 @@ class Match {
     bool over() const { return over_; }
     /// Winner of a finished duel (cannon index), -1 for a draw or not over.
     int winner() const { return winner_; }
-    /// Practice: total score and stars (0..3; 0 until every target is down).
+    /// The learning aids used so far (kAssistPreview | kAssistHint), 0 for none.
+    int assisted() const { return assisted_; }
+    /// Practice: total score and stars (0..3; 0 until every target is down; at most
+    /// kAssistedMaxStars once assisted).
     int score() const;
     int stars() const;
     int maxScore() const;
@@ -225,6 +233,7 @@ class Match {
     double closestMiss_ = 0.0;
     Ammo shellAmmo_;
     GrabState grab_;
+    int assisted_ = 0;
 };
 
 /// Applies every command whose tick is the match's current tick, then steps; repeats

@@ -1,0 +1,60 @@
+// The camera as a view of the match: it rests on the level's framing ("home"), follows
+// the shell smoothly while it flies, frames the point of impact for a moment, then
+// returns home. It holds a centre and a zoom in world units only (the window turns them
+// into pixels), moves by ticks so tests can drive it, and never touches the match.
+//
+// Smoothing is exponential: each tick moves the view a fraction 1 - exp(-dt / tau) of the
+// way to where it should be, so it converges without overshoot at any frame rate, and
+// the zoom moves the same way in log space (equal steps feel equal zooming in and out).
+#pragma once
+
+#include "physics/vec2.h"
+
+#include <cstdint>
+
+namespace game {
+
+class Match;
+
+struct CameraRigDef {
+    double followSeconds = 0.35; ///< tau while following the shell, s
+    double returnSeconds = 0.6;  ///< tau going back home, s
+    double holdSeconds = 1.2;    ///< how long the impact stays framed, s
+    double leadSeconds = 0.3;    ///< the view looks ahead along the shell's velocity, s
+    double followZoom = 1.4;     ///< zoom while following, relative to home
+    double impactZoom = 1.8;     ///< zoom on the impact, relative to home
+};
+
+class CameraRig {
+  public:
+    enum class Phase { Home, Following, Holding, Returning };
+
+    explicit CameraRig(const CameraRigDef& def = {}) : def_(def) {}
+
+    /// Where the view rests: the level's framing (centre, m; zoom, px/m). Jumps there.
+    void setHome(phys::Vec2 center, double pixelsPerMetre);
+    /// After each tick of `match`.
+    void tick(const Match& match);
+    /// The player's wheel: multiplies every zoom from now on (home's too).
+    void zoomBy(double factor);
+
+    phys::Vec2 center() const { return center_; }
+    double pixelsPerMetre() const { return zoom_; }
+    Phase phase() const { return phase_; }
+    /// The point being framed now (the shell ahead, the impact, home).
+    phys::Vec2 aim() const { return aim_; }
+
+  private:
+    void approach(phys::Vec2 target, double zoom, double tau, double dt);
+
+    CameraRigDef def_;
+    Phase phase_ = Phase::Home;
+    phys::Vec2 homeCenter_, center_, aim_;
+    double homeZoom_ = 20.0, zoom_ = 20.0, userZoom_ = 1.0;
+    double held_ = 0.0; ///< s in Holding
+    std::uint64_t lastTick_ = 0;
+    bool shellWasFlying_ = false;
+    phys::Vec2 lastShell_;
+};
+
+} // namespace game
