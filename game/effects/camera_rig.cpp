@@ -8,7 +8,8 @@ namespace game {
 
 using phys::Vec2;
 
-void CameraRig::setHome(Vec2 center, double pixelsPerMetre) {
+void CameraRig::setHome(Vec2 center, double pixelsPerMetre, int viewHeightPx) {
+    viewHeightPx_ = viewHeightPx;
     homeCenter_ = center_ = aim_ = center;
     homeZoom_ = zoom_ = pixelsPerMetre;
     userZoom_ = 1.0;
@@ -28,34 +29,53 @@ void CameraRig::approach(Vec2 target, double zoom, double tau, double dt) {
 }
 
 void CameraRig::tick(const Match& m) {
-    const double dt = m.world().def().tickSeconds;
+    // Every tick since the last call at once: k = 1 - exp(-n dt / tau) is n single ticks'
+    // approach composed, so a caller once per frame sees the same path as one per tick.
+    // A first call, or a tick that went back (a rewind, a seek), counts as one.
+    const std::uint64_t n = started_ && m.tick() >= lastTick_ ? m.tick() - lastTick_ : 1;
+    started_ = true;
+    lastTick_ = m.tick();
+    if (n == 0) return;
+    const double dt = static_cast<double>(n) * m.world().def().tickSeconds;
     const double home = homeZoom_ * userZoom_;
     const auto shell = m.shell();
     if (shell) {
         const phys::ParticleSet& ps = m.world().particles;
         lastShell_ = ps.position(*shell);
+        shellSeen_ = true;
         phase_ = Phase::Following;
-        held_ = 0.0;
         approach(lastShell_ + ps.velocity(*shell) * def_.leadSeconds, home * def_.followZoom,
                  def_.followSeconds, dt);
-    } else if (shellWasFlying_) {
-        phase_ = Phase::Holding; // the shell came down (or burst) where it was last seen
-        held_ = 0.0;
+        return;
     }
-    shellWasFlying_ = shell.has_value();
+    // The shot's end from the match's events (not from having watched it fall: a viewer
+    // that skips ahead still frames the impact): where it burst, else where it was seen.
+    const double tick = m.world().def().tickSeconds;
+    for (auto e = m.events().rbegin(); e != m.events().rend(); ++e) {
+        if (static_cast<double>(m.tick() - e->tick) * tick > def_.holdSeconds) break;
+        if (e->kind != EventKind::ShotOver) continue;
+        if (e->tick == heldShot_) break;
+        heldShot_ = e->tick;
+        bool found = shellSeen_;
+        for (auto b = e; b != m.events().rend() && b->tick == e->tick; ++b)
+            if (b->kind == EventKind::Burst) lastShell_ = b->where, found = true;
+        if (found) phase_ = Phase::Holding;
+        break;
+    }
+    shellSeen_ = false;
+    if (phase_ == Phase::Following) phase_ = Phase::Returning; // gone without a shot's end
     if (phase_ == Phase::Holding) {
         // The impact low in the picture, so what it threw up is in view.
         const double zoom = home * def_.impactZoom;
-        const double visibleHeight = 720.0 / zoom; // m at the design height of 720 px
+        const double visibleHeight = viewHeightPx_ / zoom; // m
         approach(lastShell_ + Vec2{0.0, 0.15 * visibleHeight}, zoom, def_.followSeconds, dt);
-        held_ += dt;
-        if (held_ >= def_.holdSeconds) phase_ = Phase::Returning;
+        if (static_cast<double>(m.tick() - heldShot_) * tick >= def_.holdSeconds)
+            phase_ = Phase::Returning;
     } else if (phase_ == Phase::Returning || phase_ == Phase::Home) {
         approach(homeCenter_, home, def_.returnSeconds, dt);
         if (length(center_ - homeCenter_) < 1e-3 && std::abs(zoom_ / home - 1.0) < 1e-6)
             phase_ = Phase::Home;
     }
-    lastTick_ = m.tick();
 }
 
 } // namespace game

@@ -21,8 +21,8 @@ struct CameraRigDef {
     double returnSeconds = 0.6;  ///< tau going back home, s
     double holdSeconds = 1.2;    ///< how long the impact stays framed, s
     double leadSeconds = 0.3;    ///< the view looks ahead along the shell's velocity, s
-    double followZoom = 1.4;     ///< zoom while following, relative to home
-    double impactZoom = 1.8;     ///< zoom on the impact, relative to home
+    double followZoom = 1.3;     ///< zoom while following, relative to home
+    double impactZoom = 2.2;     ///< zoom on the impact, relative to home
 };
 
 class CameraRig {
@@ -31,9 +31,11 @@ class CameraRig {
 
     explicit CameraRig(const CameraRigDef& def = {}) : def_(def) {}
 
-    /// Where the view rests: the level's framing (centre, m; zoom, px/m). Jumps there.
-    void setHome(phys::Vec2 center, double pixelsPerMetre);
-    /// After each tick of `match`.
+    /// Where the view rests: the level's framing (centre, m; zoom, px/m; the view's
+    /// height, px). Jumps there.
+    void setHome(phys::Vec2 center, double pixelsPerMetre, int viewHeightPx = 720);
+    /// After each tick of `match`, or once a frame: it moves by the ticks since the last
+    /// call.
     void tick(const Match& match);
     /// The player's wheel: multiplies every zoom from now on (home's too).
     void zoomBy(double factor);
@@ -51,9 +53,11 @@ class CameraRig {
     Phase phase_ = Phase::Home;
     phys::Vec2 homeCenter_, center_, aim_;
     double homeZoom_ = 20.0, zoom_ = 20.0, userZoom_ = 1.0;
-    double held_ = 0.0; ///< s in Holding
+    std::uint64_t heldShot_ = ~0ull; ///< tick of the shot's end being framed
+    bool shellSeen_ = false;
     std::uint64_t lastTick_ = 0;
-    bool shellWasFlying_ = false;
+    bool started_ = false;
+    int viewHeightPx_ = 720;
     phys::Vec2 lastShell_;
 };
 

@@ -147,7 +147,11 @@ void Effects::settle(const Match& m) {
 }
 
 void Effects::observe(const Match& m) {
+    // Ticks since the last look: one in the window, more for a viewer that looks every
+    // few ticks (frames written every N ticks); everything advances by all of them.
+    std::uint64_t ticks = started_ ? m.tick() - lastTick_ : 0;
     if (!started_ || m.tick() < lastTick_ || m.events().size() < seenEvents_) {
+        ticks = 0;
         reset();
         world_ = phys::World(piecesWorld(m));
         rng_.seed(m.level().seed ^ 0x9e3779b97f4a7c15ull); // its own stream, from the level's seed
@@ -219,7 +223,13 @@ void Effects::observe(const Match& m) {
     }
     shellSeen_ = shell.has_value();
 
-    // One tick of everything.
+    // A viewer that looked away for long catches up on at most ten seconds.
+    const auto most = static_cast<std::uint64_t>(10.0 / dt);
+    for (std::uint64_t k = 0; k < std::min(ticks, most); ++k)
+        advance(m, dt);
+}
+
+void Effects::advance(const Match& m, double dt) {
     world_.step();
     settle(m);
     const Vec2 wind{m.wind(), 0.0};

@@ -82,8 +82,9 @@ class Effects {
   public:
     explicit Effects(const EffectsDef& def = {});
 
-    /// Call after every tick of `match`: turns the new events into effects and advances
-    /// everything by one tick. A match whose tick went back (a rewind) starts afresh.
+    /// Call after every tick of `match` (or every few): turns the new events into effects
+    /// and advances everything by the ticks since the last call. A match whose tick went
+    /// back (a rewind) starts afresh.
     void observe(const Match& match);
     /// Forgets everything (a new match).
     void reset();
@@ -119,6 +120,8 @@ class Effects {
     void splinters(phys::Vec2 at, double speed, std::uint8_t tint, int count);
     void splash(phys::Vec2 at, double speed);
     void settle(const Match& match);
+    /// One tick of everything: pieces, smoke, flashes, ripples, shake, notes.
+    void advance(const Match& match, double dt);
     double unit();
 
     EffectsDef def_;

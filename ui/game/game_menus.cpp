@@ -133,7 +133,7 @@ MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettin
         ImGui::TableSetupColumn("level", ImGuiTableColumnFlags_WidthFixed, 190.0f);
         ImGui::TableSetupColumn("mode", ImGuiTableColumnFlags_WidthFixed, 70.0f);
         ImGui::TableSetupColumn("lesson", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("best", ImGuiTableColumnFlags_WidthFixed, 90.0f);
+        ImGui::TableSetupColumn("best", ImGuiTableColumnFlags_WidthFixed, 150.0f);
         ImGui::TableHeadersRow();
         for (const LevelEntry& e : levels) {
             ImGui::TableNextRow();
@@ -156,7 +156,8 @@ MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettin
                 if (e.mode == "duel")
                     ImGui::TextColored(kGoldText, "%s", r->won ? "won" : "played");
                 else
-                    ImGui::TextColored(kGoldText, "%s %d", starsText(r->stars).c_str(), r->bestScore);
+                    ImGui::TextColored(kGoldText, "%s %d%s", starsText(r->stars).c_str(), r->bestScore,
+                                       r->assisted ? " (assisted)" : "");
             } else {
                 ImGui::TextColored(kDimText, "-");
             }
@@ -255,7 +256,11 @@ MenuChoice pauseMenu(PlayerSettings& settings) {
     ImGui::PopItemWidth();
     choice.settingsChanged |= ImGui::Checkbox("hotseat duel (from the next match)", &settings.hotseat);
     choice.settingsChanged |= ImGui::Checkbox("trajectory preview (P)", &settings.trajectoryPreview);
-    choice.settingsChanged |= ImGui::Checkbox("firing-solution hint (H)", &settings.solutionHint);
+    choice.settingsChanged |= ImGui::Checkbox("full preview, assisted (V)", &settings.fullPreview);
+    choice.settingsChanged |= ImGui::Checkbox("firing-solution hint, assisted (H)", &settings.solutionHint);
+    ImGui::TextDisabled("assisted results earn at most two stars");
+    choice.settingsChanged |= ImGui::Checkbox("camera follows the shell (C)", &settings.cameraFollow);
+    choice.settingsChanged |= ImGui::Checkbox("screen shake", &settings.screenShake);
     choice.settingsChanged |= ImGui::Checkbox("physics panel (F2)", &settings.physicsPanel);
     ImGui::Separator();
     if (ImGui::Button("Quit", wide)) choice.quit = true;
@@ -279,7 +284,8 @@ void helpOverlay(bool& open) {
         {"Enter or F", "fire at the power set"},
         {"1 .. 8, Tab", "choose the projectile"},
         {"E", "end the turn (duels)"},
-        {"P / H", "trajectory preview / firing-solution hint"},
+        {"P / V / H", "launch-arc preview / full preview / firing-solution hint (the last two: at most 2 stars)"},
+        {"C", "camera follows the shell and frames the impact (on / off)"},
         {"Esc", "pause menu"},
         {"F1 or ?", "this help"},
         {"F2", "physics panel"},
@@ -350,6 +356,8 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
     req.settingsChanged |= ImGui::Checkbox("preview (P)", &settings.trajectoryPreview);
     ImGui::SameLine();
     req.settingsChanged |= ImGui::Checkbox("hint (H)", &settings.solutionHint);
+    ImGui::SameLine();
+    req.settingsChanged |= ImGui::Checkbox("full (V)", &settings.fullPreview);
     if (m.level().mode == game::Mode::Duel)
         ImGui::TextColored(kDimText, "%s", hotseatInUse ? "hotseat: two players" :
                                                (std::string("computer: ") + game::difficultyName(inUse)).c_str());

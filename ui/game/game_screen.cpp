@@ -103,7 +103,7 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
         for (const LevelEntry& e : levels_) {
             if (!e.error.empty()) continue;
             backdrop_ = std::make_unique<game::Match>(game::loadLevel(e.file));
-            camera_ = levelCamera(*backdrop_, context.width(), context.height());
+            frameLevel(*backdrop_);
             break;
         }
     } else
@@ -171,7 +171,7 @@ void GameScreen::restart() {
                                                 liveOptions(recordFileFor(stem + "-last.json"))));
     matchView_.reset();
     cameraMoved_ = false;
-    camera_ = levelCamera(session_->match(), context_.width(), context_.height());
+    frameLevel(session_->match());
     if (def_.sandbox && !session_->match().sandbox()) {
         game::Command c; // every level opens as a sandbox too: a command, so it replays
         c.kind = game::CommandKind::Sandbox;
@@ -194,6 +194,51 @@ void GameScreen::playSession(std::unique_ptr<game::Session> session) {
 const game::Match* GameScreen::shownMatch() const {
     if (viewer_) return &viewer_->match();
     return session_ ? &session_->match() : nullptr;
+}
+
+// ---- camera ---------------------------------------------------------------------------
+void GameScreen::frameLevel(const game::Match& m) {
+    camera_ = levelCamera(m, context_.width(), context_.height());
+    rig_.setHome(camera_.center, camera_.pixelsPerMetre, camera_.height);
+    rig_.tick(m); // from this tick on
+}
+
+bool GameScreen::following() const { return settings_.cameraFollow && !cameraMoved_; }
+
+void GameScreen::followShot(const game::Match& m) {
+    rig_.tick(m);
+    if (!following()) return;
+    camera_.center = rig_.center();
+    camera_.pixelsPerMetre = rig_.pixelsPerMetre();
+}
+
+Camera GameScreen::shakenCamera() const {
+    Camera c = camera_;
+    const double shake = matchView_.effects().shake();
+    if (!settings_.screenShake || shake <= 0.0) return c;
+    // Up to 9 px, in a pattern that depends on simulated time only (two incommensurate
+    // frequencies), so a replay shakes the same way every time it is watched.
+    const double t = matchView_.effects().time();
+    const double px = 9.0 * shake;
+    c.center += phys::Vec2{std::sin(97.0 * t), std::cos(71.0 * t)} * c.metres(px);
+    return c;
+}
+
+/// A learning aid in view during a human's turn is a command, so the replay carries it
+/// and the match caps the stars (game/match.h, kAssistedMaxStars).
+void GameScreen::markAssists() {
+    if (!session_ || viewer_ || !humanTurn()) return;
+    const game::Match& m = session_->match();
+    if (m.level().mode != game::Mode::Practice) return;
+    auto assist = [&](int bit, const char* what) {
+        if (m.assisted() & bit) return;
+        game::Command c;
+        c.kind = game::CommandKind::Assist;
+        c.text = what;
+        submit(c);
+    };
+    if (settings_.trajectoryPreview && settings_.fullPreview) assist(game::kAssistPreview, "preview");
+    if (settings_.solutionHint) assist(game::kAssistHint, "hint");
 }
 
 // ---- commands -------------------------------------------------------------------------
@@ -219,7 +264,7 @@ void GameScreen::recordResultOnce() {
     resultRecorded_ = true;
     const bool humanWon = m.winner() >= 0 &&
                           m.cannons()[static_cast<std::size_t>(m.winner())].def.player != "cpu";
-    newBest_ = settings_.record(level_.file, m.score(), m.stars(), humanWon);
+    newBest_ = settings_.record(level_.file, m.score(), m.stars(), humanWon, m.assisted() != 0);
     persist();
 }
 
@@ -306,7 +351,7 @@ void GameScreen::openReplay(const std::string& file) {
     aim_ = AimInput();
     matchView_.reset();
     cameraMoved_ = false;
-    camera_ = levelCamera(viewer_->match(), context_.width(), context_.height());
+    frameLevel(viewer_->match());
     overlay_ = Overlay::None;
 }
 
@@ -395,12 +440,13 @@ void GameScreen::drawPlaying() {
         o.banner = viewer_->banner();
     } else {
         o.trajectoryPreview = settings_.trajectoryPreview && humanTurn();
+        o.fullPreview = settings_.fullPreview;
         o.solutionHint = settings_.solutionHint && humanTurn();
         if (humanTurn() && aim_.editing()) o.pending = aim_.pending();
         o.charge = aim_.chargeFraction();
         o.banner = liveBanner(m);
     }
-    drawMatchFrame(renderer_, matchView_, m, camera_, o);
+    drawMatchFrame(renderer_, matchView_, m, shakenCamera(), o);
     if (!viewer_ && session_) { // the rope being drawn, the hand and what it holds
         sandboxTools_.draw(renderer_, m);
         statsPanel_.drawWorld(renderer_, m);
@@ -483,9 +529,11 @@ void GameScreen::frame(double wallSeconds) {
         if (cameraMoved_ || !shownMatch())
             camera_.width = w, camera_.height = h;
         else
-            camera_ = levelCamera(*shownMatch(), w, h);
+            frameLevel(*shownMatch());
         msaa_.resize(w, h, samples_);
     }
+    if (const game::Match* shown = shownMatch()) followShot(*shown);
+    markAssists();
     imgui_.newFrame(wallSeconds);
     msaa_.bind(context_.framebuffer());
     if (shownMatch()) {
@@ -597,6 +645,14 @@ bool GameScreen::keyDown(const SDL_Event& e) {
     case SDLK_h:
         settings_.solutionHint = !settings_.solutionHint;
         break;
+    case SDLK_v:
+        settings_.fullPreview = !settings_.fullPreview;
+        if (settings_.fullPreview) settings_.trajectoryPreview = true;
+        break;
+    case SDLK_c:
+        settings_.cameraFollow = !settings_.cameraFollow;
+        if (!settings_.cameraFollow) frameLevel(m); // back to the level's framing
+        break;
     case SDLK_F2:
         settings_.physicsPanel = !settings_.physicsPanel;
         break;
@@ -625,7 +681,7 @@ bool GameScreen::keyDown(const SDL_Event& e) {
         overlay_ = Overlay::LevelSelect;
         break;
     case SDLK_HOME:
-        camera_ = levelCamera(m, context_.width(), context_.height());
+        frameLevel(m);
         cameraMoved_ = false;
         break;
     default:
@@ -646,7 +702,7 @@ bool GameScreen::replayKey(const SDL_Event& e) {
         overlay_ = Overlay::LevelSelect;
         break;
     case SDLK_HOME:
-        camera_ = levelCamera(viewer_->match(), context_.width(), context_.height());
+        frameLevel(viewer_->match());
         cameraMoved_ = false;
         break;
     default:
@@ -659,8 +715,14 @@ void GameScreen::cameraEvent(const SDL_Event& e) {
     if (e.type == SDL_MOUSEWHEEL && e.wheel.y != 0) {
         int mx = 0, my = 0;
         SDL_GetMouseState(&mx, &my);
-        camera_.zoomAt(pointerPixels(mx, my), e.wheel.y > 0 ? 1.15 : 1.0 / 1.15);
-        cameraMoved_ = true;
+        const double factor = e.wheel.y > 0 ? 1.15 : 1.0 / 1.15;
+        if (following()) { // the followed view zooms about its centre, and keeps following
+            rig_.zoomBy(factor);
+            camera_.pixelsPerMetre *= factor;
+        } else {
+            camera_.zoomAt(pointerPixels(mx, my), factor);
+            cameraMoved_ = true;
+        }
     } else if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button != SDL_BUTTON_LEFT) {
         panning_ = true;
     } else if (e.type == SDL_MOUSEBUTTONUP && e.button.button != SDL_BUTTON_LEFT) {

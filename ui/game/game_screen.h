@@ -15,6 +15,7 @@
 //   GameScreen      frame(), handleEvent(); level select, playing, watching, overlays
 #pragma once
 
+#include "game/effects/camera_rig.h"
 #include "game/level.h"
 #include "game/session.h"
 #include "physics/clock.h"
@@ -100,6 +101,14 @@ class GameScreen final : public Screen {
     bool replayKey(const SDL_Event& e);
     std::string liveBanner(const game::Match& m) const;
     void cameraEvent(const SDL_Event& e);
+    /// The level's framing, and the camera rig's home.
+    void frameLevel(const game::Match& m);
+    /// The camera follows the shell (the setting is on and the player has not panned).
+    bool following() const;
+    void followShot(const game::Match& m);
+    /// The camera drawn with: the view shaken by blasts, when shaking is on.
+    Camera shakenCamera() const;
+    void markAssists();
     void submit(const std::vector<game::Command>& commands);
     void submit(const game::Command& command);
     bool humanTurn() const;
@@ -144,6 +153,7 @@ class GameScreen final : public Screen {
     SandboxTools sandboxTools_;
     StatsPanel statsPanel_; ///< Compare, energy and momentum, Charts (issue 5)
     Camera camera_;
+    game::CameraRig rig_; ///< follows the shell, frames the impact, returns
     bool cameraMoved_ = false;
     bool panning_ = false;
     bool resultRecorded_ = false;

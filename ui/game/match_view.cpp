@@ -3,11 +3,12 @@
 //   camera       levelCamera
 //   scenery      sky, hills, terrain, water, obstacles
 //   things       blocks, ropes, blobs, particles, cannons, targets
-//   effects      trails, preview, hint, bursts and score pop-ups
+//   effects      trails, preview, hint (the rest: ui/game/effects_view.cpp)
 //   HUD          panels in pixel space, wind arrow, power bar, stars, results card
 #include "ui/game/match_view.h"
 
 #include "game/ai.h"
+#include "ui/game/effects_view.h"
 #include "physics/integrators.h"
 #include "physics/rigid/rigid_world.h"
 
@@ -430,43 +431,6 @@ void drawTarget(Renderer2D& r, const game::TargetState& t) {
     }
 }
 
-/// Bursts, craters and points scored in the last second, from the match's events: the
-/// effects are a function of the match state, so headless frames show them too.
-void drawEffects(Renderer2D& r, const Match& m) {
-    const auto& events = m.events();
-    const double hz = 1.0 / m.world().def().tickSeconds;
-    for (auto it = events.rbegin(); it != events.rend(); ++it) {
-        const double age = static_cast<double>(m.tick() - it->tick) / hz; // s
-        if (age > 1.5) break;
-        switch (it->kind) {
-        case game::EventKind::Burst:
-        case game::EventKind::Crater: {
-            if (age > 0.6) break;
-            const double f = age / 0.6;
-            const double rad = (it->kind == game::EventKind::Crater ? it->value : 2.0) * (0.6 + 1.2 * f);
-            r.fillCircle(it->where, rad, Color::hex(0xffb43a, static_cast<float>(0.7 * (1 - f))));
-            r.fillCircle(it->where, rad * 0.55, Color::hex(0xfff1c0, static_cast<float>(0.9 * (1 - f))));
-            break;
-        }
-        case game::EventKind::TargetHit:
-        case game::EventKind::Toppled: {
-            char text[32];
-            std::snprintf(text, sizeof text, "+%.0f", it->value);
-            const float fade = static_cast<float>(1.0 - age / 1.5);
-            r.label(it->where + Vec2{0.0, 2.0 + 3.0 * age}, text, kGold.withAlpha(fade), {}, 1.5f, 0.5f);
-            break;
-        }
-        case game::EventKind::CannonHit: {
-            const float fade = static_cast<float>(1.0 - age / 1.5);
-            r.label(it->where + Vec2{0.0, 3.0 + 3.0 * age}, "HIT!", Color::hex(0xff6b6b, fade), {}, 1.5f, 0.5f);
-            break;
-        }
-        default:
-            break;
-        }
-    }
-}
-
 // ---- HUD --------------------------------------------------------------------------------
 std::string playerName(const Match& m, const MatchViewOptions& o, int i) {
     if (static_cast<std::size_t>(i) < o.playerNames.size()) return o.playerNames[static_cast<std::size_t>(i)];
@@ -537,6 +501,7 @@ void drawHud(Renderer2D& r, const Match& m, const MatchViewOptions& o, const Pen
     } else {
         std::snprintf(line, sizeof line, "score %d / %d", m.score(), m.maxScore());
         s.text(24, 44, line, kGold, 1.0f);
+        if (m.assisted()) s.text(318, 44, "assisted: 2 stars at most", kTextDim, 0.8f, 1.0f);
         std::snprintf(line, sizeof line, "shots left %d", cs.shotsLeft);
         s.text(24, 68, line, kText, 0.9f);
         // Shot pips.
@@ -594,6 +559,8 @@ void drawHud(Renderer2D& r, const Match& m, const MatchViewOptions& o, const Pen
             std::snprintf(line, sizeof line, "score %d / %d   shots %d", m.score(), m.maxScore(),
                           m.shotsFired());
             s.text(W / 2, H / 2 + 28, line, kText, 1.1f, 0.5f);
+            if (m.assisted())
+                s.text(W / 2, H / 2 + 52, "assisted (full preview or hint): no third star", kTextDim, 0.9f, 0.5f);
         }
     }
 }
@@ -661,6 +628,7 @@ void MatchView::reset() {
     old_.clear();
     trailShell_ = phys::kNoParticle;
     trailShot_ = -1;
+    effects_.reset();
     previewKey_ = hintKey_ = {};
     preview_.clear();
     hint_.reset();
@@ -668,6 +636,7 @@ void MatchView::reset() {
 }
 
 void MatchView::observe(const Match& m) {
+    effects_.observe(m);
     if (ghostsShown_)
         ghosts_.observe(m.world());
     else
@@ -704,14 +673,17 @@ void MatchView::drawTrails(Renderer2D& r, const Match& m) {
     }
 }
 
-void MatchView::drawPreview(Renderer2D& r, const Match& m, const PendingAim& aim) {
+void MatchView::drawPreview(Renderer2D& r, const Match& m, const PendingAim& aim, bool full) {
     const phys::WorldDef& d = m.world().def();
     const AimKey key{aim.angleDeg, aim.speedMps, m.wind(), d.forces.gravity.y, d.tickSeconds,
                      m.currentPlayer(), m.shotsFired(), static_cast<int>(d.integrator),
                      static_cast<int>(m.cannon().projectile), static_cast<int>(d.forces.drag)};
-    if (!(key == previewKey_)) {
-        preview_ = m.previewTrajectory(aim.angleDeg, aim.speedMps);
+    if (!(key == previewKey_) || full != previewFull_) {
+        // The launch arc alone unless the full path is asked for (an assist).
+        preview_ = full ? m.previewTrajectory(aim.angleDeg, aim.speedMps)
+                        : m.previewTrajectory(aim.angleDeg, aim.speedMps, kPreviewArcSeconds);
         previewKey_ = key;
+        previewFull_ = full;
     }
     // Dots every ~6 px of path, fading with distance, so it reads as a guide not a line.
     double run = 0.0, next = 0.0;
@@ -723,7 +695,7 @@ void MatchView::drawPreview(Renderer2D& r, const Match& m, const PendingAim& aim
         const float fade = std::max(0.25f, 1.0f - static_cast<float>(i) / static_cast<float>(preview_.size()));
         r.point(preview_[i], 4.0f, kPreview.withAlpha(0.85f * fade));
     }
-    if (!preview_.empty()) r.strokeCircle(preview_.back(), r.camera().metres(7.0), kPreview, 2.0f);
+    if (!preview_.empty() && full) r.strokeCircle(preview_.back(), r.camera().metres(7.0), kPreview, 2.0f);
 }
 
 void MatchView::drawHint(Renderer2D& r, const Match& m) {
@@ -766,6 +738,7 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
         drawHills(r, groundTop - 2.0, 0.12 * (r.camera().visibleMax().y - groundTop), 2.1, kHillNear);
     }
     drawTerrain(r, m);
+    if (o.effects) drawGroundMarks(r, effects_, m);
     drawObstacles(r, m);
     drawRopes(r, m);
     drawBlocks(r, m);
@@ -775,7 +748,7 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
     const auto shell = m.shell();
     const bool aiming = !shell && !m.over();
     if (o.trails) drawTrails(r, m);
-    if (aiming && o.trajectoryPreview) drawPreview(r, m, aim);
+    if (aiming && o.trajectoryPreview) drawPreview(r, m, aim, o.fullPreview);
     if (aiming && o.solutionHint) drawHint(r, m);
     for (int i = 0; i < static_cast<int>(m.cannons().size()); ++i) {
         const bool active = i == m.currentPlayer();
@@ -792,7 +765,10 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
         r.fillCircle(p + Vec2{-0.3, 0.3} * rad, rad * 0.35, Color::hex(0x8a9099));
     }
     drawWater(r, m);
-    drawEffects(r, m);
+    if (o.effects) {
+        drawEffectsLayer(r, effects_);
+        drawShotFeedback(r, effects_);
+    }
     ghostsShown_ = o.overlays.ghosts;
     if (o.overlays.any()) {
         WorldDrawOptions w;

@@ -1,6 +1,6 @@
 // How a match looks: sky, terrain with its craters, water, obstacles, Box2D blocks,
 // ropes, blobs, cannons, targets, the shell and its trail, the trajectory preview, the
-// firing-solution hint, the wind and the HUD. One drawing path for the window and for
+// firing-solution hint, the effects (ui/game/effects_view.h), the wind and the HUD. One drawing path for the window and for
 // headless frames (`artillery run --png`, issue 6): everything goes through Renderer2D,
 // the HUD included (boxes in pixel space, text as labels that ImGui draws).
 //
@@ -13,6 +13,7 @@
 //   MatchView    observe() after ticks, draw() per frame
 #pragma once
 
+#include "game/effects/effects.h"
 #include "game/match.h"
 #include "ui/render/camera.h"
 #include "ui/render/renderer2d.h"
@@ -33,6 +34,11 @@ struct PendingAim {
 
 struct MatchViewOptions {
     bool trajectoryPreview = true; ///< dotted path the current aim would take
+    /// The whole path to the first contact (a learning aid: the window sends an `assist`
+    /// command while it shows); off, the preview is the launch arc only, its first
+    /// kPreviewArcSeconds.
+    bool fullPreview = false;
+    bool effects = true;           ///< debris, smoke, flashes, craters, splashes, shot feedback
     bool solutionHint = false;     ///< the computer's aim (aimAt) as a golden ghost barrel
     bool hud = true;               ///< turn, wind, angle, power, shots, score, stars
     bool trails = true;            ///< the shell's path so far
@@ -49,6 +55,9 @@ struct MatchViewOptions {
     /// A line in the middle of the top of the screen ("Paused", "x0.25").
     std::string banner;
 };
+
+/// How much of the path the preview shows when it is not the full one (s of flight).
+inline constexpr double kPreviewArcSeconds = 0.5;
 
 /// Seen from far, a 1.5 m barrel is a few pixels: cannons are drawn scaled by this
 /// factor (>= 1) so the barrel is at least 24 px long and the aim reads at a glance.
@@ -80,9 +89,11 @@ class MatchView {
     void followGhosts(bool on) { ghostsShown_ = on; }
     /// Draws the match through `r` (begin() must have been called with the camera).
     void draw(Renderer2D& r, const game::Match& match, const MatchViewOptions& options);
+    /// What the effects are doing (the window's screen shake and camera read it).
+    const game::Effects& effects() const { return effects_; }
 
   private:
-    void drawPreview(Renderer2D& r, const game::Match& match, const PendingAim& aim);
+    void drawPreview(Renderer2D& r, const game::Match& match, const PendingAim& aim, bool full);
     void drawHint(Renderer2D& r, const game::Match& match);
     void drawTrails(Renderer2D& r, const game::Match& match);
 
@@ -104,6 +115,8 @@ class MatchView {
         bool operator==(const AimKey&) const = default;
     };
     AimKey previewKey_, hintKey_;
+    bool previewFull_ = false;
+    game::Effects effects_;
     std::vector<phys::Vec2> preview_;
     std::optional<PendingAim> hint_;
     bool hintExact_ = false;

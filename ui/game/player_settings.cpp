@@ -25,9 +25,12 @@ std::string key(const std::string& levelFile) {
 
 } // namespace
 
-bool PlayerSettings::record(const std::string& levelFile, int score, int stars, bool won) {
+bool PlayerSettings::record(const std::string& levelFile, int score, int stars, bool won, bool assisted) {
     LevelResult& r = results[key(levelFile)];
     const bool better = r.plays == 0 || score > r.bestScore || stars > r.stars || (won && !r.won);
+    // Assisted while every result at the best star count so far was.
+    if (r.plays == 0 || stars > r.stars) r.assisted = assisted;
+    else if (stars == r.stars) r.assisted = r.assisted && assisted;
     ++r.plays;
     r.bestScore = std::max(r.bestScore, score);
     r.stars = std::max(r.stars, stars);
@@ -75,6 +78,9 @@ PlayerSettings parsePlayerSettings(const std::string& file, const std::string& t
     s.hotseat = root.boolean("hotseat", s.hotseat);
     s.trajectoryPreview = root.boolean("trajectory_preview", s.trajectoryPreview);
     s.solutionHint = root.boolean("solution_hint", s.solutionHint);
+    s.fullPreview = root.boolean("full_preview", s.fullPreview);
+    s.cameraFollow = root.boolean("camera_follow", s.cameraFollow);
+    s.screenShake = root.boolean("screen_shake", s.screenShake);
     s.physicsPanel = root.boolean("physics_panel", s.physicsPanel);
     if (const auto draw = root.find("draw")) {
         if (!draw->isObject()) draw->fail("expected an object of draw toggles (true or false)");
@@ -87,12 +93,13 @@ PlayerSettings parsePlayerSettings(const std::string& file, const std::string& t
             levels->fail("expected at most " + std::to_string(kMaxLevelResults) + " levels");
         for (const auto& [name, value] : levels->json().items()) {
             const game::Node r(value, file, levels->path() + "." + name);
-            if (!r.isObject()) r.fail("expected an object with best_score, stars, plays, won");
+            if (!r.isObject()) r.fail("expected an object with best_score, stars, plays, won, assisted");
             LevelResult lr;
             lr.bestScore = static_cast<int>(r.integer("best_score", 0, 0, 1'000'000'000));
             lr.stars = static_cast<int>(r.integer("stars", 0, 0, 3));
             lr.plays = static_cast<int>(r.integer("plays", 0, 0, 1'000'000'000));
             lr.won = r.boolean("won", false);
+            lr.assisted = r.boolean("assisted", false);
             r.finish();
             s.results[name] = lr;
         }
@@ -122,12 +129,16 @@ std::string savePlayerSettings(const std::string& file, const PlayerSettings& s)
     j["hotseat"] = s.hotseat;
     j["trajectory_preview"] = s.trajectoryPreview;
     j["solution_hint"] = s.solutionHint;
+    j["full_preview"] = s.fullPreview;
+    j["camera_follow"] = s.cameraFollow;
+    j["screen_shake"] = s.screenShake;
     j["physics_panel"] = s.physicsPanel;
     DrawChoices draw = s.draw;
     for (const auto& [name, flag] : drawFlags(draw)) j["draw"][name] = *flag;
     nlohmann::json levels = nlohmann::json::object();
     for (const auto& [name, r] : s.results)
-        levels[name] = {{"best_score", r.bestScore}, {"stars", r.stars}, {"plays", r.plays}, {"won", r.won}};
+        levels[name] = {{"best_score", r.bestScore}, {"stars", r.stars}, {"plays", r.plays},
+                        {"won", r.won},           {"assisted", r.assisted}};
     j["levels"] = levels;
     try {
         std::filesystem::create_directories(std::filesystem::path(file).parent_path());
