@@ -2,13 +2,17 @@
 
 #include "game/match.h"
 
+#include "game/effects/shot_feedback.h"
+
+#include <algorithm>
 #include <cmath>
 
 namespace game {
 
 using phys::Vec2;
 
-void CameraRig::setHome(Vec2 center, double pixelsPerMetre, int viewHeightPx) {
+void CameraRig::setHome(Vec2 center, double pixelsPerMetre, int viewWidthPx, int viewHeightPx) {
+    viewWidthPx_ = viewWidthPx;
     viewHeightPx_ = viewHeightPx;
     homeCenter_ = center_ = aim_ = center;
     homeZoom_ = zoom_ = pixelsPerMetre;
@@ -44,8 +48,24 @@ void CameraRig::tick(const Match& m) {
         lastShell_ = ps.position(*shell);
         shellSeen_ = true;
         phase_ = Phase::Following;
-        approach(lastShell_ + ps.velocity(*shell) * def_.leadSeconds, home * def_.followZoom,
-                 def_.followSeconds, dt);
+        // Frame the shell (a little ahead of it) together with the targets still standing:
+        // the view closes in as the shell nears them, from home's zoom up to the impact's.
+        const Vec2 ahead = lastShell_ + ps.velocity(*shell) * def_.leadSeconds;
+        Vec2 lo{std::min(ahead.x, lastShell_.x), std::min(ahead.y, lastShell_.y)};
+        Vec2 hi{std::max(ahead.x, lastShell_.x), std::max(ahead.y, lastShell_.y)};
+        for (const TargetMark& t : standingTargets(m)) {
+            lo = {std::min(lo.x, t.where.x - t.reach), std::min(lo.y, t.where.y - t.reach)};
+            hi = {std::max(hi.x, t.where.x + t.reach), std::max(hi.y, t.where.y + t.reach)};
+        }
+        const double margin = def_.followMarginPx;
+        const double fit = std::min((viewWidthPx_ - 2.0 * margin) / std::max(1e-6, hi.x - lo.x),
+                                    (viewHeightPx_ - 2.0 * margin) / std::max(1e-6, hi.y - lo.y));
+        const double zoom = std::clamp(fit, home, home * def_.impactZoom);
+        // The lowest of them a quarter of the way up the picture (the ground low, as at
+        // home), unless the shell needs the view higher to stay in it.
+        const double visible = viewHeightPx_ / zoom, m = margin / zoom;
+        const double y = std::max(lo.y + 0.25 * visible, hi.y + m - 0.5 * visible);
+        approach({0.5 * (lo.x + hi.x), y}, zoom, def_.followSeconds, dt);
         return;
     }
     // The shot's end from the match's events (not from having watched it fall: a viewer

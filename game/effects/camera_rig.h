@@ -1,5 +1,6 @@
 // The camera as a view of the match: it rests on the level's framing ("home"), follows
-// the shell smoothly while it flies, frames the point of impact for a moment, then
+// the shell smoothly while it flies (framing it with the targets still standing, so the
+// view closes in as the shell nears them), frames the point of impact for a moment, then
 // returns home. It holds a centre and a zoom in world units only (the window turns them
 // into pixels), moves by ticks so tests can drive it, and never touches the match.
 //
@@ -17,12 +18,13 @@ namespace game {
 class Match;
 
 struct CameraRigDef {
-    double followSeconds = 0.35; ///< tau while following the shell, s
-    double returnSeconds = 0.6;  ///< tau going back home, s
-    double holdSeconds = 1.2;    ///< how long the impact stays framed, s
-    double leadSeconds = 0.3;    ///< the view looks ahead along the shell's velocity, s
-    double followZoom = 1.3;     ///< zoom while following, relative to home
-    double impactZoom = 2.2;     ///< zoom on the impact, relative to home
+    double followSeconds = 0.35;   ///< tau while following the shell, s
+    double returnSeconds = 0.6;    ///< tau going back home, s
+    double holdSeconds = 1.2;      ///< how long the impact stays framed, s
+    double leadSeconds = 0.3;      ///< the view looks ahead along the shell's velocity, s
+    double followMarginPx = 110.0; ///< room around the shell and the targets it frames, px
+    double impactZoom =
+        2.2; ///< zoom on the impact (and the most while following), relative to home
 };
 
 class CameraRig {
@@ -33,7 +35,8 @@ class CameraRig {
 
     /// Where the view rests: the level's framing (centre, m; zoom, px/m; the view's
     /// height, px). Jumps there.
-    void setHome(phys::Vec2 center, double pixelsPerMetre, int viewHeightPx = 720);
+    void setHome(phys::Vec2 center, double pixelsPerMetre, int viewWidthPx = 1280,
+                 int viewHeightPx = 720);
     /// After each tick of `match`, or once a frame: it moves by the ticks since the last
     /// call.
     void tick(const Match& match);
@@ -57,7 +60,7 @@ class CameraRig {
     bool shellSeen_ = false;
     std::uint64_t lastTick_ = 0;
     bool started_ = false;
-    int viewHeightPx_ = 720;
+    int viewWidthPx_ = 1280, viewHeightPx_ = 720;
     phys::Vec2 lastShell_;
 };
 

@@ -199,7 +199,7 @@ const game::Match* GameScreen::shownMatch() const {
 // ---- camera ---------------------------------------------------------------------------
 void GameScreen::frameLevel(const game::Match& m) {
     camera_ = levelCamera(m, context_.width(), context_.height());
-    rig_.setHome(camera_.center, camera_.pixelsPerMetre, camera_.height);
+    rig_.setHome(camera_.center, camera_.pixelsPerMetre, camera_.width, camera_.height);
     rig_.tick(m); // from this tick on
 }
 
