@@ -83,7 +83,7 @@ void Effects::blast(Vec2 at, double radius, double impulse, std::uint8_t tint) {
             const bool dust = i % 3 == 2;
             throwPiece(at + Vec2{(unit() - 0.5) * radius * 0.5, 0.2 * radius},
                        Vec2{std::cos(a), std::sin(a)} * (dust ? 0.6 * v : v),
-                       dust ? 0.05 + 0.05 * unit() : 0.07 + 0.1 * unit() * std::sqrt(scale * 4.0),
+                       dust ? 0.06 + 0.06 * unit() : 0.08 + 0.14 * unit() * std::sqrt(scale),
                        dust ? PieceKind::Dust : PieceKind::Soil, tint);
         }
     }

@@ -33,8 +33,8 @@ namespace game {
 struct EffectsDef {
     bool debris = true;                ///< blast debris, dust, splinters, spray
     bool smoke = true;                 ///< smoke puffs that drift with the wind
-    int debrisPerBlast = 48;           ///< pieces thrown by a blast of the reference radius
-    double referenceBlastRadius = 4.0; ///< m: blasts scale their debris count by r / this
+    int debrisPerBlast = 72;           ///< pieces thrown by a blast of the reference radius
+    double referenceBlastRadius = 3.0; ///< m: blasts scale their debris count by r / this
     double debrisSeconds = 3.0;        ///< s, a piece in the air longer than this is gone
     double smokeSeconds = 4.0;         ///< s, a puff's life
     double smokeRelaxSeconds = 0.8;    ///< s, time constant of a puff's approach to the wind

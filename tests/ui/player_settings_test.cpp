@@ -25,7 +25,8 @@ TEST(PlayerSettingsFiles, ADamagedFileIsReportedAndLeftAsItIs) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     const std::string file = (dir / "settings.json").string();
-    const std::string damaged = R"({"format": 1, "levels": {"01_earth_basics.json": {"stars": 9}}})";
+    const std::string damaged =
+        R"({"format": 1, "levels": {"01_earth_basics.json": {"stars": 9}}})";
     game::writeFileAtomically(file, damaged);
     std::string warning;
     const ui::PlayerSettings s = ui::loadPlayerSettings(file, warning);
@@ -71,7 +72,49 @@ TEST(PlayerSettingsFiles, DrawTogglesRoundTripAndAreReadStrictly) {
     EXPECT_NE(message(R"({"format": 1, "draw": {"cells": 1}})").find("$.draw.cells"),
               std::string::npos)
         << message(R"({"format": 1, "draw": {"cells": 1}})");
-    EXPECT_NE(message(R"({"format": 1, "draw": [true]})").find("expected an object of draw toggles"),
-              std::string::npos);
+    EXPECT_NE(
+        message(R"({"format": 1, "draw": [true]})").find("expected an object of draw toggles"),
+        std::string::npos);
+    std::filesystem::remove_all(dir);
+}
+
+// The camera, shake and preview choices persist; a level's best result remembers whether
+// it was assisted (the level select says so), and an unassisted result as good clears it.
+TEST(PlayerSettingsFiles, CameraShakePreviewAndAssistedResultsRoundTrip) {
+    const auto dir = std::filesystem::temp_directory_path() / "artillery-fx-settings-test";
+    std::filesystem::remove_all(dir);
+    const std::string file = (dir / "settings.json").string();
+    ui::PlayerSettings s;
+    EXPECT_TRUE(s.cameraFollow);
+    EXPECT_TRUE(s.screenShake);
+    EXPECT_FALSE(s.fullPreview) << "the launch arc by default";
+    s.cameraFollow = false;
+    s.screenShake = false;
+    s.fullPreview = true;
+    EXPECT_TRUE(s.record("levels/05_castle.json", 300, 2, true, true));
+    EXPECT_TRUE(s.result("05_castle.json")->assisted);
+    EXPECT_TRUE(s.record("levels/01_earth_basics.json", 100, 1, true, true));
+    EXPECT_TRUE(s.record("levels/01_earth_basics.json", 90, 1, true, false));
+    EXPECT_FALSE(s.result("01_earth_basics.json")->assisted) << "as many stars without help";
+    ASSERT_EQ(ui::savePlayerSettings(file, s), "");
+    std::string warning;
+    const ui::PlayerSettings back = ui::loadPlayerSettings(file, warning);
+    EXPECT_EQ(warning, "");
+    EXPECT_FALSE(back.cameraFollow);
+    EXPECT_FALSE(back.screenShake);
+    EXPECT_TRUE(back.fullPreview);
+    ASSERT_NE(back.result("05_castle.json"), nullptr);
+    EXPECT_TRUE(back.result("05_castle.json")->assisted);
+    EXPECT_FALSE(back.result("01_earth_basics.json")->assisted);
+    // Three stars without help after two with it: no longer marked.
+    ui::PlayerSettings again = back;
+    again.record("levels/05_castle.json", 350, 3, true, false);
+    EXPECT_FALSE(again.result("05_castle.json")->assisted);
+    try {
+        ui::parsePlayerSettings("s.json", R"({"format": 1, "camera_follow": "yes"})");
+        ADD_FAILURE() << "accepted a string for a boolean";
+    } catch (const game::LoadError& e) {
+        EXPECT_NE(std::string(e.what()).find("$.camera_follow"), std::string::npos) << e.what();
+    }
     std::filesystem::remove_all(dir);
 }

@@ -69,7 +69,7 @@ void drawEffectsLayer(Renderer2D& r, const Effects& fx) {
         if (!(ps.flags[i] & phys::kAlive)) continue;
         const auto id = static_cast<phys::ParticleId>(i);
         const Vec2 p{ps.px[i], ps.py[i]};
-        const double h = std::max(ps.radius[i], 1.2 * px);
+        const double h = std::max(ps.radius[i], 1.5 * px);
         const game::PieceKind kind = fx.kind(id);
         if (kind == game::PieceKind::Splinter) {
             // A spinning sliver: its angle turns with its age, each at its own rate.
