@@ -32,23 +32,20 @@ bool difficultyCombo(PlayerSettings& s) {
     bool changed = false;
     if (ImGui::BeginCombo("computer", game::difficultyName(s.difficulty))) {
         for (const auto d : all)
-            if (ImGui::Selectable(game::difficultyName(d), d == s.difficulty) &&
-                d != s.difficulty) {
+            if (ImGui::Selectable(game::difficultyName(d), d == s.difficulty) && d != s.difficulty) {
                 s.difficulty = d;
                 changed = true;
             }
         ImGui::EndCombo();
     }
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "How much aiming error the computer adds (duels; applies from the next match)");
+        ImGui::SetTooltip("How much aiming error the computer adds (duels; applies from the next match)");
     return changed;
 }
 
 std::string starsText(int stars) {
     std::string s;
-    for (int k = 0; k < 3; ++k)
-        s += k < stars ? "*" : ".";
+    for (int k = 0; k < 3; ++k) s += k < stars ? "*" : ".";
     return s;
 }
 
@@ -84,8 +81,7 @@ std::vector<LevelEntry> listLevels(const std::string& folder) {
         }
         out.push_back(std::move(e));
     }
-    std::sort(out.begin(), out.end(),
-              [](const LevelEntry& a, const LevelEntry& b) { return a.file < b.file; });
+    std::sort(out.begin(), out.end(), [](const LevelEntry& a, const LevelEntry& b) { return a.file < b.file; });
     return out;
 }
 
@@ -131,8 +127,7 @@ std::vector<ReplayEntry> listReplays(const std::string& folder) {
 
 MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettings& settings) {
     MenuChoice choice;
-    beginMenuWindow("Choose a level", "ARTILLERY",
-                    "a physics playground: every level shows one idea");
+    beginMenuWindow("Choose a level", "ARTILLERY", "a physics playground: every level shows one idea");
     if (levels.empty()) ImGui::TextWrapped("No level files found (looked for levels/*.json).");
     if (ImGui::BeginTable("levels", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH)) {
         ImGui::TableSetupColumn("level", ImGuiTableColumnFlags_WidthFixed, 190.0f);
@@ -161,8 +156,8 @@ MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettin
                 if (e.mode == "duel")
                     ImGui::TextColored(kGoldText, "%s", r->won ? "won" : "played");
                 else
-                    ImGui::TextColored(kGoldText, "%s %d%s", starsText(r->stars).c_str(),
-                                       r->bestScore, r->assisted ? " (assisted)" : "");
+                    ImGui::TextColored(kGoldText, "%s %d%s", starsText(r->stars).c_str(), r->bestScore,
+                                       r->assisted ? " (assisted)" : "");
             } else {
                 ImGui::TextColored(kDimText, "-");
             }
@@ -189,8 +184,7 @@ MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettin
 
 MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::string& folder) {
     MenuChoice choice;
-    beginMenuWindow("Replays", "REPLAYS",
-                    "every game is recorded; watch one, scrub it, take it over");
+    beginMenuWindow("Replays", "REPLAYS", "every game is recorded; watch one, scrub it, take it over");
     if (folder.empty())
         ImGui::TextWrapped(
             "This run keeps no replays (check runs and headless pictures leave nothing "
@@ -260,16 +254,12 @@ MenuChoice pauseMenu(PlayerSettings& settings) {
     ImGui::PushItemWidth(120);
     choice.settingsChanged |= difficultyCombo(settings);
     ImGui::PopItemWidth();
-    choice.settingsChanged |=
-        ImGui::Checkbox("hotseat duel (from the next match)", &settings.hotseat);
-    choice.settingsChanged |=
-        ImGui::Checkbox("trajectory preview (P)", &settings.trajectoryPreview);
+    choice.settingsChanged |= ImGui::Checkbox("hotseat duel (from the next match)", &settings.hotseat);
+    choice.settingsChanged |= ImGui::Checkbox("trajectory preview (P)", &settings.trajectoryPreview);
     choice.settingsChanged |= ImGui::Checkbox("full preview, assisted (V)", &settings.fullPreview);
-    choice.settingsChanged |=
-        ImGui::Checkbox("firing-solution hint, assisted (H)", &settings.solutionHint);
+    choice.settingsChanged |= ImGui::Checkbox("firing-solution hint, assisted (H)", &settings.solutionHint);
     ImGui::TextDisabled("assisted results earn at most two stars");
-    choice.settingsChanged |=
-        ImGui::Checkbox("camera follows the shell (C)", &settings.cameraFollow);
+    choice.settingsChanged |= ImGui::Checkbox("camera follows the shell (C)", &settings.cameraFollow);
     choice.settingsChanged |= ImGui::Checkbox("screen shake", &settings.screenShake);
     choice.settingsChanged |= ImGui::Checkbox("physics panel (F2)", &settings.physicsPanel);
     ImGui::Separator();
@@ -280,9 +270,8 @@ MenuChoice pauseMenu(PlayerSettings& settings) {
 
 void helpOverlay(bool& open) {
     centreNextWindow(600.0f);
-    ImGui::Begin("Help", &open,
-                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoResize);
+    ImGui::Begin("Help", &open, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                    ImGuiWindowFlags_NoResize);
     struct Row {
         const char* keys;
         const char* does;
@@ -295,8 +284,7 @@ void helpOverlay(bool& open) {
         {"Enter or F", "fire at the power set"},
         {"1 .. 8, Tab", "choose the projectile"},
         {"E", "end the turn (duels)"},
-        {"P / V / H", "launch-arc preview / full preview / firing-solution hint (the last two: at "
-                      "most 2 stars)"},
+        {"P / V / H", "launch-arc preview / full preview / firing-solution hint (the last two: at most 2 stars)"},
         {"C", "camera follows the shell and frames the impact (on / off)"},
         {"Esc", "pause menu"},
         {"F1 or ?", "this help"},
@@ -328,9 +316,8 @@ void helpOverlay(bool& open) {
         }
         ImGui::EndTable();
     }
-    ImGui::TextColored(
-        kDimText,
-        "Every change you make is a command at a tick: the game is recorded as a replay.");
+    ImGui::TextColored(kDimText,
+                       "Every change you make is a command at a tick: the game is recorded as a replay.");
     ImGui::End();
 }
 
@@ -372,10 +359,8 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
     ImGui::SameLine();
     req.settingsChanged |= ImGui::Checkbox("full (V)", &settings.fullPreview);
     if (m.level().mode == game::Mode::Duel)
-        ImGui::TextColored(kDimText, "%s",
-                           hotseatInUse
-                               ? "hotseat: two players"
-                               : (std::string("computer: ") + game::difficultyName(inUse)).c_str());
+        ImGui::TextColored(kDimText, "%s", hotseatInUse ? "hotseat: two players" :
+                                               (std::string("computer: ") + game::difficultyName(inUse)).c_str());
     // Rewind: back to any earlier moment; play goes on from there as a new branch (the
     // later commands are dropped). Applied when the slider is let go.
     const double dt = m.world().def().tickSeconds;

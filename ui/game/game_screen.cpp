@@ -5,8 +5,8 @@
 //   replays      openReplay, takeOverReplay, rewindLive: watching, branching, rewinding
 //   drawing      frame, drawPlaying, drawPanels
 //   events       handleEvent: mouse aim, keys, controller buttons
-#include "ui/game/game_screen.h"
 #include "ui/platform/gl_setup.h"
+#include "ui/game/game_screen.h"
 
 #include "game/files/json_reader.h"
 #include "ui/game/match_frame.h"
@@ -203,9 +203,7 @@ void GameScreen::frameLevel(const game::Match& m) {
     rig_.tick(m); // from this tick on
 }
 
-bool GameScreen::following() const {
-    return settings_.cameraFollow && !cameraMoved_;
-}
+bool GameScreen::following() const { return settings_.cameraFollow && !cameraMoved_; }
 
 void GameScreen::followShot(const game::Match& m) {
     rig_.tick(m);
@@ -239,8 +237,7 @@ void GameScreen::markAssists() {
         c.text = what;
         submit(c);
     };
-    if (settings_.trajectoryPreview && settings_.fullPreview)
-        assist(game::kAssistPreview, "preview");
+    if (settings_.trajectoryPreview && settings_.fullPreview) assist(game::kAssistPreview, "preview");
     if (settings_.solutionHint) assist(game::kAssistHint, "hint");
 }
 
@@ -252,8 +249,7 @@ void GameScreen::submit(const game::Command& command) {
 }
 
 void GameScreen::submit(const std::vector<game::Command>& commands) {
-    for (const game::Command& c : commands)
-        submit(c);
+    for (const game::Command& c : commands) submit(c);
 }
 
 bool GameScreen::humanTurn() const {
@@ -266,8 +262,8 @@ void GameScreen::recordResultOnce() {
     const game::Match& m = session_->match();
     if (!m.over() || resultRecorded_) return;
     resultRecorded_ = true;
-    const bool humanWon =
-        m.winner() >= 0 && m.cannons()[static_cast<std::size_t>(m.winner())].def.player != "cpu";
+    const bool humanWon = m.winner() >= 0 &&
+                          m.cannons()[static_cast<std::size_t>(m.winner())].def.player != "cpu";
     newBest_ = settings_.record(level_.file, m.score(), m.stars(), humanWon, m.assisted() != 0);
     persist();
 }
@@ -285,10 +281,8 @@ void GameScreen::pollHeldInput(double dt) {
     if (!imgui_.wantsKeyboard() && window_ && overlay_ == Overlay::None) {
         const Uint8* keys = SDL_GetKeyboardState(nullptr);
         const double fine = (keys[SDL_SCANCODE_LSHIFT] || keys[SDL_SCANCODE_RSHIFT]) ? 0.2 : 1.0;
-        angleAxis =
-            fine * ((keys[SDL_SCANCODE_LEFT] ? 1.0 : 0.0) - (keys[SDL_SCANCODE_RIGHT] ? 1.0 : 0.0));
-        powerAxis =
-            fine * ((keys[SDL_SCANCODE_UP] ? 1.0 : 0.0) - (keys[SDL_SCANCODE_DOWN] ? 1.0 : 0.0));
+        angleAxis = fine * ((keys[SDL_SCANCODE_LEFT] ? 1.0 : 0.0) - (keys[SDL_SCANCODE_RIGHT] ? 1.0 : 0.0));
+        powerAxis = fine * ((keys[SDL_SCANCODE_UP] ? 1.0 : 0.0) - (keys[SDL_SCANCODE_DOWN] ? 1.0 : 0.0));
     }
     if (pad_.connected()) {
         const PadAxes pad = pad_.axes();
@@ -336,8 +330,7 @@ void GameScreen::simulate(double wallSeconds) {
 void GameScreen::warmUp(double seconds) {
     if (viewer_) viewer_->warmUp(seconds, matchView_);
     if (!session_) return;
-    const auto ticks =
-        static_cast<long long>(seconds / session_->match().world().def().tickSeconds);
+    const auto ticks = static_cast<long long>(seconds / session_->match().world().def().tickSeconds);
     for (long long i = 0; i < ticks; ++i) {
         session_->step();
         matchView_.observe(session_->match());
@@ -487,8 +480,7 @@ void GameScreen::drawPanels() {
             c.kind = game::CommandKind::EndTurn;
             submit(c);
         }
-        const PendingAim shownAim =
-            aim_.editing() ? aim_.pending() : PendingAim{m.cannon().angleDeg, m.cannon().speedMps};
+        const PendingAim shownAim = aim_.editing() ? aim_.pending() : PendingAim{m.cannon().angleDeg, m.cannon().speedMps};
         if (auto d = statsPanel_.panel(m, shownAim)) submit(settingCommands(m.world().def(), *d));
         if (settings_.physicsPanel) {
             const game::LiveSettings before = m.liveSettings();
@@ -567,8 +559,8 @@ void GameScreen::frame(double wallSeconds) {
 }
 
 std::string GameScreen::saveScreenshot(const std::string& path) {
-    const std::string error = writePng(
-        path, readFramebuffer(context_.framebuffer(), context_.width(), context_.height()));
+    const std::string error =
+        writePng(path, readFramebuffer(context_.framebuffer(), context_.width(), context_.height()));
     stats_.status = error.empty() ? "saved " + path : error;
     return error;
 }
@@ -597,8 +589,7 @@ bool GameScreen::keyDown(const SDL_Event& e) {
         screenshotRequested_ = true;
         return true;
     }
-    if (key == SDLK_F1 || key == SDLK_QUESTION ||
-        (key == SDLK_SLASH && (e.key.keysym.mod & KMOD_SHIFT))) {
+    if (key == SDLK_F1 || key == SDLK_QUESTION || (key == SDLK_SLASH && (e.key.keysym.mod & KMOD_SHIFT))) {
         helpOpen_ = !helpOpen_;
         return true;
     }
@@ -675,8 +666,7 @@ bool GameScreen::keyDown(const SDL_Event& e) {
     case SDLK_LEFTBRACKET:
     case SDLK_RIGHTBRACKET: {
         int i = 0;
-        while (i + 1 < static_cast<int>(std::size(kSpeeds)) && kSpeeds[i] < time_.timeScale)
-            ++i;
+        while (i + 1 < static_cast<int>(std::size(kSpeeds)) && kSpeeds[i] < time_.timeScale) ++i;
         i += key == SDLK_RIGHTBRACKET ? 1 : -1;
         time_.timeScale = kSpeeds[std::clamp(i, 0, static_cast<int>(std::size(kSpeeds)) - 1)];
         break;
@@ -784,12 +774,9 @@ bool GameScreen::handleEvent(const SDL_Event& e) {
         const int x = e.type == SDL_MOUSEMOTION ? e.motion.x : e.button.x;
         const int y = e.type == SDL_MOUSEMOTION ? e.motion.y : e.button.y;
         const phys::Vec2 at = camera_.toWorld(pointerPixels(x, y));
-        if (left && e.type == SDL_MOUSEBUTTONDOWN)
-            submit(sandboxTools_.press(at));
-        else if (left && e.type == SDL_MOUSEBUTTONUP)
-            submit(sandboxTools_.lift(at));
-        else if (e.type == SDL_MOUSEMOTION)
-            submit(sandboxTools_.move(at));
+        if (left && e.type == SDL_MOUSEBUTTONDOWN) submit(sandboxTools_.press(at));
+        else if (left && e.type == SDL_MOUSEBUTTONUP) submit(sandboxTools_.lift(at));
+        else if (e.type == SDL_MOUSEMOTION) submit(sandboxTools_.move(at));
         if (!left || e.type == SDL_MOUSEMOTION) cameraEvent(e); // right drag still pans
         return running_;
     }

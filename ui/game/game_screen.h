@@ -24,8 +24,8 @@
 #include "ui/game/match_view.h"
 #include "ui/game/pad_input.h"
 #include "ui/game/player_settings.h"
-#include "ui/game/replay_view.h"
 #include "ui/game/sandbox_tools.h"
+#include "ui/game/replay_view.h"
 #include "ui/game/stats_panel.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
@@ -45,11 +45,11 @@ namespace ui {
 class SdlWindow;
 
 struct GameScreenDef {
-    std::string levelFile;  ///< "" opens the level select screen
-    std::string replayFile; ///< a replay to watch (instead of a level)
+    std::string levelFile;           ///< "" opens the level select screen
+    std::string replayFile;          ///< a replay to watch (instead of a level)
     std::string levelsFolder = "levels";
-    int msaaSamples = 0; ///< 0 = auto (4 on a GPU, off on llvmpipe)
-    bool panel = true;   ///< the ImGui physics panel
+    int msaaSamples = 0;             ///< 0 = auto (4 on a GPU, off on llvmpipe)
+    bool panel = true;               ///< the ImGui physics panel
     /// Where results, choices and the ImGui layout persist ("" = nowhere: tests, headless).
     std::string settingsFolder;
     /// Choices when nothing is stored (the command line overrides stored ones).

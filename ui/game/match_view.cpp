@@ -8,9 +8,9 @@
 #include "ui/game/match_view.h"
 
 #include "game/ai.h"
+#include "ui/game/effects_view.h"
 #include "physics/integrators.h"
 #include "physics/rigid/rigid_world.h"
-#include "ui/game/effects_view.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,21 +63,15 @@ const Color kGold = Color::hex(0xffc93c);
 const Color kTeams[] = {Color::hex(0x3b82f6), Color::hex(0xef4444), Color::hex(0x22c55e),
                         Color::hex(0xf59e0b), Color::hex(0xa855f7), Color::hex(0x14b8a6),
                         Color::hex(0xec4899), Color::hex(0x84cc16)};
-Color team(int i) {
-    return kTeams[static_cast<std::size_t>(i) % std::size(kTeams)];
-}
+Color team(int i) { return kTeams[static_cast<std::size_t>(i) % std::size(kTeams)]; }
 
 Color mix(Color a, Color b, float t) {
     return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t,
             a.a + (b.a - a.a) * t};
 }
-Color darker(Color c, float f = 0.65f) {
-    return {c.r * f, c.g * f, c.b * f, c.a};
-}
+Color darker(Color c, float f = 0.65f) { return {c.r * f, c.g * f, c.b * f, c.a}; }
 
-bool lowGravity(const Match& m) {
-    return m.world().def().forces.gravity.y > -5.0;
-}
+bool lowGravity(const Match& m) { return m.world().def().forces.gravity.y > -5.0; }
 
 // ---- pixel-space helpers for the HUD ---------------------------------------------------
 /// The HUD is laid out in pixels; the renderer draws in world units, so convert.
@@ -129,8 +123,7 @@ void drawSky(Renderer2D& r, const Match& m, double groundTop) {
     const Camera& c = r.camera();
     const Vec2 lo = c.visibleMin(), hi = c.visibleMax();
     const bool space = lowGravity(m);
-    const Color top = space ? kMoonSkyTop : kSkyTop,
-                horizon = space ? kMoonSkyHorizon : kSkyHorizon;
+    const Color top = space ? kMoonSkyTop : kSkyTop, horizon = space ? kMoonSkyHorizon : kSkyHorizon;
     // The gradient runs from the ground to 1.5 screen heights up, so zooming shows more
     // of it rather than stretching it.
     const double gradientTop = groundTop + 1.2 * (hi.y - lo.y);
@@ -141,11 +134,9 @@ void drawSky(Renderer2D& r, const Match& m, double groundTop) {
     if (space) {
         // Stars at fixed hashed places in the level (not the screen), and the Earth.
         for (int k = 0; k < 90; ++k) {
-            const double fx = std::fmod(k * 0.6180339887, 1.0),
-                         fy = std::fmod(k * 0.7548776662, 1.0);
+            const double fx = std::fmod(k * 0.6180339887, 1.0), fy = std::fmod(k * 0.7548776662, 1.0);
             const Vec2 p{lo.x + fx * span, groundTop + 0.15 * height + fy * 0.85 * height};
-            r.point(p, k % 7 == 0 ? 2.5f : 1.5f,
-                    Color::hex(0xffffff, 0.55f + 0.4f * (k % 3) / 2.0f));
+            r.point(p, k % 7 == 0 ? 2.5f : 1.5f, Color::hex(0xffffff, 0.55f + 0.4f * (k % 3) / 2.0f));
         }
         const Vec2 earth{lo.x + 0.8 * span, lo.y + 0.8 * height};
         const double er = 0.05 * height;
@@ -291,8 +282,7 @@ void drawBlocks(Renderer2D& r, const Match& m) {
             r.polyline(s.vertices, darker(fill, 0.55f), 2.0f, true);
             if (block && block->def.target && !block->toppled) {
                 Vec2 c{};
-                for (Vec2 v : s.vertices)
-                    c = c + v;
+                for (Vec2 v : s.vertices) c = c + v;
                 c = c * (1.0 / static_cast<double>(s.vertices.size()));
                 const double rad = 0.3 * std::min(block->def.size.x, block->def.size.y);
                 r.fillCircle(c, rad, kTargetWhite);
@@ -362,7 +352,7 @@ void drawLooseParticles(Renderer2D& r, const Match& m, std::optional<phys::Parti
         if (!(ps.flags[i] & phys::kAlive) || owned[i]) continue;
         if (shell && *shell == i) continue;
         const Vec2 p{ps.px[i], ps.py[i]};
-        const Color col = (ps.flags[i] & phys::kSleeping)     ? Color::hex(0x7c8794)
+        const Color col = (ps.flags[i] & phys::kSleeping) ? Color::hex(0x7c8794)
                           : (ps.flags[i] & phys::kProjectile) ? Color::hex(0x3a3f47)
                                                               : Color::hex(0xe8b04a);
         r.fillCircle(p, std::max(ps.radius[i], minR), col);
@@ -377,10 +367,8 @@ void drawCannon(Renderer2D& r, const Match& m, int index, double angleDeg, bool 
     const double k = cannonDrawScale(r.camera());
     // A stone pedestal from the ground up to the pivot, so a cannon on a cliff stands on it.
     if (pivot.y - 0.6 * k > ground) {
-        const Vec2 q[] = {{pivot.x - 1.0 * k, ground - 0.5},
-                          {pivot.x + 1.0 * k, ground - 0.5},
-                          {pivot.x + 0.75 * k, pivot.y - 0.5 * k},
-                          {pivot.x - 0.75 * k, pivot.y - 0.5 * k}};
+        const Vec2 q[] = {{pivot.x - 1.0 * k, ground - 0.5}, {pivot.x + 1.0 * k, ground - 0.5},
+                          {pivot.x + 0.75 * k, pivot.y - 0.5 * k}, {pivot.x - 0.75 * k, pivot.y - 0.5 * k}};
         r.fillConvex(q, kStone);
         r.polyline(q, darker(kStone, 0.6f), 1.5f, true);
         for (double y = ground + 1.5 * k; y < pivot.y - 0.8 * k; y += 1.5 * k)
@@ -392,20 +380,16 @@ void drawCannon(Renderer2D& r, const Match& m, int index, double angleDeg, bool 
     const Vec2 barrel[] = {breech + side * (0.36 * k), breech - side * (0.36 * k),
                            muzzle - side * (0.24 * k), muzzle + side * (0.24 * k)};
     r.fillConvex(barrel, kIron);
-    const Vec2 band[] = {
-        pivot + dir * (0.35 * k) + side * (0.33 * k), pivot + dir * (0.35 * k) - side * (0.33 * k),
-        pivot + dir * (0.6 * k) - side * (0.31 * k), pivot + dir * (0.6 * k) + side * (0.31 * k)};
+    const Vec2 band[] = {pivot + dir * (0.35 * k) + side * (0.33 * k), pivot + dir * (0.35 * k) - side * (0.33 * k),
+                         pivot + dir * (0.6 * k) - side * (0.31 * k), pivot + dir * (0.6 * k) + side * (0.31 * k)};
     r.fillConvex(band, colour);
-    const Vec2 ring[] = {muzzle - dir * (0.2 * k) + side * (0.31 * k),
-                         muzzle - dir * (0.2 * k) - side * (0.31 * k), muzzle - side * (0.31 * k),
-                         muzzle + side * (0.31 * k)};
+    const Vec2 ring[] = {muzzle - dir * (0.2 * k) + side * (0.31 * k), muzzle - dir * (0.2 * k) - side * (0.31 * k),
+                         muzzle - side * (0.31 * k), muzzle + side * (0.31 * k)};
     r.fillConvex(ring, Color::hex(0x4a5058));
     r.fillCircle(breech, 0.36 * k, kIron);
     // Carriage (team colour) and wheel.
-    const Vec2 carriage[] = {{pivot.x - 1.0 * k, pivot.y - 0.55 * k},
-                             {pivot.x + 1.0 * k, pivot.y - 0.55 * k},
-                             {pivot.x + 0.45 * k, pivot.y + 0.05 * k},
-                             {pivot.x - 0.45 * k, pivot.y + 0.05 * k}};
+    const Vec2 carriage[] = {{pivot.x - 1.0 * k, pivot.y - 0.55 * k}, {pivot.x + 1.0 * k, pivot.y - 0.55 * k},
+                             {pivot.x + 0.45 * k, pivot.y + 0.05 * k}, {pivot.x - 0.45 * k, pivot.y + 0.05 * k}};
     r.fillConvex(carriage, darker(colour, 0.8f));
     const Vec2 wheel{pivot.x, pivot.y - 0.35 * k};
     r.fillCircle(wheel, 0.5 * k, Color::hex(0x5a3d24));
@@ -417,8 +401,7 @@ void drawCannon(Renderer2D& r, const Match& m, int index, double angleDeg, bool 
         for (int p = 0; p < game::kCannonHitPoints; ++p) {
             const Vec2 at = pivot + Vec2{(p - 1) * 0.8 * k, 2.8 * k};
             r.fillCircle(at, 0.32 * k, Color::hex(0x111111, 0.6f));
-            r.fillCircle(at, 0.24 * k,
-                         p < cs.hitPoints ? Color::hex(0x4ade80) : Color::hex(0x3f3f46));
+            r.fillCircle(at, 0.24 * k, p < cs.hitPoints ? Color::hex(0x4ade80) : Color::hex(0x3f3f46));
         }
     }
 }
@@ -436,8 +419,7 @@ void drawTarget(Renderer2D& r, const game::TargetState& t) {
     } else {
         r.line(c - Vec2{0.0, rad}, c - Vec2{0.0, rad * 1.8}, Color::hex(0x5a3d24), 3.0f);
     }
-    const Color red = t.hit ? kHit : kTargetRed,
-                white = t.hit ? Color::hex(0xc8c8c8) : kTargetWhite;
+    const Color red = t.hit ? kHit : kTargetRed, white = t.hit ? Color::hex(0xc8c8c8) : kTargetWhite;
     r.fillCircle(c, rad, red);
     r.fillCircle(c, rad * 0.72, white);
     r.fillCircle(c, rad * 0.45, red);
@@ -451,8 +433,7 @@ void drawTarget(Renderer2D& r, const game::TargetState& t) {
 
 // ---- HUD --------------------------------------------------------------------------------
 std::string playerName(const Match& m, const MatchViewOptions& o, int i) {
-    if (static_cast<std::size_t>(i) < o.playerNames.size())
-        return o.playerNames[static_cast<std::size_t>(i)];
+    if (static_cast<std::size_t>(i) < o.playerNames.size()) return o.playerNames[static_cast<std::size_t>(i)];
     return defaultPlayerName(m.cannons()[static_cast<std::size_t>(i)].def.player);
 }
 
@@ -465,8 +446,7 @@ void drawWindArrow(const HudSpace& s, double cx, double y, double wind) {
     s.panel(cx - 90, y, cx + 90, y + 56);
     s.text(cx, y + 5, "WIND", kTextDim, 0.8f, 0.5f);
     // Arrow length grows with the wind up to 15 m/s.
-    const double len =
-        std::abs(wind) < 0.05 ? 0.0 : 24.0 + std::min(std::abs(wind), 15.0) / 15.0 * 100.0;
+    const double len = std::abs(wind) < 0.05 ? 0.0 : 24.0 + std::min(std::abs(wind), 15.0) / 15.0 * 100.0;
     const double sign = wind >= 0 ? 1.0 : -1.0;
     if (len > 1.0) {
         const Color c = std::abs(wind) > 8 ? Color::hex(0xff8a65) : Color::hex(0x9be7ff);
@@ -515,8 +495,8 @@ void drawHud(Renderer2D& r, const Match& m, const MatchViewOptions& o, const Pen
         s.text(24, 90, line, kTextDim, 0.8f);
     } else if (m.sandbox()) {
         s.text(24, 44, "no score, no shot budget", kGold, 1.0f);
-        std::snprintf(line, sizeof line, "shots fired %d   %zu particles   %zu blocks",
-                      m.shotsFired(), m.world().particles.count(), m.blocks().size());
+        std::snprintf(line, sizeof line, "shots fired %d   %zu particles   %zu blocks", m.shotsFired(),
+                      m.world().particles.count(), m.blocks().size());
         s.text(24, 68, line, kText, 0.9f);
     } else {
         std::snprintf(line, sizeof line, "score %d / %d", m.score(), m.maxScore());
@@ -567,12 +547,10 @@ void drawHud(Renderer2D& r, const Match& m, const MatchViewOptions& o, const Pen
         s.panel(W / 2 - 210, H / 2 - 110, W / 2 + 210, H / 2 + 80, Color::hex(0x0e1420, 0.85f));
         if (duel) {
             const int win = m.winner();
-            const std::string who =
-                win < 0 ? std::string("Draw") : playerName(m, o, win) + " wins!";
+            const std::string who = win < 0 ? std::string("Draw") : playerName(m, o, win) + " wins!";
             s.text(W / 2, H / 2 - 90, who, win < 0 ? kText : team(win), 1.8f, 0.5f);
         } else {
-            s.text(W / 2, H / 2 - 95, m.stars() > 0 ? "Level complete!" : "Out of shots", kText,
-                   1.6f, 0.5f);
+            s.text(W / 2, H / 2 - 95, m.stars() > 0 ? "Level complete!" : "Out of shots", kText, 1.6f, 0.5f);
             for (int k = 0; k < 3; ++k) {
                 const Vec2 p = s.w(W / 2 + (k - 1) * 70, H / 2 - 20);
                 star(r, p, s.metres(30), Color::hex(0x000000, 0.4f));
@@ -582,8 +560,7 @@ void drawHud(Renderer2D& r, const Match& m, const MatchViewOptions& o, const Pen
                           m.shotsFired());
             s.text(W / 2, H / 2 + 28, line, kText, 1.1f, 0.5f);
             if (m.assisted())
-                s.text(W / 2, H / 2 + 52, "assisted (full preview or hint): no third star",
-                       kTextDim, 0.9f, 0.5f);
+                s.text(W / 2, H / 2 + 52, "assisted (full preview or hint): no third star", kTextDim, 0.9f, 0.5f);
         }
     }
 }
@@ -594,15 +571,9 @@ double cannonDrawScale(const Camera& camera) {
     return std::max(1.0, 24.0 / (1.5 * camera.pixelsPerMetre));
 }
 
-Color teamColor(int index) {
-    return team(index);
-}
-Color targetRed() {
-    return kTargetRed;
-}
-Color targetWhite() {
-    return kTargetWhite;
-}
+Color teamColor(int index) { return team(index); }
+Color targetRed() { return kTargetRed; }
+Color targetWhite() { return kTargetWhite; }
 
 std::string defaultPlayerName(const std::string& player) {
     if (player == "cpu") return "Computer";
@@ -613,34 +584,24 @@ std::string defaultPlayerName(const std::string& player) {
 Camera levelCamera(const Match& m, int width, int height) {
     const game::Level& l = m.level();
     double ground = INFINITY, top = -INFINITY;
-    for (const Vec2 p : m.terrain().points())
-        ground = std::min(ground, p.y), top = std::max(top, p.y);
-    for (const auto& c : m.cannons())
-        top = std::max(top, c.def.position.y + 3.0);
-    for (const auto& t : m.targets())
-        top = std::max(top, t.position.y + t.def.radius + 2.0);
-    for (const auto& b : l.blocks)
-        top = std::max(top, b.position.y + b.size.y + 2.0);
+    for (const Vec2 p : m.terrain().points()) ground = std::min(ground, p.y), top = std::max(top, p.y);
+    for (const auto& c : m.cannons()) top = std::max(top, c.def.position.y + 3.0);
+    for (const auto& t : m.targets()) top = std::max(top, t.position.y + t.def.radius + 2.0);
+    for (const auto& b : l.blocks) top = std::max(top, b.position.y + b.size.y + 2.0);
     for (const auto& o : l.obstacles)
-        for (const Vec2 p : o.points)
-            top = std::max(top, p.y + 2.0);
+        for (const Vec2 p : o.points) top = std::max(top, p.y + 2.0);
     // The width: from the leftmost to the rightmost thing to see, with room around them,
     // within the level's bounds.
     double left = INFINITY, right = -INFINITY;
     auto see = [&](Vec2 p) { left = std::min(left, p.x), right = std::max(right, p.x); };
-    for (const auto& c : m.cannons())
-        see(c.def.position);
+    for (const auto& c : m.cannons()) see(c.def.position);
     for (const auto& t : m.targets()) {
         see(t.position);
-        for (const Vec2 p : t.def.path)
-            see(p);
+        for (const Vec2 p : t.def.path) see(p);
     }
-    for (const auto& b : l.blocks)
-        see(b.position);
-    for (const auto& r : l.ropes)
-        see(r.from), see(r.to);
-    for (const auto& b : l.blobs)
-        see(b.center);
+    for (const auto& b : l.blocks) see(b.position);
+    for (const auto& r : l.ropes) see(r.from), see(r.to);
+    for (const auto& b : l.blobs) see(b.center);
     const double margin = 0.08 * (right - left) + 8.0;
     const double xMin = std::max(l.worldMin.x, left - margin);
     const double xMax = std::min(l.worldMax.x, right + margin);
@@ -714,16 +675,9 @@ void MatchView::drawTrails(Renderer2D& r, const Match& m) {
 
 void MatchView::drawPreview(Renderer2D& r, const Match& m, const PendingAim& aim, bool full) {
     const phys::WorldDef& d = m.world().def();
-    const AimKey key{aim.angleDeg,
-                     aim.speedMps,
-                     m.wind(),
-                     d.forces.gravity.y,
-                     d.tickSeconds,
-                     m.currentPlayer(),
-                     m.shotsFired(),
-                     static_cast<int>(d.integrator),
-                     static_cast<int>(m.cannon().projectile),
-                     static_cast<int>(d.forces.drag)};
+    const AimKey key{aim.angleDeg, aim.speedMps, m.wind(), d.forces.gravity.y, d.tickSeconds,
+                     m.currentPlayer(), m.shotsFired(), static_cast<int>(d.integrator),
+                     static_cast<int>(m.cannon().projectile), static_cast<int>(d.forces.drag)};
     if (!(key == previewKey_) || full != previewFull_) {
         // The launch arc alone unless the full path is asked for (an assist).
         preview_ = full ? m.previewTrajectory(aim.angleDeg, aim.speedMps)
@@ -738,26 +692,17 @@ void MatchView::drawPreview(Renderer2D& r, const Match& m, const PendingAim& aim
         run += length(preview_[i] - preview_[i - 1]);
         if (run < next) continue;
         next = run + spacing;
-        const float fade =
-            std::max(0.25f, 1.0f - static_cast<float>(i) / static_cast<float>(preview_.size()));
+        const float fade = std::max(0.25f, 1.0f - static_cast<float>(i) / static_cast<float>(preview_.size()));
         r.point(preview_[i], 4.0f, kPreview.withAlpha(0.85f * fade));
     }
-    if (!preview_.empty() && full)
-        r.strokeCircle(preview_.back(), r.camera().metres(7.0), kPreview, 2.0f);
+    if (!preview_.empty() && full) r.strokeCircle(preview_.back(), r.camera().metres(7.0), kPreview, 2.0f);
 }
 
 void MatchView::drawHint(Renderer2D& r, const Match& m) {
     const phys::WorldDef& d = m.world().def();
-    const AimKey key{0.0,
-                     0.0,
-                     m.wind(),
-                     d.forces.gravity.y,
-                     d.tickSeconds,
-                     m.currentPlayer(),
-                     m.shotsFired(),
-                     static_cast<int>(d.integrator),
-                     static_cast<int>(m.cannon().projectile),
-                     static_cast<int>(d.forces.drag)};
+    const AimKey key{0.0, 0.0, m.wind(), d.forces.gravity.y, d.tickSeconds, m.currentPlayer(),
+                     m.shotsFired(), static_cast<int>(d.integrator),
+                     static_cast<int>(m.cannon().projectile), static_cast<int>(d.forces.drag)};
     if (!(key == hintKey_)) {
         hintKey_ = key;
         hint_.reset();
@@ -776,8 +721,8 @@ void MatchView::drawHint(Renderer2D& r, const Match& m) {
     r.line(pivot, pivot + dir * 5.0, kHint.withAlpha(0.85f), 3.0f);
     r.fillCircle(pivot + dir * 5.0, r.camera().metres(4.0), kHint);
     char text[64];
-    std::snprintf(text, sizeof text, "%s %.1f deg  %.1f m/s",
-                  hintExact_ ? "solution" : "best trial", hint_->angleDeg, hint_->speedMps);
+    std::snprintf(text, sizeof text, "%s %.1f deg  %.1f m/s", hintExact_ ? "solution" : "best trial",
+                  hint_->angleDeg, hint_->speedMps);
     r.label(pivot + dir * 5.0, text, kHint, {8.0, -8.0}, 0.85f);
 }
 
@@ -785,15 +730,12 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
     const game::CannonState& cs = m.cannon();
     const PendingAim aim = o.pending.value_or(PendingAim{cs.angleDeg, cs.speedMps});
     double groundTop = INFINITY;
-    for (const Vec2 p : m.terrain().points())
-        groundTop = std::min(groundTop, p.y);
+    for (const Vec2 p : m.terrain().points()) groundTop = std::min(groundTop, p.y);
 
     drawSky(r, m, groundTop);
     if (!lowGravity(m)) {
-        drawHills(r, groundTop - 2.0, 0.22 * (r.camera().visibleMax().y - groundTop), 0.7,
-                  kHillFar);
-        drawHills(r, groundTop - 2.0, 0.12 * (r.camera().visibleMax().y - groundTop), 2.1,
-                  kHillNear);
+        drawHills(r, groundTop - 2.0, 0.22 * (r.camera().visibleMax().y - groundTop), 0.7, kHillFar);
+        drawHills(r, groundTop - 2.0, 0.12 * (r.camera().visibleMax().y - groundTop), 2.1, kHillNear);
     }
     drawTerrain(r, m);
     if (o.effects) drawGroundMarks(r, effects_, m);
@@ -801,8 +743,7 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
     drawRopes(r, m);
     drawBlocks(r, m);
     drawBlobs(r, m);
-    for (const game::TargetState& t : m.targets())
-        drawTarget(r, t);
+    for (const game::TargetState& t : m.targets()) drawTarget(r, t);
 
     const auto shell = m.shell();
     const bool aiming = !shell && !m.over();
@@ -811,8 +752,7 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
     if (aiming && o.solutionHint) drawHint(r, m);
     for (int i = 0; i < static_cast<int>(m.cannons().size()); ++i) {
         const bool active = i == m.currentPlayer();
-        drawCannon(r, m, i,
-                   active ? aim.angleDeg : m.cannons()[static_cast<std::size_t>(i)].angleDeg,
+        drawCannon(r, m, i, active ? aim.angleDeg : m.cannons()[static_cast<std::size_t>(i)].angleDeg,
                    active);
     }
     drawLooseParticles(r, m, shell);

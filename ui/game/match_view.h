@@ -1,8 +1,8 @@
 // How a match looks: sky, terrain with its craters, water, obstacles, Box2D blocks,
 // ropes, blobs, cannons, targets, the shell and its trail, the trajectory preview, the
-// firing-solution hint, the effects (ui/game/effects_view.h), the wind and the HUD. One drawing
-// path for the window and for headless frames (`artillery run --png`, issue 6): everything goes
-// through Renderer2D, the HUD included (boxes in pixel space, text as labels that ImGui draws).
+// firing-solution hint, the effects (ui/game/effects_view.h), the wind and the HUD. One drawing path for the window and for
+// headless frames (`artillery run --png`, issue 6): everything goes through Renderer2D,
+// the HUD included (boxes in pixel space, text as labels that ImGui draws).
 //
 // The view reads the match and keeps only what a picture needs across frames (the
 // shell's trail, cached previews); it never changes the match.
@@ -38,10 +38,10 @@ struct MatchViewOptions {
     /// command while it shows); off, the preview is the launch arc only, its first
     /// kPreviewArcSeconds.
     bool fullPreview = false;
-    bool effects = true;       ///< debris, smoke, flashes, craters, splashes, shot feedback
-    bool solutionHint = false; ///< the computer's aim (aimAt) as a golden ghost barrel
-    bool hud = true;           ///< turn, wind, angle, power, shots, score, stars
-    bool trails = true;        ///< the shell's path so far
+    bool effects = true;           ///< debris, smoke, flashes, craters, splashes, shot feedback
+    bool solutionHint = false;     ///< the computer's aim (aimAt) as a golden ghost barrel
+    bool hud = true;               ///< turn, wind, angle, power, shots, score, stars
+    bool trails = true;            ///< the shell's path so far
     /// The debug view over the match: velocities, forces, closed-form ghosts, contacts,
     /// grid cells, sleeping state, models (ui/render/world_view.h).
     DebugOverlays overlays;

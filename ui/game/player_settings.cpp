@@ -18,22 +18,20 @@ namespace {
 /// More results than any levels folder holds: a hostile file cannot grow the map.
 constexpr std::size_t kMaxLevelResults = 10'000;
 
+
 std::string key(const std::string& levelFile) {
     return std::filesystem::path(levelFile).filename().string();
 }
 
 } // namespace
 
-bool PlayerSettings::record(const std::string& levelFile, int score, int stars, bool won,
-                            bool assisted) {
+bool PlayerSettings::record(const std::string& levelFile, int score, int stars, bool won, bool assisted) {
     LevelResult& r = results[key(levelFile)];
     const bool better = r.plays == 0 || score > r.bestScore || stars > r.stars || (won && !r.won) ||
                         (stars == r.stars && r.assisted && !assisted);
     // Assisted while every result at the best star count so far was.
-    if (r.plays == 0 || stars > r.stars)
-        r.assisted = assisted;
-    else if (stars == r.stars)
-        r.assisted = r.assisted && assisted;
+    if (r.plays == 0 || stars > r.stars) r.assisted = assisted;
+    else if (stars == r.stars) r.assisted = r.assisted && assisted;
     ++r.plays;
     r.bestScore = std::max(r.bestScore, score);
     r.stars = std::max(r.stars, stars);
@@ -76,9 +74,7 @@ PlayerSettings parsePlayerSettings(const std::string& file, const std::string& t
     root.integer("format", 1, 1, 1);
     const std::string difficulty = root.string("difficulty", "normal");
     const auto d = game::difficultyFromName(difficulty);
-    if (!d)
-        root.at("difficulty")
-            .fail("expected \"easy\", \"normal\" or \"hard\", got \"" + difficulty + "\"");
+    if (!d) root.at("difficulty").fail("expected \"easy\", \"normal\" or \"hard\", got \"" + difficulty + "\"");
     s.difficulty = *d;
     s.hotseat = root.boolean("hotseat", s.hotseat);
     s.trajectoryPreview = root.boolean("trajectory_preview", s.trajectoryPreview);
@@ -89,8 +85,7 @@ PlayerSettings parsePlayerSettings(const std::string& file, const std::string& t
     s.physicsPanel = root.boolean("physics_panel", s.physicsPanel);
     if (const auto draw = root.find("draw")) {
         if (!draw->isObject()) draw->fail("expected an object of draw toggles (true or false)");
-        for (auto& [name, flag] : drawFlags(s.draw))
-            *flag = draw->boolean(name, *flag);
+        for (auto& [name, flag] : drawFlags(s.draw)) *flag = draw->boolean(name, *flag);
         draw->finish();
     }
     if (const auto levels = root.find("levels")) {
@@ -99,8 +94,7 @@ PlayerSettings parsePlayerSettings(const std::string& file, const std::string& t
             levels->fail("expected at most " + std::to_string(kMaxLevelResults) + " levels");
         for (const auto& [name, value] : levels->json().items()) {
             const game::Node r(value, file, levels->path() + "." + name);
-            if (!r.isObject())
-                r.fail("expected an object with best_score, stars, plays, won, assisted");
+            if (!r.isObject()) r.fail("expected an object with best_score, stars, plays, won, assisted");
             LevelResult lr;
             lr.bestScore = static_cast<int>(r.integer("best_score", 0, 0, 1'000'000'000));
             lr.stars = static_cast<int>(r.integer("stars", 0, 0, 3));
@@ -141,15 +135,11 @@ std::string savePlayerSettings(const std::string& file, const PlayerSettings& s)
     j["screen_shake"] = s.screenShake;
     j["physics_panel"] = s.physicsPanel;
     DrawChoices draw = s.draw;
-    for (const auto& [name, flag] : drawFlags(draw))
-        j["draw"][name] = *flag;
+    for (const auto& [name, flag] : drawFlags(draw)) j["draw"][name] = *flag;
     nlohmann::json levels = nlohmann::json::object();
     for (const auto& [name, r] : s.results)
-        levels[name] = {{"best_score", r.bestScore},
-                        {"stars", r.stars},
-                        {"plays", r.plays},
-                        {"won", r.won},
-                        {"assisted", r.assisted}};
+        levels[name] = {{"best_score", r.bestScore}, {"stars", r.stars}, {"plays", r.plays},
+                        {"won", r.won},           {"assisted", r.assisted}};
     j["levels"] = levels;
     try {
         std::filesystem::create_directories(std::filesystem::path(file).parent_path());

@@ -14,9 +14,9 @@ namespace ui {
 
 struct LevelResult {
     int bestScore = 0;
-    int stars = 0;    ///< 0..3
-    int plays = 0;    ///< matches finished
-    bool won = false; ///< duel: beaten at least once
+    int stars = 0;      ///< 0..3
+    int plays = 0;      ///< matches finished
+    bool won = false;   ///< duel: beaten at least once
     /// The best stars so far came only with a learning aid (full preview or hint) in
     /// view, so they are at most two; the level select says so.
     bool assisted = false;
@@ -39,12 +39,12 @@ struct DrawChoices {
 
 struct PlayerSettings {
     game::Difficulty difficulty = game::Difficulty::Normal;
-    bool hotseat = false; ///< a duel's "cpu" cannon is played by a second person
+    bool hotseat = false;          ///< a duel's "cpu" cannon is played by a second person
     bool trajectoryPreview = true;
-    bool fullPreview = false;  ///< the whole path, not the launch arc (assisted: no third star)
-    bool solutionHint = false; ///< assisted: no third star
-    bool cameraFollow = true;  ///< the camera follows the shell and frames the impact
-    bool screenShake = true;   ///< blasts shake the view (off for comfort)
+    bool fullPreview = false;      ///< the whole path, not the launch arc (assisted: no third star)
+    bool solutionHint = false;     ///< assisted: no third star
+    bool cameraFollow = true;      ///< the camera follows the shell and frames the impact
+    bool screenShake = true;       ///< blasts shake the view (off for comfort)
     bool physicsPanel = true;
     DrawChoices draw;
     /// By level file name (not path), so results survive moving the folder.
@@ -52,8 +52,7 @@ struct PlayerSettings {
 
     /// Records a finished match; returns true when it beat the stored best (as many stars
     /// without an aid as before with one counts).
-    bool record(const std::string& levelFile, int score, int stars, bool won,
-                bool assisted = false);
+    bool record(const std::string& levelFile, int score, int stars, bool won, bool assisted = false);
     const LevelResult* result(const std::string& levelFile) const;
 };
 
