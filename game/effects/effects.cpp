@@ -67,6 +67,7 @@ void Effects::throwPiece(Vec2 at, Vec2 velocity, double radius, PieceKind kind, 
     tints_[id] = tint;
     born_[id] = world_.time();
     ++thrown_;
+    ++thrownOf_[static_cast<std::size_t>(kind)];
 }
 
 void Effects::blast(Vec2 at, double radius, double impulse, std::uint8_t tint) {

@@ -108,6 +108,7 @@ class Effects {
     double shake() const { return shake_; }
     /// Pieces thrown since the last reset (for tests and the bench).
     std::size_t thrown() const { return thrown_; }
+    std::size_t thrown(PieceKind kind) const { return thrownOf_[static_cast<std::size_t>(kind)]; }
     /// The time of the effects' own world (s since the reset).
     double time() const { return world_.time(); }
     /// Throws a blast's debris, dust, smoke and flash at `at` (observe() does this for
@@ -141,6 +142,7 @@ class Effects {
     bool started_ = false;
     double shake_ = 0.0;
     std::size_t thrown_ = 0;
+    std::size_t thrownOf_[4] = {};
     std::string firedAmmo_; ///< what the last shot fired (a blast's impulse)
     // The shell as last seen: for splashes (a crossing of the water line).
     bool shellSeen_ = false;

@@ -173,6 +173,49 @@ TEST(Effects, AreTheSameForTheSameMatch) {
     EXPECT_EQ(a, run());
 }
 
+// A shell that enters the water splashes where it crossed the water line: a ring there,
+// and spray thrown up from it.
+TEST(Effects, AShellEnteringTheWaterSplashes) {
+    Level l = level("08_water.json");
+    l.physics.windMin = l.physics.windMax = 0.0;
+    ASSERT_TRUE(l.physics.water);
+    Match m(l);
+    Effects fx;
+    ASSERT_EQ(m.apply(cmd(CommandKind::Select, 0.0, "wooden-ball")), ""); // floats, does not burst
+    shoot(m, 45.0, 28.0);
+    bool rippled = false;
+    for (int k = 0; k < 1200 && !rippled; ++k) {
+        m.step();
+        fx.observe(m);
+        rippled = !fx.ripples().empty();
+    }
+    ASSERT_TRUE(rippled) << "the ball reached the water";
+    EXPECT_NEAR(fx.ripples()[0].where.y, l.physics.waterLevel, 1e-9);
+    EXPECT_GT(fx.thrown(PieceKind::Spray), 10u);
+    EXPECT_EQ(fx.thrown(PieceKind::Soil), 0u);
+}
+
+// Blocks that topple, or are hit hard, throw splinters of their material: the castle's
+// golden replay knocks blocks over.
+TEST(Effects, ToppledBlocksSplinter) {
+    const std::string file = (kSource / "tests/replays/05_castle.replay.json").string();
+    const Replay r = loadReplay(file);
+    Match m(levelForReplay(file, r));
+    Effects fx;
+    std::size_t next = 0;
+    while (m.tick() < r.ticks) {
+        while (next < r.commands.size() && r.commands[next].tick <= m.tick())
+            m.apply(r.commands[next++]);
+        m.step();
+        fx.observe(m);
+    }
+    int toppled = 0;
+    for (const GameEvent& e : m.events())
+        toppled += e.kind == EventKind::Toppled;
+    ASSERT_GT(toppled, 0) << "the replay topples blocks";
+    EXPECT_GE(fx.thrown(PieceKind::Splinter), static_cast<std::size_t>(10 * toppled));
+}
+
 TEST(ShotFeedback, MissTextIsExact) {
     EXPECT_EQ(missText(3.2, true), "missed by 3.2 m, long");
     EXPECT_EQ(missText(3.24, false), "missed by 3.2 m, short");

@@ -356,8 +356,11 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
     req.settingsChanged |= ImGui::Checkbox("preview (P)", &settings.trajectoryPreview);
     ImGui::SameLine();
     req.settingsChanged |= ImGui::Checkbox("hint (H)", &settings.solutionHint);
-    ImGui::SameLine();
-    req.settingsChanged |= ImGui::Checkbox("full (V)", &settings.fullPreview);
+    req.settingsChanged |= ImGui::Checkbox("full preview (V)", &settings.fullPreview);
+    if (settings.fullPreview || settings.solutionHint) {
+        ImGui::SameLine();
+        ImGui::TextColored(kDimText, "assisted: 2 stars at most");
+    }
     if (m.level().mode == game::Mode::Duel)
         ImGui::TextColored(kDimText, "%s", hotseatInUse ? "hotseat: two players" :
                                                (std::string("computer: ") + game::difficultyName(inUse)).c_str());
