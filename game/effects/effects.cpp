@@ -116,10 +116,10 @@ void Effects::splash(Vec2 at, double speed) {
     ripples_.push_back({at, 0.0, std::min(2.0, speed / 20.0)});
     if (!def_.debris) return;
     // Spray rises at a fraction of the entry speed, steeply, both ways.
-    const int n = 14 + static_cast<int>(std::min(20.0, speed));
+    const int n = 24 + static_cast<int>(std::min(24.0, speed));
     for (int i = 0; i < n; ++i) {
         const double a = std::numbers::pi * (0.3 + 0.4 * unit());
-        const double v = std::min(14.0, 0.3 * speed + 2.0) * (0.4 + 0.7 * unit());
+        const double v = std::min(16.0, 0.5 * speed + 3.0) * (0.4 + 0.7 * unit());
         throwPiece(at + Vec2{(unit() - 0.5) * 0.8, 0.05}, Vec2{std::cos(a), std::sin(a)} * v,
                    0.05 + 0.05 * unit(), PieceKind::Spray, 4);
     }

@@ -16,7 +16,8 @@ const Color kScorch = Color::hex(0x15100c, 0.85f);
 const Color kFlashCore = Color::hex(0xfff6d8);
 const Color kFlashGlow = Color::hex(0xffa630);
 const Color kSmoke = Color::hex(0x6b6b6b);
-const Color kSpray = Color::hex(0xd8f0ff);
+const Color kSpray = Color::hex(0xffffff);
+const Color kSprayEdge = Color::hex(0x1d6fb0); ///< a darker rim, so spray reads over sky and water
 const Color kGold = Color::hex(0xffc93c);
 const Color kMissText = Color::hex(0xffffff);
 /// Colours by tint: earth, wood, stone, steel, water.
@@ -79,6 +80,11 @@ void drawEffectsLayer(Renderer2D& r, const Effects& fx) {
             r.line(p - d, p + d, tintColor(fx.tint(id)), 2.0f);
             continue;
         }
+        if (kind == game::PieceKind::Spray) {
+            const double e = h + px;
+            const Vec2 rim[] = {p + Vec2{-e, -e}, p + Vec2{e, -e}, p + Vec2{e, e}, p + Vec2{-e, e}};
+            r.fillConvex(rim, kSprayEdge);
+        }
         Color c = kind == game::PieceKind::Spray ? kSpray : tintColor(fx.tint(id));
         if (kind == game::PieceKind::Dust) c = Color::hex(0xa08c70, 0.7f);
         const Vec2 q[] = {p + Vec2{-h, -h}, p + Vec2{h, -h}, p + Vec2{h, h}, p + Vec2{-h, h}};
@@ -92,8 +98,12 @@ void drawEffectsLayer(Renderer2D& r, const Effects& fx) {
     }
     for (const game::Ripple& w : fx.ripples()) {
         const double t = w.age / 1.2;
-        r.strokeCircle(w.where, (0.5 + 2.5 * t) * w.strength + 0.3,
-                       kSpray.withAlpha(static_cast<float>(0.9 * (1 - t))), 2.0f);
+        // Never under a few pixels, so a splash seen from far is still a splash.
+        const double radius = (0.5 + 2.5 * t) * w.strength + 0.3;
+        const auto minPx = static_cast<float>(5.0 + 18.0 * t);
+        const auto fade = static_cast<float>(0.9 * (1 - t));
+        r.strokeCircle(w.where, radius, kSprayEdge.withAlpha(fade), 4.0f, minPx);
+        r.strokeCircle(w.where, radius, kSpray.withAlpha(fade), 2.0f, minPx);
     }
 }
 
