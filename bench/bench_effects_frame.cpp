@@ -2,7 +2,8 @@
 // (OSMesa, llvmpipe) of the castle level a few ticks after a cannonball burst, framed as
 // the camera frames an impact, drawn with the effects (debris, dust, splinters, smoke,
 // flash, crater marks, shot feedback) and without them, alternately, N times each; prints
-// the medians side by side, their ratio (the budget: at most 1.2), the pieces in the air
+// the medians side by side, their ratio (the budget: at most 1.2), the opening frame of
+// the level (home framing, before any shot) for reference, the pieces in the air
 // and the load average before and after (the machine may be shared: compare ratios).
 // Also the effects' own cost per tick (Effects::observe), which the window pays per tick.
 //
@@ -126,12 +127,19 @@ int main(int argc, char** argv) {
     cam.pixelsPerMetre *= 2.2; // the rig's impact zoom
     cam.center = burst->where + phys::Vec2{0.0, cam.metres(0.15 * H)};
 
-    auto draw = [&](bool effects) {
+    // The level as it opens, framed whole: the plain frame of a game before any shot.
+    const game::Match opening(level);
+    ui::MatchView openingView;
+    const ui::Camera home = ui::levelCamera(opening, W, H);
+    auto draw = [&](bool effects, bool atOpening = false) {
         ui::MatchViewOptions o;
         o.effects = effects;
         const auto t0 = std::chrono::steady_clock::now();
         imgui->newFrame(1.0 / 60.0);
-        ui::drawMatchFrame(*renderer, view, m, cam, o);
+        if (atOpening)
+            ui::drawMatchFrame(*renderer, openingView, opening, home, o);
+        else
+            ui::drawMatchFrame(*renderer, view, m, cam, o);
         imgui->drawLabels(renderer->labels());
         imgui->render();
         context->present(); // waits until the frame is drawn
@@ -140,10 +148,11 @@ int main(int argc, char** argv) {
     };
     const std::string loadBefore = loadAverage();
     draw(true), draw(false); // warm the caches and the shader
-    std::vector<double> plain, blast;
+    std::vector<double> plain, blast, opened;
     for (int i = 0; i < frames; ++i) {
         blast.push_back(draw(true));
         plain.push_back(draw(false));
+        opened.push_back(draw(true, true));
     }
     const std::string loadAfter = loadAverage();
     const double p = median(plain), b = median(blast);
@@ -155,6 +164,9 @@ int main(int argc, char** argv) {
     std::printf(
         "plain frame median %.2f ms, blast frame median %.2f ms, ratio %.3f (budget 1.20: %s)\n", p,
         b, b / p, b <= 1.2 * p ? "met" : "NOT met");
+    std::printf(
+        "the level as it opens (home framing, no shot yet) median %.2f ms; blast / that %.3f\n",
+        median(opened), b / median(opened));
     std::printf("effects per tick (Effects::observe) mean %.1f us over %d ticks\n",
                 observed ? observeUs / observed : 0.0, observed);
     std::printf("load average before %s, after %s\n", loadBefore.c_str(), loadAfter.c_str());
