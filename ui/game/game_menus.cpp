@@ -357,10 +357,7 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
     ImGui::SameLine();
     req.settingsChanged |= ImGui::Checkbox("hint (H)", &settings.solutionHint);
     req.settingsChanged |= ImGui::Checkbox("full preview (V)", &settings.fullPreview);
-    if (settings.fullPreview || settings.solutionHint) {
-        ImGui::SameLine();
-        ImGui::TextColored(kDimText, "assisted: 2 stars at most");
-    }
+    if (settings.fullPreview || settings.solutionHint) ImGui::TextColored(kDimText, "assisted: 2 stars at most");
     if (m.level().mode == game::Mode::Duel)
         ImGui::TextColored(kDimText, "%s", hotseatInUse ? "hotseat: two players" :
                                                (std::string("computer: ") + game::difficultyName(inUse)).c_str());
