@@ -109,6 +109,8 @@ class Effects {
     /// Pieces thrown since the last reset (for tests and the bench).
     std::size_t thrown() const { return thrown_; }
     std::size_t thrown(PieceKind kind) const { return thrownOf_[static_cast<std::size_t>(kind)]; }
+    /// The last tick's profile of the effects' own world (which model moved each piece).
+    const phys::StepProfile& profile() const { return world_.profile(); }
     /// The time of the effects' own world (s since the reset).
     double time() const { return world_.time(); }
     /// Throws a blast's debris, dust, smoke and flash at `at` (observe() does this for

@@ -100,6 +100,9 @@ TEST(Effects, DebrisFollowsTheClosedForm) {
             EXPECT_NEAR(ps.py[i], start[j].y + start[j].vy * t + 0.5 * g * t * t, 1e-9);
             EXPECT_NEAR(ps.vy[i], start[j].vy + g * t, 1e-9);
         }
+        // Every piece on the closed form, none integrated.
+        EXPECT_EQ(fx.profile().closedForm, static_cast<int>(n));
+        EXPECT_EQ(fx.profile().integrated, 0);
     }
     EXPECT_EQ(m.world().def().forces.gravity.y, g);
 }
