@@ -107,6 +107,25 @@ TEST(Effects, DebrisFollowsTheClosedForm) {
     EXPECT_EQ(m.world().def().forces.gravity.y, g);
 }
 
+// The shake is the blast's energy (impulse times radius) relative to a cannonball's
+// (150 N s over 3 m), at most 1, halving every 0.12 s.
+TEST(Effects, ShakeScalesWithTheBlastAndDecays) {
+    Match m(level("01_earth_basics.json"));
+    Effects fx;
+    m.step();
+    fx.observe(m);
+    fx.blast({120.0, 80.0}, 1.5, 75.0, 0);
+    EXPECT_DOUBLE_EQ(fx.shake(), 0.25);
+    fx.blast({120.0, 80.0}, 3.0, 300.0, 0);
+    EXPECT_DOUBLE_EQ(fx.shake(), 1.0) << "capped";
+    const double dt = m.world().def().tickSeconds;
+    for (int n = 1; n <= 30; ++n) {
+        m.step();
+        fx.observe(m);
+        EXPECT_NEAR(fx.shake(), std::exp2(-n * dt / 0.12), 1e-12);
+    }
+}
+
 // What comes down on the ground stays there as soil, on the ground's surface.
 TEST(Effects, SoilSettlesOnTheGround) {
     Match m(level("01_earth_basics.json"));
