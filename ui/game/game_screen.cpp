@@ -10,6 +10,7 @@
 
 #include "game/files/json_reader.h"
 #include "ui/game/match_frame.h"
+#include "ui/game/target_inset.h"
 #include "ui/game/settings_commands.h"
 #include "ui/platform/sdl_window.h"
 #include "ui/render/gl.h"
@@ -446,12 +447,14 @@ void GameScreen::drawPlaying() {
         o.charge = aim_.chargeFraction();
         o.banner = liveBanner(m);
     }
-    drawMatchFrame(renderer_, matchView_, m, shakenCamera(), o);
+    const Camera shown = shakenCamera();
+    drawMatchFrame(renderer_, matchView_, m, shown, o);
     if (!viewer_ && session_) { // the rope being drawn, the hand and what it holds
         sandboxTools_.draw(renderer_, m);
         statsPanel_.drawWorld(renderer_, m);
         renderer_.flush();
     }
+    if (const auto inset = targetInset(m, shown)) drawTargetInset(renderer_, matchView_, m, shown, *inset, o);
 }
 
 void GameScreen::drawPanels() {

@@ -99,15 +99,31 @@ Renderer2D::~Renderer2D() {
 
 void Renderer2D::begin(const Camera& camera) {
     camera_ = camera;
+    originX_ = originY_ = 0;
     vertices_.clear();
     labels_.clear();
     stats_ = {};
 }
 
+void Renderer2D::beginInset(const Camera& camera, int originXPx, int originYPx) {
+    flush();
+    camera_ = camera;
+    originX_ = originXPx;
+    originY_ = originYPx;
+    frameLabels_ = labels_.size();
+}
+
+void Renderer2D::endInset(const Camera& frame) {
+    flush();
+    labels_.resize(std::min(labels_.size(), frameLabels_));
+    camera_ = frame;
+    originX_ = originY_ = 0;
+}
+
 void Renderer2D::flush() {
     stats_.vertices = vertices_.size();
     if (vertices_.empty()) return;
-    gl::fn.Viewport(0, 0, camera_.width, camera_.height);
+    gl::fn.Viewport(originX_, originY_, camera_.width, camera_.height);
     gl::fn.Enable(GL_BLEND);
     gl::fn.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     gl::fn.Disable(GL_DEPTH_TEST);

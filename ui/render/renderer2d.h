@@ -55,6 +55,13 @@ class Renderer2D final : public phys::DebugDraw {
     const Camera& camera() const { return camera_; }
     /// Draws everything added since the last flush (keeps the labels).
     void flush();
+    /// Starts drawing into a rectangle of the framebuffer (`camera`'s size, its lower-left
+    /// corner at `originPx` in GL's bottom-up pixels) over what is there, keeping the
+    /// frame's labels: a picture in the picture. endInset() drops the labels the inset
+    /// added (they are placed for the inset's pixels) and draws full-frame again through
+    /// `frame`.
+    void beginInset(const Camera& camera, int originXPx, int originYPx);
+    void endInset(const Camera& frame);
 
     // Primitives. Widths and minimum radii are in pixels so they read the same at any zoom.
     void line(Vec2 a, Vec2 b, Color color, float widthPx = 1.5f);
@@ -97,6 +104,8 @@ class Renderer2D final : public phys::DebugDraw {
     void quad(Vec2 a, Vec2 b, Vec2 c, Vec2 d, Color color);
 
     Camera camera_;
+    int originX_ = 0, originY_ = 0; ///< the viewport's lower-left corner, px (insets)
+    std::size_t frameLabels_ = 0;   ///< labels kept across an inset
     std::vector<Vertex> vertices_;
     std::vector<Label> labels_;
     std::vector<Vec2> scratch_;

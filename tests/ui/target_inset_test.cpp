@@ -1,0 +1,75 @@
+// The target close-up: it frames what the player aims at, only while the main view shows
+// it too small to read. Camera arithmetic only; no GL is needed.
+#include "game/level.h"
+#include "game/match.h"
+#include "ui/game/match_view.h"
+#include "ui/game/target_inset.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace {
+
+using phys::Vec2;
+
+std::string sourceDir() {
+    return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path().string();
+}
+
+bool inside(const ui::Camera& c, Vec2 p) {
+    const Vec2 lo = c.visibleMin(), hi = c.visibleMax();
+    return p.x >= lo.x - 1e-9 && p.x <= hi.x + 1e-9 && p.y >= lo.y - 1e-9 && p.y <= hi.y + 1e-9;
+}
+
+TEST(TargetInset, FramesTheCastleWhenTheLevelViewShowsItSmall) {
+    const game::Match m(game::loadLevel(sourceDir() + "/levels/05_castle.json"));
+    const ui::Camera home = ui::levelCamera(m, 1280, 720);
+    const auto box = ui::aimedAtBox(m);
+    ASSERT_TRUE(box);
+    // The three marked blocks stand at x = 150, 165 and 176 m; the towers and the hall
+    // they stand on are taken in with them.
+    EXPECT_LE(box->first.x, 149.5);
+    EXPECT_GE(box->second.x, 176.5);
+    EXPECT_NEAR(box->first.y, 0.0, 1e-2); // the castle stands on the ground at y = 0
+    const double shownPx = (box->second.y - box->first.y) * home.pixelsPerMetre;
+    ASSERT_LT(shownPx, ui::TargetInsetDef{}.readablePx);
+
+    const auto inset = ui::targetInset(m, home);
+    ASSERT_TRUE(inset);
+    EXPECT_TRUE(inside(inset->camera, box->first));
+    EXPECT_TRUE(inside(inset->camera, box->second));
+    EXPECT_GT(inset->camera.pixelsPerMetre, 1.5 * home.pixelsPerMetre);
+    // In the top right corner, on the screen.
+    EXPECT_GE(inset->cornerPx.x, 0.5 * home.width);
+    EXPECT_LE(inset->cornerPx.x + inset->camera.width, home.width);
+    EXPECT_LE(inset->cornerPx.y + inset->camera.height, 0.5 * home.height);
+}
+
+TEST(TargetInset, HidesOnceTheMainViewShowsTheTargetsReadable) {
+    const game::Match m(game::loadLevel(sourceDir() + "/levels/05_castle.json"));
+    ui::Camera close = ui::levelCamera(m, 1280, 720);
+    const auto box = ui::aimedAtBox(m);
+    ASSERT_TRUE(box);
+    close.pixelsPerMetre = ui::TargetInsetDef{}.readablePx / (box->second.y - box->first.y);
+    EXPECT_FALSE(ui::targetInset(m, close));
+    close.pixelsPerMetre *= 0.99;
+    EXPECT_TRUE(ui::targetInset(m, close));
+}
+
+TEST(TargetInset, InADuelFramesTheOtherCannon) {
+    const game::Match m(game::loadLevel(sourceDir() + "/levels/10_duel.json"));
+    const auto box = ui::aimedAtBox(m);
+    ASSERT_TRUE(box);
+    const Vec2 mine = m.cannon().def.position;
+    for (const game::CannonState& c : m.cannons()) {
+        const Vec2 p = c.def.position;
+        const bool framed = p.x >= box->first.x && p.x <= box->second.x && p.y >= box->first.y &&
+                            p.y <= box->second.y;
+        EXPECT_EQ(framed, c.def.player != m.cannon().def.player) << "cannon at x = " << p.x;
+    }
+    EXPECT_FALSE(mine.x >= box->first.x && mine.x <= box->second.x);
+}
+
+} // namespace

@@ -1,0 +1,112 @@
+#include "ui/game/target_inset.h"
+
+#include "game/match.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace ui {
+
+namespace {
+
+struct Box {
+    Vec2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+    bool empty() const { return lo.x > hi.x; }
+    void add(Vec2 p, double r = 0.0) {
+        lo = {std::min(lo.x, p.x - r), std::min(lo.y, p.y - r)};
+        hi = {std::max(hi.x, p.x + r), std::max(hi.y, p.y + r)};
+    }
+    void add(Vec2 p, Vec2 half) {
+        lo = {std::min(lo.x, p.x - half.x), std::min(lo.y, p.y - half.y)};
+        hi = {std::max(hi.x, p.x + half.x), std::max(hi.y, p.y + half.y)};
+    }
+    bool overlaps(Vec2 p, Vec2 half) const {
+        return p.x + half.x >= lo.x && p.x - half.x <= hi.x && p.y + half.y >= lo.y &&
+               p.y - half.y <= hi.y;
+    }
+};
+
+/// Half extents of the axis-aligned box around a block turned by its body's angle.
+Vec2 blockHalf(const game::Match& m, const game::BlockState& b) {
+    const double a = m.rigid().state(b.body).angle;
+    const double c = std::abs(std::cos(a)), s = std::abs(std::sin(a));
+    const Vec2 h = 0.5 * b.def.size;
+    return {c * h.x + s * h.y, s * h.x + c * h.y};
+}
+
+} // namespace
+
+std::optional<std::pair<Vec2, Vec2>> aimedAtBox(const game::Match& m) {
+    Box box;
+    for (const game::TargetState& t : m.targets())
+        if (!t.hit) box.add(t.position, t.def.radius);
+    for (const game::BlockState& b : m.blocks())
+        if (b.def.target && !b.toppled) box.add(m.rigid().state(b.body).position, blockHalf(m, b));
+    for (const game::BlobState& b : m.blobs())
+        if (b.def.target && !b.toppled) box.add(m.world().particles.position(b.center), b.def.radius);
+    for (std::size_t i = 0; i < m.cannons().size(); ++i) {
+        const game::CannonState& c = m.cannons()[i];
+        const bool opponent = c.def.player != m.cannon().def.player;
+        if (m.level().mode == game::Mode::Duel && opponent && c.hitPoints > 0)
+            box.add(c.def.position, game::kCannonRadius);
+    }
+    if (box.empty()) return std::nullopt;
+    // The structure the targets stand in reads as one thing: take in every block that
+    // touches what is framed so far (a tower's plain blocks around its marked ones).
+    const Box marked = box;
+    for (const game::BlockState& b : m.blocks()) {
+        const Vec2 p = m.rigid().state(b.body).position;
+        Box near = marked;
+        near.lo = near.lo - Vec2{6.0, 6.0};
+        near.hi = near.hi + Vec2{6.0, 6.0};
+        if (near.overlaps(p, blockHalf(m, b))) box.add(p, blockHalf(m, b));
+    }
+    return std::pair{box.lo, box.hi};
+}
+
+std::optional<TargetInset> targetInset(const game::Match& m, const Camera& screen,
+                                       const TargetInsetDef& def) {
+    const auto aimed = aimedAtBox(m);
+    if (!aimed) return std::nullopt;
+    const auto [lo, hi] = *aimed;
+    // Shown readable already: the main view's own picture of it is tall enough.
+    const double shownPx = std::max(hi.y - lo.y, 1.0) * screen.pixelsPerMetre;
+    if (shownPx >= def.readablePx) return std::nullopt;
+    TargetInset inset;
+    const int w = static_cast<int>(std::lround(def.widthFraction * screen.width));
+    const int h = static_cast<int>(std::lround(w * 9.0 / 16.0));
+    const Vec2 margin{def.marginM, def.marginM};
+    inset.camera = Camera::framing(lo - margin, hi + margin, w, h);
+    inset.cornerPx = {screen.width - def.rightPx - w, def.topPx};
+    return inset;
+}
+
+void drawTargetInset(Renderer2D& r, MatchView& view, const game::Match& m, const Camera& screen,
+                     const TargetInset& inset, MatchViewOptions o) {
+    o.hud = false;
+    o.trajectoryPreview = false;
+    o.solutionHint = false;
+    o.pending.reset();
+    o.charge.reset();
+    o.banner.clear();
+    const int x = static_cast<int>(std::lround(inset.cornerPx.x));
+    const int yUp = screen.height - static_cast<int>(std::lround(inset.cornerPx.y)) -
+                    inset.camera.height; // GL counts rows from the bottom
+    r.beginInset(inset.camera, x, yUp);
+    view.draw(r, m, o);
+    r.endInset(screen);
+    // A frame around it, and how far it is from the cannon that fires now.
+    const Vec2 a = screen.toWorld(inset.cornerPx);
+    const Vec2 b = screen.toWorld(inset.cornerPx + Vec2{static_cast<double>(inset.camera.width),
+                                                         static_cast<double>(inset.camera.height)});
+    const Vec2 corners[4] = {{a.x, a.y}, {b.x, a.y}, {b.x, b.y}, {a.x, b.y}};
+    r.polyline(corners, Color::hex(0x1b2433, 0.9f), 3.0f, true);
+    r.flush();
+    const Vec2 centre = 0.5 * (inset.camera.visibleMin() + inset.camera.visibleMax());
+    char text[64];
+    std::snprintf(text, sizeof text, "target  %.0f m", std::abs(centre.x - m.cannon().def.position.x));
+    r.screenLabel(inset.cornerPx + Vec2{8.0, 6.0}, text, Color::hex(0xffffff, 0.95f), 0.9f);
+}
+
+} // namespace ui
