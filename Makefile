@@ -51,7 +51,7 @@ charts: build
 clean:
 	rm -rf $(BUILD)
 
-# --- Robustness (issue 8) -----------------------------------------------------------
+# --- Robustness -----------------------------------------------------------
 # make sanitize: the whole suite built with AddressSanitizer + UndefinedBehaviorSanitizer,
 # floating-point exceptions trapped in the physics tests (ARTILLERY_TRAP_FP).
 SAN_BUILD ?= build-asan

@@ -1,5 +1,5 @@
 // bench_soak: one simulated hour (by default) at the game tick, to show that nothing
-// drifts, blows up or leaks over a long session (issue 8). It runs, side by side:
+// drifts, blows up or leaks over a long session. It runs, side by side:
 //
 //   busy          a dissipative game-like scene (a particle gas settling into a pile,
 //                 springs, Box2D crates coupled to the particles, resting contact, sleep):

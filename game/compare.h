@@ -1,4 +1,4 @@
-// Compare (issue 5, "Live controls"): the same shot fired with every integrator at once,
+// Compare: the same shot fired with every integrator at once,
 // each path against the reference, with its error where it comes back down to the
 // launch height.
 //

@@ -1,4 +1,4 @@
-// Watching a replay (issues 5 and 6): a hotseat Session fed with the replay's commands as
+// Watching a replay: a hotseat Session fed with the replay's commands as
 // their ticks come round, so the match shown is the recorded one. It steps, seeks either
 // way and can be taken over: the session then plays on live, its recording holding the
 // commands up to that tick, a new replay branching from there.

@@ -1,5 +1,5 @@
 // Conserved quantities and a state hash: what tests, the guard and the stats panel read.
-// Below them, what the debug view draws (issue 5, "Draw" controls): net forces, the
+// Below them, what the debug view draws (the "Draw" controls): net forces, the
 // closed-form reference of integrated flights, contacts, the broad-phase grid's occupied
 // cells and the model each particle is in, computed here so the picture is testable
 // without a renderer (ui/render/world_view.h draws them through DebugDraw).

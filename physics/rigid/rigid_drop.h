@@ -1,6 +1,6 @@
 // The rigid drop experiment: a Box2D circle dropped on static terrain, reporting each
 // bounce's apex, so `artillery drop --model rigid` can compare Box2D with the exact
-// e^(2k) H of the particle layer (issue 3). Shared by the verb, the tests and README.
+// e^(2k) H of the particle layer. Shared by the verb, the tests and README.
 #pragma once
 
 #include "physics/rigid/rigid_types.h"

@@ -1,4 +1,4 @@
-# artillery run --png: frames drawn headlessly with the window's drawing code (issue 6).
+# artillery run --png: frames drawn headlessly with the window's drawing code.
 # The run must succeed and say it rendered; tests/ui/run_png.cmake also checks the files.
 cli_test(run_png 0 "Earth basics: 60 ticks.*rendering"
          "run;${PROJECT_SOURCE_DIR}/levels/01_earth_basics.json;--ticks;60;--png;${CMAKE_CURRENT_BINARY_DIR}/run_png;--every;30")

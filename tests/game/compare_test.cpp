@@ -1,4 +1,4 @@
-// Compare (issue 5): every integrator fired with the same shot, measured at the landing
+// Compare: every integrator fired with the same shot, measured at the landing
 // against the closed form (gravity alone) or fine RK4 (drag, wind).
 #include "game/compare.h"
 

@@ -1,4 +1,4 @@
-// Live controls as settings (issue 5): each projectile's restitution preset, the
+// Live controls as settings: each projectile's restitution preset, the
 // material pair table, the contact model and continuous detection, set by `set`
 // commands in a match. Checked against the physics they stand for: a drop rebounds to
 // e^2 H (notes 001: e = sqrt(h/H)), a penalty contact sinks as its spring and damper

@@ -171,7 +171,7 @@ TEST(ComputerPlayer, TrialShotsFindTheTargetWithoutError) {
     EXPECT_LT(aim.missM, 1.0) << "after " << aim.trials << " trial shots";
 }
 
-// Issue 4: the castle falls to a heavy shot and to no light one. Both shots take the same
+// The castle falls to a heavy shot and to no light one. Both shots take the same
 // path (aimed by trial shots with the cannonball); only the projectile differs.
 TEST(Match, CastleFallsToAHeavyShotAndToNoLightOne) {
     auto shoot = [](const std::string& projectile) {

@@ -1,4 +1,4 @@
-// The replay viewer's engine (issues 5 and 6): seeking either way lands on the very state
+// The replay viewer's engine: seeking either way lands on the very state
 // straight play has at that tick; taking over keeps exactly the commands before the
 // tick and plays on as a replay that verifies; a changed replay is reported.
 #include "game/replay_player.h"

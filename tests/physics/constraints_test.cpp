@@ -66,7 +66,7 @@ TEST(Rods, RopeKeepsItsLengthWithinATenthOfAPercent) {
         }
         std::printf("%s: 20-rod rope, worst link error %.2e, worst rope-length error %.2e\n",
                     info(m).name, worstLink, worstRope);
-        EXPECT_LE(worstLink, 1e-3) << info(m).name; // the 0.1 %
+        EXPECT_LE(worstLink, 1e-3) << info(m).name; // 0.1 % of the link length
         EXPECT_LE(worstLink, 2.0 * d.collision.constraintTolerance)
             << info(m).name; // what CG gives
         EXPECT_LE(worstRope, 1e-3) << info(m).name;

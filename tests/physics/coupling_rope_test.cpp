@@ -1,4 +1,4 @@
-// Bodies on ropes and springs, and ropes holding bodies (issue 4): the particle layer
+// Bodies on ropes and springs, and ropes holding bodies: the particle layer
 // carries a Box2D body's weight. Checked against statics (where a crate must come to
 // rest on an inextensible rope, how far springs compress under a load) and against the
 // pendulum's period 2 pi sqrt(L/g), with momentum exact across the rod passes.

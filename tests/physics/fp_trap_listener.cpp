@@ -1,4 +1,4 @@
-// Floating-point exceptions trapped in the physics tests (issue 8): with
+// Floating-point exceptions trapped in the physics tests: with
 // ARTILLERY_TRAP_FP set (make sanitize sets it), every physics test runs with invalid
 // operations, division by zero and overflow raising SIGFPE, so a NaN or infinity born
 // anywhere in the physics stops the test at the line that made it.

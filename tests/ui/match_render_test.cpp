@@ -1,4 +1,4 @@
-// Headless pictures of a match (issue 6): a fixed tick of levels/01_earth_basics.json
+// Headless pictures of a match: a fixed tick of levels/01_earth_basics.json
 // drawn by MatchView (the window's drawing code, HUD included) matches the stored
 // reference within a tolerance that still catches a missing object, and cannons and
 // targets land on the pixels the camera maps them to.

@@ -1,4 +1,4 @@
-// The debug view's overlays (issue 5, "Draw" controls), checked through a recorder
+// The debug view's overlays (the "Draw" controls), checked through a recorder
 // implementation of phys::DebugDraw: exactly what drawOverlays emits, where and in which
 // colour. No GL is needed; the picture itself is checked by ui.cli.play_draw_toggles_png.
 #include "physics/rigid/rigid_world.h"

@@ -1,4 +1,4 @@
-// The built-in demo scene, in physics terms only, until levels exist (issue 5): a
+// The built-in demo scene, in physics terms only, until levels exist: a
 // cannon that fires a shell every few seconds (with a drag-free reference shell beside
 // it whenever air drag is on, so the cost of drag is visible), and a spring chain
 // hanging from a gallows. There are no collisions yet: a shell that reaches the ground

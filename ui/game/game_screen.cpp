@@ -157,7 +157,7 @@ game::SessionOptions GameScreen::liveOptions(const std::string& recordFile) cons
     game::SessionOptions o;
     o.difficulty = settings_.difficulty;
     o.cpuSeed = level_.seed;
-    // Every match is recorded (issue 6); the session saves at each turn's end.
+    // Every match is recorded; the session saves at each turn's end.
     o.recordFile = recordFile;
     return o;
 }

@@ -1,10 +1,10 @@
-// The game in a window (issue 5): a level select screen, then a level played through a
+// The game in a window: a level select screen, then a level played through a
 // game::Session under a fixed-step clock. Every change the player makes (aim, power,
 // projectile, fire, end turn, physics settings) is a Command submitted to the session,
 // so the window drives the match exactly as a script or a replay does; wall time only
 // feeds the clock and shapes gestures (charging), never the simulation.
 //
-// Replays (issue 6): the screen also watches a recorded game (ReplayViewer, from
+// Replays: the screen also watches a recorded game (ReplayViewer, from
 // `--replay FILE` or the Replays list), drawn on the same path as live play, and turns
 // it into a live game at any moment ("take over": a new replay branches from there).
 // A live game rewinds the same way (Session::rewindTo): back to any earlier tick, and
@@ -93,7 +93,7 @@ class GameScreen final : public Screen {
     std::string recordFileFor(const std::string& name) const;
     /// The match on screen: the one played or the one watched (null on the menus alone).
     const game::Match* shownMatch() const;
-    // Replays and rewinding (issue 6).
+    // Replays and rewinding.
     void openReplay(const std::string& file);
     void showReplays();
     void takeOverReplay();
@@ -151,7 +151,7 @@ class GameScreen final : public Screen {
     MatchView matchView_;
     AimInput aim_;
     SandboxTools sandboxTools_;
-    StatsPanel statsPanel_; ///< Compare, energy and momentum, Charts (issue 5)
+    StatsPanel statsPanel_; ///< Compare, energy and momentum, Charts
     Camera camera_;
     game::CameraRig rig_; ///< follows the shell, frames the impact, returns
     bool cameraMoved_ = false;

@@ -1,5 +1,5 @@
 // The one path a match frame takes to the framebuffer, in the window and headless
-// (issue 6: "the very same drawing code"): clear, draw the match through MatchView, flush.
+// (the very same drawing code for both): clear, draw the match through MatchView, flush.
 // Text labels are left in the renderer for the caller's ImGui layer, which the window
 // also uses for its panels.
 #pragma once

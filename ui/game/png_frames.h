@@ -1,4 +1,4 @@
-// The frame sink of `artillery run --png DIR` (issue 6): each frame the headless runner
+// The frame sink of `artillery run --png DIR`: each frame the headless runner
 // hands over is drawn with MatchView (the window's drawing code) into an OSMesa context
 // (EGL surfaceless as the fallback) and written as DIR/frame_TTTTTT.png, TTTTTT being the
 // tick, so frames sort in time order and name the tick they show. With the environment

@@ -1,4 +1,4 @@
-// The replay viewer's controls (issues 5 and 6): a game::ReplayPlayer under its own
+// The replay viewer's controls: a game::ReplayPlayer under its own
 // fixed-step clock, with play / pause, one tick either way, speed x1/8 .. x16, a scrub
 // slider over the whole recording (backwards too: a re-simulation from the start), the
 // previous / next shot, and "Take over", which the game screen answers by playing on

@@ -1,4 +1,4 @@
-// The sandbox's tools in the window (issue 5): a palette of what to spawn, a hand that
+// The sandbox's tools in the window: a palette of what to spawn, a hand that
 // grabs and drags, and a button that turns any level into a sandbox. Every gesture
 // becomes a game::Command (sandbox, spawn, grab, drag, release), so a sandbox session
 // is recorded and replayed like a match; the mouse only decides where and when.

@@ -1,4 +1,4 @@
-// The Stats window (issue 5, "Live controls"): Compare (the current aim fired with every
+// The Stats window: Compare (the current aim fired with every
 // integrator at once, each path drawn in the world in its own colour, with its landing
 // error in a legend), a live plot of the match's total energy and momentum over the last
 // seconds, and the Charts panel (work-precision, stability, scaling) behind a button.

@@ -1,6 +1,6 @@
 // Where GL draws: one interface over the window (SDL2) and the headless contexts
 // (OSMesa, EGL surfaceless), so the renderer, ImGui and screenshots run the same code
-// on all of them (issue 6: "the very same drawing code as the window").
+// on all of them: the very same drawing code as the window.
 #pragma once
 
 #include <memory>

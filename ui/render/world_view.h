@@ -1,5 +1,5 @@
 // How a phys::World looks: particles as discs coloured by their state, springs as lines
-// coloured by their strain, and the debug view's overlays (issue 5, "Draw" controls):
+// coloured by their strain, and the debug view's overlays (the "Draw" controls):
 // velocities, net forces, closed-form ghosts, contacts, broad-phase cells, sleeping state
 // and the model each object is in. Written against phys::DebugDraw only, so it can move
 // into physics/ (as Box2D's b2World::DebugDraw) without a change, and a test can record
