@@ -1,5 +1,6 @@
 #include "game/bench/scaling.h"
 
+#include "game/bench/flight_reference.h"
 #include "physics/rigid/rigid_world.h"
 #include "physics/world.h"
 
@@ -26,9 +27,9 @@ double median(std::vector<double> v) {
     return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
-std::unique_ptr<World> flightWorld(long n) {
+std::unique_ptr<World> flightWorld(long n, Integrator integrator = Integrator::SymplecticEuler) {
     WorldDef d;
-    d.integrator = Integrator::SymplecticEuler;
+    d.integrator = integrator;
     d.forces.drag = DragModel::Quadratic;
     d.forces.wind = {3.0, 0.0};
     d.collision.model = ContactModel::None;
@@ -195,6 +196,7 @@ PileComparison comparePiles(long balls, int steps, int repeats) {
     }
     r.particleMs = 1e3 * median(pt);
     r.rigidMs = 1e3 * median(rt);
+    r.load = loadNow();
     return r;
 }
 
@@ -225,7 +227,7 @@ std::vector<ScalingPoint> measureScaling(const std::string& name, const Workload
         std::vector<double> t;
         for (int r = 0; r < std::max(1, def.repeats); ++r) t.push_back(work(n, def.steps));
         const double us = 1e6 * median(t) / def.steps;
-        out.push_back({name, n, us, 1e3 * us / static_cast<double>(n)});
+        out.push_back({name, n, us, 1e3 * us / static_cast<double>(n), loadNow()});
         if (progress) progress(++done, static_cast<int>(def.sizes.size()));
     }
     return out;
@@ -246,43 +248,65 @@ double scalingExponent(const std::vector<ScalingPoint>& points) {
     return n < 2 ? NAN : (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-BandwidthResult measureBandwidth(long n, int steps, int repeats) {
-    BandwidthResult r;
+double loadNow() {
+    std::FILE* f = std::fopen("/proc/loadavg", "r");
+    if (!f) return NAN;
+    double one = NAN;
+    if (std::fscanf(f, "%lf", &one) != 1) one = NAN;
+    std::fclose(f);
+    return one;
+}
+
+double FlightComparison::bytesPerParticle() const {
+    return static_cast<double>(kFlightBytesPerParticle);
+}
+
+namespace {
+double gigabytesPerSecond(long n, double ms) {
+    return ms > 0 ? static_cast<double>(n) * kFlightBytesPerParticle / (ms * 1e6) : 0.0;
+}
+} // namespace
+
+double FlightComparison::updateGBs() const { return gigabytesPerSecond(n, updateMs); }
+double FlightComparison::referenceGBs() const { return gigabytesPerSecond(n, referenceMs); }
+double FlightComparison::copyGBs() const { return gigabytesPerSecond(n, copyMs); }
+
+FlightComparison compareFlight(long n, bool velocityVerlet, int steps, int repeats) {
+    FlightComparison r;
     r.n = n;
-    auto w = flightWorld(n);
+    r.integrator = velocityVerlet ? "velocity-verlet" : "symplectic-euler";
+    r.referenceLanes = flightReferenceLanes();
+    auto w = flightWorld(n, velocityVerlet ? Integrator::VelocityVerlet : Integrator::SymplecticEuler);
+    // The reference steps its own copy of the same particles (same sizes, same state).
+    auto ref = flightWorld(n, Integrator::SymplecticEuler);
+    const ForceDef& forces = w->def().forces;
+    FlightReferenceStep c;
+    c.h = w->def().tickSeconds / w->def().substeps;
+    c.gravity = forces.gravity;
+    c.wind = forces.wind;
+    c.halfRhoPi = LocalForceLaw(forces).halfRhoPi;
+    // The copy moves as many bytes as a step reads and writes: half of them each way.
+    const std::size_t copy = static_cast<std::size_t>(n) * kFlightBytesPerParticle / 2;
+    std::vector<unsigned char> from(copy, 1), to(copy, 0);
     w->step();
-    std::vector<double> pt, st, it;
-    for (int k = 0; k < repeats; ++k) {
-        const auto t0 = Clock::now();
-        double integrateUs = 0.0;
-        for (int i = 0; i < steps; ++i) {
-            w->step();
-            integrateUs += w->profile().integrateUs;
-        }
-        pt.push_back(seconds(t0) / steps);
-        it.push_back(1e-6 * integrateUs / steps);
+    flightReferenceStep(ref->particles, c);
+    copyBytes(to.data(), from.data(), copy);
+    std::vector<double> ut, rt, ct;
+    for (int k = 0; k < std::max(1, repeats); ++k) {
+        auto t0 = Clock::now();
+        for (int i = 0; i < steps; ++i) w->step();
+        ut.push_back(seconds(t0) / steps);
+        t0 = Clock::now();
+        for (int i = 0; i < steps; ++i) flightReferenceStep(ref->particles, c);
+        rt.push_back(seconds(t0) / steps);
+        t0 = Clock::now();
+        for (int i = 0; i < steps; ++i) copyBytes(to.data(), from.data(), copy);
+        ct.push_back(seconds(t0) / steps);
     }
-    // The streaming kernel: the same arrays, read and written once per step, with the
-    // least arithmetic that uses every byte (what a perfect fused update would move).
-    ParticleSet& s = w->particles;
-    const double dt = 1.0 / 120.0;
-    for (int k = 0; k < repeats; ++k) {
-        const auto t0 = Clock::now();
-        for (int step = 0; step < steps; ++step) {
-            const std::size_t m = s.slots();
-            for (std::size_t i = 0; i < m; ++i) {
-                const double c = s.flags[i] ? s.invMass[i] * s.radius[i] * s.dragCd[i] : 0.0;
-                s.vx[i] -= dt * c * s.vx[i];
-                s.vy[i] -= dt * c * s.vy[i];
-                s.px[i] += dt * s.vx[i];
-                s.py[i] += dt * s.vy[i];
-            }
-        }
-        st.push_back(seconds(t0) / steps);
-    }
-    r.particleMs = 1e3 * median(pt);
-    r.integrateMs = 1e3 * median(it);
-    r.streamMs = 1e3 * median(st);
+    r.updateMs = 1e3 * median(ut);
+    r.referenceMs = 1e3 * median(rt);
+    r.copyMs = 1e3 * median(ct);
+    r.load = loadNow();
     return r;
 }
 
@@ -298,12 +322,12 @@ double clothFrameMs(int side, int frames) {
     return 1e3 * median(t);
 }
 
-std::string toCsv(const std::vector<ScalingPoint>& points) {
-    std::string out = "workload,items,us_per_step,ns_per_item\n";
-    char line[160];
+std::string toCsv(const std::vector<ScalingPoint>& points, bool underLoad) {
+    std::string out = "workload,items,us_per_step,ns_per_item,load_1min,under_load\n";
+    char line[200];
     for (const auto& p : points) {
-        std::snprintf(line, sizeof line, "%s,%ld,%.4g,%.4g\n", p.workload.c_str(), p.items,
-                      p.usPerStep, p.nsPerItem);
+        std::snprintf(line, sizeof line, "%s,%ld,%.4g,%.4g,%.2f,%d\n", p.workload.c_str(),
+                      p.items, p.usPerStep, p.nsPerItem, p.load, underLoad ? 1 : 0);
         out += line;
     }
     return out;

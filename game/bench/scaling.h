@@ -1,9 +1,11 @@
 // How step cost grows with the scene: particles in flight, springs in cloth (and, from
 // the collision and rigid layers, piles with contacts and Box2D bodies), plus the
 // particle update against a plain streaming kernel over the same bytes, the
-// memory-bandwidth limit.
+// memory-bandwidth limit (a vectorized reference kernel and a memcpy in the same
+// process), and the load average beside every figure.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@ struct ScalingPoint {
     long items = 0;        ///< particles (or bodies)
     double usPerStep = 0;  ///< median wall time of one world step, microseconds
     double nsPerItem = 0;  ///< usPerStep / items, nanoseconds
+    double load = NAN;     ///< 1-minute load average when measured
 };
 
 struct ScalingDef {
@@ -51,6 +54,7 @@ inline constexpr int kPileSettleTicks = 60;
 struct PileComparison {
     long balls = 0;
     double particleMs = 0, rigidMs = 0;
+    double load = NAN; ///< 1-minute load average when measured
     double speedup() const { return particleMs > 0 ? rigidMs / particleMs : 0; }
 };
 PileComparison comparePiles(long balls = 2000, int steps = 60, int repeats = 3);
@@ -58,18 +62,30 @@ PileComparison comparePiles(long balls = 2000, int steps = 60, int repeats = 3);
 /// Least-squares slope of log(cost) against log(n): 1 is linear scaling.
 double scalingExponent(const std::vector<ScalingPoint>& points);
 
-/// The particle update (gravity + quadratic drag, symplectic Euler) against a kernel
-/// that streams the same arrays, on n particles; times are per step, medians.
-struct BandwidthResult {
+/// The 1-minute load average when a figure was taken (from /proc/loadavg; NAN where
+/// the system does not say). The bench itself adds up to 1 while it runs.
+double loadNow();
+
+/// Particles in flight (gravity, quadratic drag relative to a wind) under one integrator,
+/// side by side in one process with the reference kernel over the same arrays
+/// (flight_reference.h) and a memcpy moving the same number of bytes: per-step medians
+/// of alternating repeats, so a burst of load from elsewhere hits all three.
+struct FlightComparison {
     long n = 0;
-    double particleMs = 0, streamMs = 0;
-    /// The integrate phase alone (World::profile), without the per-tick sleep and spring
-    /// passes that World::step also makes over every particle.
-    double integrateMs = 0;
-    double ratio() const { return streamMs > 0 ? particleMs / streamMs : 0; }
-    double integrateRatio() const { return streamMs > 0 ? integrateMs / streamMs : 0; }
+    std::string integrator;   ///< "symplectic-euler" (the fused pass) or "velocity-verlet"
+    double updateMs = 0;      ///< World::step
+    double referenceMs = 0;   ///< flightReferenceStep
+    double copyMs = 0;        ///< memcpy of n * kFlightBytesPerParticle / 2 bytes
+    int referenceLanes = 0;   ///< 4 (AVX2), 2 (SSE2) or 1
+    double load = NAN;        ///< 1-minute load average when measured
+    double bytesPerParticle() const;
+    double ratio() const { return referenceMs > 0 ? updateMs / referenceMs : 0; }
+    /// Bytes moved per second (read + written), 1e9 B/s.
+    double updateGBs() const;
+    double referenceGBs() const;
+    double copyGBs() const;
 };
-BandwidthResult measureBandwidth(long n, int steps = 10, int repeats = 5);
+FlightComparison compareFlight(long n, bool velocityVerlet, int steps = 10, int repeats = 5);
 
 /// Cloth of 64 x 64 with structural and shear springs, 8 sub-steps per 1/60 s frame:
 /// milliseconds per frame (median).
@@ -78,11 +94,17 @@ double clothFrameMs(int side = 64, int frames = 30);
 /// Everything `artillery bench scaling` measures in one run.
 struct ScalingReport {
     std::vector<ScalingPoint> points; ///< every workload's sweep
-    PileComparison pile;
-    BandwidthResult bandwidth;
-    double clothMs = 0;               ///< clothFrameMs(64)
+    PileComparison pile;                 ///< the 2,000 balls (or the --quick size)
+    std::vector<PileComparison> piles;   ///< every pile size compared, smallest first
+    std::vector<FlightComparison> flights;
+    double clothMs = 0;                  ///< clothFrameMs(64)
+    double clothLoad = NAN;
+    double loadAtStart = NAN;            ///< before anything ran
+    bool underLoad = false;              ///< taken with the load above 1 (--under-load)
 };
 
-std::string toCsv(const std::vector<ScalingPoint>& points);
+/// The points as CSV, with the load beside each; `underLoad` marks every row as taken
+/// under load (--under-load).
+std::string toCsv(const std::vector<ScalingPoint>& points, bool underLoad = false);
 
 } // namespace game::bench

@@ -229,24 +229,32 @@ std::vector<Chart> scalingCharts(const game::bench::ScalingReport& report) {
     ratios.referenceName = "target";
     ratios.x = {"milliseconds", Scale::Log};
     const auto& pile = report.pile;
-    const auto& bw = report.bandwidth;
     const Color particle = Color::hex(0x4aa3ff), rigid = Color::hex(0xff6b6b),
                 stream = Color::hex(0x8d97ab), cloth = Color::hex(0x57c46a);
     char note[96];
     if (pile.balls > 0) {
         std::snprintf(note, sizeof note, "%.3g ms, %.1fx faster", pile.particleMs, pile.speedup());
         ratios.bars.push_back({format("pile of %.0f: particles", static_cast<double>(pile.balls)),
-                               pile.particleMs, pile.rigidMs / 5.0, particle, note});
+                               pile.particleMs, pile.rigidMs / 10.0, particle, note});
         ratios.bars.push_back({format("pile of %.0f: Box2D", static_cast<double>(pile.balls)),
                                pile.rigidMs, NAN, rigid, format("%.3g ms", pile.rigidMs)});
     }
-    if (bw.n > 0) {
-        std::snprintf(note, sizeof note, "%.3g ms, %.2fx the stream", bw.particleMs, bw.ratio());
-        ratios.bars.push_back({format("%.0fM in flight: update", bw.n / 1e6), bw.particleMs,
-                               1.5 * bw.streamMs, particle, note});
-        ratios.bars.push_back({format("%.0fM: streaming kernel", bw.n / 1e6), bw.streamMs, NAN,
-                               stream, format("%.3g ms", bw.streamMs)});
+    for (const auto& f : report.flights) {
+        if (f.n < 1000000) continue; // the 1M figures: out of cache, the memory's limit
+        const char* who = f.integrator == "velocity-verlet" ? "Verlet" : "sympl.";
+        std::snprintf(note, sizeof note, "%.3g ms, %.2fx the reference", f.updateMs, f.ratio());
+        ratios.bars.push_back({format("%.0fM in flight, ", f.n / 1e6) + who, f.updateMs,
+                               1.5 * f.referenceMs, particle, note});
     }
+    for (const auto& f : report.flights)
+        if (f.n >= 1000000 && f.integrator != "velocity-verlet") {
+            std::snprintf(note, sizeof note, "%.3g ms, %.3g GB/s", f.referenceMs, f.referenceGBs());
+            ratios.bars.push_back({format("%.0fM: reference kernel", f.n / 1e6), f.referenceMs, NAN,
+                                   stream, note});
+            std::snprintf(note, sizeof note, "%.3g ms, %.3g GB/s", f.copyMs, f.copyGBs());
+            ratios.bars.push_back({format("%.0fM: memcpy, same bytes", f.n / 1e6), f.copyMs, NAN,
+                                   stream, note});
+        }
     if (report.clothMs > 0)
         ratios.bars.push_back({"cloth 64x64, 8 sub-steps", report.clothMs, 2.0, cloth,
                                format("%.3g ms per frame", report.clothMs)});
@@ -282,7 +290,12 @@ void drawStability(Renderer2D& r, Rect area, const std::vector<game::bench::Stab
 
 void drawScaling(Renderer2D& r, Rect area, const game::bench::ScalingReport& report) {
     const auto charts = scalingCharts(report);
-    drawChartGrid(r, charts, area, 3, {}, "Scaling: step cost against the size of the scene");
+    std::string title = "Scaling: step cost against the size of the scene";
+    if (report.underLoad && std::isfinite(report.loadAtStart))
+        title += format(" (taken under load %.2f)", report.loadAtStart);
+    else if (report.underLoad)
+        title += " (taken under load)";
+    drawChartGrid(r, charts, area, 3, {}, title);
 }
 
 } // namespace ui::charts
