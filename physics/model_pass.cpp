@@ -87,7 +87,7 @@ namespace {
 // The whole sub-step for one particle: the reference that the lane sweeps reproduce.
 // A closed-form particle is relaunched if it left its parabola and set to it at the end;
 // the others take the symplectic Euler step of integrate() (forces only on the active).
-struct OneParticle {
+template <FlightScheme Scheme> struct OneParticle {
     ParticleSet& s;
     const LocalForceLaw& law;
     Vec2 g;
@@ -99,7 +99,10 @@ struct OneParticle {
             advanceBallistic(s, i, g, end);
             return;
         }
-        symplecticLocalStep(s, i, f, law, g, h);
+        if constexpr (Scheme == FlightScheme::VelocityVerlet)
+            velocityVerletLocalStep(s, i, f, law, g, h);
+        else
+            symplecticLocalStep(s, i, f, law, g, h);
     }
 };
 
@@ -203,10 +206,10 @@ bool haveAvx2() {
 }
 #endif
 
-template <DragModel Drag>
+template <DragModel Drag, FlightScheme Scheme>
 ModelCounts sweep(ParticleSet& s, const LocalForceLaw& law, const ModelRule* rule, Vec2 g, double h,
                   double start, double end, int lanes) {
-    const OneParticle one{s, law, g, h, start, end};
+    const OneParticle<Scheme> one{s, law, g, h, start, end};
     ModelCounts counts;
     const std::size_t n = s.slots();
     std::size_t i = 0;
@@ -217,30 +220,45 @@ ModelCounts sweep(ParticleSet& s, const LocalForceLaw& law, const ModelRule* rul
     };
     if (law.water) lanes = 1; // buoyancy and water drag: one particle at a time
 #if defined(ARTILLERY_FLIGHT_AVX2)
-    if (lanes >= 4 && haveAvx2()) i = avx2::laneSweep<Drag>(s, law, rule, g, h, i, counts, single);
+    if (lanes >= 4 && haveAvx2())
+        i = avx2::laneSweep<Drag, Scheme>(s, law, rule, g, h, i, counts, single);
 #endif
 #if defined(__SSE2__)
-    if (lanes >= 2) i = sse2::laneSweep<Drag>(s, law, rule, g, h, i, counts, single);
+    if (lanes >= 2) i = sse2::laneSweep<Drag, Scheme>(s, law, rule, g, h, i, counts, single);
 #endif
     for (; i < n; ++i)
         single(i);
     return counts;
 }
 
-} // namespace
-
-ModelCounts symplecticFlightPass(ParticleSet& s, const ForceDef& forces, const ModelRule* rule,
-                                 double h, double start, double end, int lanes) {
+template <FlightScheme Scheme>
+ModelCounts flightPassOf(ParticleSet& s, const ForceDef& forces, const ModelRule* rule, double h,
+                         double start, double end, int lanes) {
     const LocalForceLaw law(forces);
     switch (forces.drag) {
     case DragModel::Linear:
-        return sweep<DragModel::Linear>(s, law, rule, forces.gravity, h, start, end, lanes);
+        return sweep<DragModel::Linear, Scheme>(s, law, rule, forces.gravity, h, start, end, lanes);
     case DragModel::Quadratic:
-        return sweep<DragModel::Quadratic>(s, law, rule, forces.gravity, h, start, end, lanes);
+        return sweep<DragModel::Quadratic, Scheme>(s, law, rule, forces.gravity, h, start, end,
+                                                   lanes);
     case DragModel::None:
         break;
     }
-    return sweep<DragModel::None>(s, law, rule, forces.gravity, h, start, end, lanes);
+    return sweep<DragModel::None, Scheme>(s, law, rule, forces.gravity, h, start, end, lanes);
+}
+
+} // namespace
+
+ModelCounts flightPass(ParticleSet& s, const ForceDef& forces, const ModelRule* rule, double h,
+                       double start, double end, FlightScheme scheme, int lanes) {
+    if (scheme == FlightScheme::VelocityVerlet)
+        return flightPassOf<FlightScheme::VelocityVerlet>(s, forces, rule, h, start, end, lanes);
+    return flightPassOf<FlightScheme::SymplecticEuler>(s, forces, rule, h, start, end, lanes);
+}
+
+ModelCounts symplecticFlightPass(ParticleSet& s, const ForceDef& forces, const ModelRule* rule,
+                                 double h, double start, double end, int lanes) {
+    return flightPass(s, forces, rule, h, start, end, FlightScheme::SymplecticEuler, lanes);
 }
 
 } // namespace phys

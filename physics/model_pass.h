@@ -2,6 +2,8 @@
 // needs", DESIGN.md), the closed form's launch and advance, and the count of each model,
 // per particle so that the world can run them fused with the integrator in one sweep.
 //
+// The same sweep fuses velocity Verlet (the game's default integrator) the same way.
+//
 // A million shells in flight under drag is a streaming problem: the step costs what it
 // takes to read and write the state arrays once. Separate sweeps to choose models, to
 // (re)launch and advance the closed form, to integrate and to count would each read the
@@ -87,6 +89,40 @@ inline void symplecticLocalStep(ParticleSet& s, std::size_t i, std::uint32_t f,
     s.py[i] += h * s.vy[i];
 }
 
+/// Velocity Verlet for particle i (flags f) under local forces, the same operations in the
+/// same order as integrate(VelocityVerlet) makes them in its separate sweeps:
+///   a = g + F(p, v)/m,  p' = p + (h v + h^2/2 a),  v~ = v + h a,
+///   b = g + F(p', v~)/m,  v' = v + h/2 (a + b)
+/// with a = b = 0 for a particle that takes no forces (fixed, asleep, dead).
+inline void velocityVerletLocalStep(ParticleSet& s, std::size_t i, std::uint32_t f,
+                                    const LocalForceLaw& law, Vec2 g, double h) {
+    const double im = s.invMass[i];
+    const bool active = im > 0.0 && (f & (kAlive | kSleeping | kBallistic)) == kAlive;
+    const bool gravity = !(f & kNoGravity);
+    const double r = s.radius[i], cd = s.dragCd[i];
+    const double vx = s.vx[i], vy = s.vy[i];
+    double ax = 0.0, ay = 0.0, bx = 0.0, by = 0.0;
+    if (active) {
+        const Vec2 force = law.force(f, r, cd, s.py[i], vx, vy);
+        ax = gravity ? g.x + im * force.x : im * force.x;
+        ay = gravity ? g.y + im * force.y : im * force.y;
+    }
+    const double half = 0.5 * h * h;
+    s.px[i] += h * vx + half * ax;
+    s.py[i] += h * vy + half * ay;
+    const double tvx = vx + h * ax, tvy = vy + h * ay;
+    if (active) {
+        const Vec2 force = law.force(f, r, cd, s.py[i], tvx, tvy);
+        bx = gravity ? g.x + im * force.x : im * force.x;
+        by = gravity ? g.y + im * force.y : im * force.y;
+    }
+    s.vx[i] = vx + 0.5 * h * (ax + bx);
+    s.vy[i] = vy + 0.5 * h * (ay + by);
+}
+
+/// The integrators the flight pass fuses with the model choice.
+enum class FlightScheme { SymplecticEuler, VelocityVerlet };
+
 /// One sub-step of h seconds, from world time `start` to `end`, over every particle, for
 /// symplectic Euler with local forces only (no springs, no point gravity): the model
 /// choice first when `rule` is given (the tick's first sub-step), then the closed form or
@@ -96,5 +132,11 @@ inline void symplecticLocalStep(ParticleSet& s, std::size_t i, std::uint32_t f,
 /// results are the same bits whatever it is, which the tests check.
 ModelCounts symplecticFlightPass(ParticleSet& s, const ForceDef& forces, const ModelRule* rule,
                                  double h, double start, double end, int lanes = 4);
+
+/// The same sweep for either scheme: velocity Verlet takes velocityVerletLocalStep()
+/// where symplectic Euler takes symplecticLocalStep(), bit for bit the same as
+/// integrate(VelocityVerlet) between the closed form's launch and advance.
+ModelCounts flightPass(ParticleSet& s, const ForceDef& forces, const ModelRule* rule, double h,
+                       double start, double end, FlightScheme scheme, int lanes = 4);
 
 } // namespace phys

@@ -100,10 +100,15 @@ void World::step() {
     springTerms_.build(springs); // before markTethered, which reads it
     const Dynamics dynamics(def_.forces, springs, particles, &springTerms_);
     const bool colliding = def_.collision.model != ContactModel::None;
-    // Symplectic Euler with forces that act on each particle alone (a sky full of shells
-    // under drag): model choice, closed form, integration and the model count are one
-    // sweep per sub-step (model_pass.h) instead of five.
-    const bool fused = def_.integrator == Integrator::SymplecticEuler && dynamics.onlyLocalForces();
+    // Symplectic Euler or velocity Verlet with forces that act on each particle alone (a
+    // sky full of shells under drag): model choice, closed form, integration and the
+    // model count are one sweep per sub-step (model_pass.h) instead of five.
+    const bool fused = (def_.integrator == Integrator::SymplecticEuler ||
+                        def_.integrator == Integrator::VelocityVerlet) &&
+                       dynamics.onlyLocalForces();
+    const FlightScheme scheme = def_.integrator == Integrator::VelocityVerlet
+                                    ? FlightScheme::VelocityVerlet
+                                    : FlightScheme::SymplecticEuler;
     profile_ = {};
     collisions_.clearEvents();
 
@@ -124,8 +129,8 @@ void World::step() {
         const double start = time_ + s * h, end = time_ + (s + 1) * h;
         if (colliding) collisions_.beginSubstep(particles);
         if (fused) {
-            counts = symplecticFlightPass(particles, def_.forces, s == 0 ? &rule : nullptr, h,
-                                          start, end);
+            counts = flightPass(particles, def_.forces, s == 0 ? &rule : nullptr, h, start, end,
+                                scheme);
         } else {
             const bool closedForm = counts.closedForm > 0; // else no kBallistic this tick
             if (closedForm) launchBallistic(start);

@@ -27,7 +27,7 @@ struct Arrays {
 };
 
 Arrays arraysOf(phys::ParticleSet& s) {
-    return {s.px.data(),     s.py.data(),     s.vx.data(),     s.vy.data(),
+    return {s.px.data(),      s.py.data(),     s.vx.data(),     s.vy.data(),
             s.invMass.data(), s.radius.data(), s.dragCd.data(), s.flags.data()};
 }
 
@@ -96,8 +96,8 @@ std::size_t avx2Range(const Arrays& a, const FlightReferenceStep& c, std::size_t
         const __m128i f = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a.flags + i));
         const __m256i awake = _mm256_cvtepi32_epi64(_mm_cmpeq_epi32(_mm_and_si128(f, bits), want));
         const __m256d im = _mm256_loadu_pd(a.im + i);
-        const __m256d on = _mm256_and_pd(_mm256_castsi256_pd(awake),
-                                         _mm256_cmp_pd(im, zero, _CMP_GT_OQ));
+        const __m256d on =
+            _mm256_and_pd(_mm256_castsi256_pd(awake), _mm256_cmp_pd(im, zero, _CMP_GT_OQ));
         const __m256d vx = _mm256_loadu_pd(a.vx + i), vy = _mm256_loadu_pd(a.vy + i);
         const __m256d r = _mm256_loadu_pd(a.r + i);
         const __m256d ux = _mm256_sub_pd(vx, wx), uy = _mm256_sub_pd(vy, wy);
@@ -157,6 +157,8 @@ void flightReferenceStep(phys::ParticleSet& s, const FlightReferenceStep& step, 
     scalarRange(a, step, i, n);
 }
 
-void copyBytes(void* to, const void* from, std::size_t bytes) { std::memcpy(to, from, bytes); }
+void copyBytes(void* to, const void* from, std::size_t bytes) {
+    std::memcpy(to, from, bytes);
+}
 
 } // namespace game::bench

@@ -22,10 +22,10 @@ inline constexpr std::size_t kFlightBytesPerParticle = kFlightBytesRead + kFligh
 
 /// The constants of one reference step.
 struct FlightReferenceStep {
-    double h = 1.0 / 120.0;      ///< s
+    double h = 1.0 / 120.0;         ///< s
     phys::Vec2 gravity{0.0, -9.81}; ///< m/s^2
-    phys::Vec2 wind{};           ///< m/s
-    double halfRhoPi = 0.0;      ///< 1/2 rho_air pi, kg/m^3 (drag k = this Cd r^2 |u|)
+    phys::Vec2 wind{};              ///< m/s
+    double halfRhoPi = 0.0;         ///< 1/2 rho_air pi, kg/m^3 (drag k = this Cd r^2 |u|)
 };
 
 /// One step of every awake, massive particle of `s`:

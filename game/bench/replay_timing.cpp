@@ -32,9 +32,9 @@ std::vector<ReplayTiming> timeReplays(const std::string& folder, int repeats, st
             player.seek(player.lastTick());
             const auto t0 = std::chrono::steady_clock::now();
             player.seek(target);
-            t.push_back(std::chrono::duration<double, std::milli>(
-                            std::chrono::steady_clock::now() - t0)
-                            .count());
+            t.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                    .count());
         }
         std::sort(t.begin(), t.end());
         ReplayTiming r;

@@ -1,5 +1,6 @@
 // The fused model pass (model_pass.h) against the separate sweeps it replaces: model
-// choice, closed-form launch, integrate(SymplecticEuler) and the closed-form advance give
+// choice, closed-form launch, integrate(SymplecticEuler or VelocityVerlet) and the
+// closed-form advance give
 // the same bits, and the same counts, for every mix of flags, drag law and water.
 #include "physics/model_pass.h"
 
@@ -55,64 +56,73 @@ bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
 
 } // namespace
 
-TEST(ModelPass, SymplecticFlightPassGivesTheSeparateSweepsBitForBit) {
+TEST(ModelPass, FlightPassGivesTheSeparateSweepsBitForBit) {
     int compared = 0;
-    for (const DragModel drag : {DragModel::None, DragModel::Linear, DragModel::Quadratic})
-        for (const bool water : {false, true})
-            for (const bool choose : {true, false})
-                for (const bool allowed : {true, false}) {
-                    ForceDef f;
-                    f.drag = drag;
-                    f.linearDrag = 0.3;
-                    f.wind = {2.0, -0.5};
-                    f.water = water;
-                    f.waterLevel = 4.0;
-                    const double h = 1.0 / 120.0, start = 0.5, end = 0.5 + h;
-                    std::vector<std::uint8_t> tethered(301, 0);
-                    for (std::size_t i = 0; i < tethered.size(); i += 9)
-                        tethered[i] = 1;
-                    const ModelRule rule(f, allowed, h, tethered.data());
+    for (const Integrator method : {Integrator::SymplecticEuler, Integrator::VelocityVerlet}) {
+        const FlightScheme scheme = method == Integrator::VelocityVerlet
+                                        ? FlightScheme::VelocityVerlet
+                                        : FlightScheme::SymplecticEuler;
 
-                    // The separate sweeps, as World::step makes them for other integrators.
-                    ParticleSet ref = mixedSet(7);
-                    ModelCounts want;
-                    for (std::size_t i = 0; i < ref.slots(); ++i) {
-                        const std::uint32_t fl = choose ? chooseModel(ref, i, rule) : ref.flags[i];
-                        countModel(want, fl, ref.invMass[i]);
+        for (const DragModel drag : {DragModel::None, DragModel::Linear, DragModel::Quadratic})
+            for (const bool water : {false, true})
+                for (const bool choose : {true, false})
+                    for (const bool allowed : {true, false}) {
+                        ForceDef f;
+                        f.drag = drag;
+                        f.linearDrag = 0.3;
+                        f.wind = {2.0, -0.5};
+                        f.water = water;
+                        f.waterLevel = 4.0;
+                        const double h = 1.0 / 120.0, start = 0.5, end = 0.5 + h;
+                        std::vector<std::uint8_t> tethered(301, 0);
+                        for (std::size_t i = 0; i < tethered.size(); i += 9)
+                            tethered[i] = 1;
+                        const ModelRule rule(f, allowed, h, tethered.data());
+
+                        // The separate sweeps, as World::step makes them for other integrators.
+                        ParticleSet ref = mixedSet(7);
+                        ModelCounts want;
+                        for (std::size_t i = 0; i < ref.slots(); ++i) {
+                            const std::uint32_t fl =
+                                choose ? chooseModel(ref, i, rule) : ref.flags[i];
+                            countModel(want, fl, ref.invMass[i]);
+                        }
+                        for (std::size_t i = 0; i < ref.slots(); ++i)
+                            if (ref.flags[i] & kBallistic)
+                                launchBallistic(ref, i, f.gravity, start);
+                        const std::vector<Spring> none;
+                        IntegratorScratch scratch;
+                        integrate(method, Dynamics(f, none, ref), ref, h, scratch);
+                        for (std::size_t i = 0; i < ref.slots(); ++i)
+                            if (ref.flags[i] & kBallistic) advanceBallistic(ref, i, f.gravity, end);
+
+                        for (const int lanes : {1, 2, 4}) {
+                            ParticleSet fused = mixedSet(7);
+                            const ModelCounts got = flightPass(fused, f, choose ? &rule : nullptr,
+                                                               h, start, end, scheme, lanes);
+
+                            SCOPED_TRACE(::testing::Message()
+                                         << "integrator " << static_cast<int>(method) << " drag "
+                                         << static_cast<int>(drag) << " water " << water
+                                         << " choose " << choose << " auto " << allowed << " lanes "
+                                         << lanes);
+                            EXPECT_TRUE(sameBits(fused.px, ref.px));
+                            EXPECT_TRUE(sameBits(fused.py, ref.py));
+                            EXPECT_TRUE(sameBits(fused.vx, ref.vx));
+                            EXPECT_TRUE(sameBits(fused.vy, ref.vy));
+                            EXPECT_TRUE(sameBits(fused.launchX, ref.launchX));
+                            EXPECT_TRUE(sameBits(fused.launchT, ref.launchT));
+                            EXPECT_EQ(fused.flags, ref.flags);
+                            EXPECT_EQ(got.closedForm, want.closedForm);
+                            EXPECT_EQ(got.integrated, want.integrated);
+                            EXPECT_EQ(got.sleeping, want.sleeping);
+                            EXPECT_EQ(got.fixed, want.fixed);
+                            EXPECT_EQ(got.asleep, want.asleep);
+                            ++compared;
+                        }
                     }
-                    for (std::size_t i = 0; i < ref.slots(); ++i)
-                        if (ref.flags[i] & kBallistic) launchBallistic(ref, i, f.gravity, start);
-                    const std::vector<Spring> none;
-                    IntegratorScratch scratch;
-                    integrate(Integrator::SymplecticEuler, Dynamics(f, none, ref), ref, h, scratch);
-                    for (std::size_t i = 0; i < ref.slots(); ++i)
-                        if (ref.flags[i] & kBallistic) advanceBallistic(ref, i, f.gravity, end);
-
-                    for (const int lanes : {1, 2, 4}) {
-                        ParticleSet fused = mixedSet(7);
-                        const ModelCounts got = symplecticFlightPass(
-                            fused, f, choose ? &rule : nullptr, h, start, end, lanes);
-
-                        SCOPED_TRACE(::testing::Message()
-                                     << "drag " << static_cast<int>(drag) << " water " << water
-                                     << " choose " << choose << " auto " << allowed << " lanes "
-                                     << lanes);
-                        EXPECT_TRUE(sameBits(fused.px, ref.px));
-                        EXPECT_TRUE(sameBits(fused.py, ref.py));
-                        EXPECT_TRUE(sameBits(fused.vx, ref.vx));
-                        EXPECT_TRUE(sameBits(fused.vy, ref.vy));
-                        EXPECT_TRUE(sameBits(fused.launchX, ref.launchX));
-                        EXPECT_TRUE(sameBits(fused.launchT, ref.launchT));
-                        EXPECT_EQ(fused.flags, ref.flags);
-                        EXPECT_EQ(got.closedForm, want.closedForm);
-                        EXPECT_EQ(got.integrated, want.integrated);
-                        EXPECT_EQ(got.sleeping, want.sleeping);
-                        EXPECT_EQ(got.fixed, want.fixed);
-                        EXPECT_EQ(got.asleep, want.asleep);
-                        ++compared;
-                    }
-                }
-    EXPECT_EQ(compared, 72);
+    }
+    EXPECT_EQ(compared, 144);
 }
 
 // Without collisions the world counts the models in the fused sweep; the profile says
