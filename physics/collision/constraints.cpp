@@ -42,9 +42,87 @@ void applyJ(const std::vector<DistanceConstraint>& cs, ConstraintScratch& w,
     }
 }
 
+// The bandwidth of J W J^T in list order: the largest k - j over constraints j < k that
+// share a particle.
+int bandwidthOf(const std::vector<DistanceConstraint>& cs, std::size_t slots,
+                ConstraintScratch& w) {
+    w.lastRow.assign(slots, -1);
+    int b = 0;
+    for (std::size_t k = 0; k < cs.size(); ++k)
+        for (const ParticleId id : {cs[k].a, cs[k].b}) {
+            if (id == kNoParticle || id >= slots) continue;
+            if (w.lastRow[id] >= 0) b = std::max(b, static_cast<int>(k) - w.lastRow[id]);
+            w.lastRow[id] = static_cast<int>(k);
+        }
+    return b;
+}
+
+// Entry (k, j) of J W J^T: the particles k and j share, each with w_p (n_k . n_j) times
+// the signs of the two rows there (+ at a, - at b).
+double couplingOf(const DistanceConstraint& ck, const DistanceConstraint& cj, Vec2 nk, Vec2 nj,
+                  const ParticleSet& s) {
+    double sum = 0.0;
+    for (const auto& [pk, sk] : {std::pair{ck.a, 1.0}, std::pair{ck.b, -1.0}}) {
+        if (pk == kNoParticle) continue;
+        for (const auto& [pj, sj] : {std::pair{cj.a, 1.0}, std::pair{cj.b, -1.0}})
+            if (pj == pk) sum += sk * sj * s.invMass[pk];
+    }
+    return sum == 0.0 ? 0.0 : sum * dot(nk, nj);
+}
+
+// Solves (J W J^T) x = rhs by banded Cholesky (the inactive rows and columns replaced by
+// the identity, so their x is 0, as CG leaves it); false, with nothing solved, when a
+// pivot is not clearly positive (a singular or nearly singular set). The result is left
+// in w.x and W J^T x in w.dp.
+bool solveBanded(const std::vector<DistanceConstraint>& cs, const ParticleSet& s,
+                 ConstraintScratch& w, int b) {
+    const std::size_t m = cs.size(), width = static_cast<std::size_t>(b) + 1;
+    w.band.assign(m * width, 0.0);
+    auto L = [&](std::size_t k, std::size_t j) -> double& { return w.band[k * width + (k - j)]; };
+    for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t first = k >= static_cast<std::size_t>(b) ? k - b : 0;
+        if (!w.active[k]) {
+            L(k, k) = 1.0;
+            continue;
+        }
+        for (std::size_t j = first; j < k; ++j) {
+            double a = w.active[j] ? couplingOf(cs[k], cs[j], w.dir[k], w.dir[j], s) : 0.0;
+            for (std::size_t i = std::max(first, j >= static_cast<std::size_t>(b) ? j - b : 0);
+                 i < j; ++i)
+                a -= L(k, i) * L(j, i);
+            L(k, j) = a / L(j, j);
+        }
+        const double diag = (wOf(s, cs[k].a) + wOf(s, cs[k].b)) * dot(w.dir[k], w.dir[k]);
+        double a = diag;
+        for (std::size_t i = first; i < k; ++i)
+            a -= L(k, i) * L(k, i);
+        // Cancellation down to 1e-10 of the diagonal: the rows are (nearly) dependent.
+        if (!(a > 1e-10 * diag)) return false;
+        L(k, k) = std::sqrt(a);
+    }
+    // L y = rhs, then L^T x = y.
+    for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t first = k >= static_cast<std::size_t>(b) ? k - b : 0;
+        double y = w.active[k] ? w.rhs[k] : 0.0;
+        for (std::size_t i = first; i < k; ++i)
+            y -= L(k, i) * w.x[i];
+        w.x[k] = y / L(k, k);
+    }
+    for (std::size_t k = m; k-- > 0;) {
+        double x = w.x[k];
+        for (std::size_t i = k + 1; i < std::min(m, k + width); ++i)
+            x -= L(i, k) * w.x[i];
+        w.x[k] = x / L(k, k);
+    }
+    ++w.lastDirectSolves;
+    applyJt(cs, s, w, w.x);
+    return true;
+}
+
 // Solves (J W J^T) x = rhs by Jacobi-preconditioned conjugate gradients; the result
 // is left in w.x and W J^T x in w.dp.
-void solve(const std::vector<DistanceConstraint>& cs, const ParticleSet& s, ConstraintScratch& w) {
+void solveIterative(const std::vector<DistanceConstraint>& cs, const ParticleSet& s,
+                    ConstraintScratch& w) {
     const std::size_t m = cs.size();
     auto diag = [&](std::size_t k) { return wOf(s, cs[k].a) + wOf(s, cs[k].b); };
     double rz = 0.0, rr0 = 0.0;
@@ -85,6 +163,13 @@ void solve(const std::vector<DistanceConstraint>& cs, const ParticleSet& s, Cons
     applyJt(cs, s, w, w.x);
 }
 
+// Directly where the band is narrow, else (or where that fails) iteratively.
+void solve(const std::vector<DistanceConstraint>& cs, const ParticleSet& s, ConstraintScratch& w,
+           int bandwidth) {
+    if (bandwidth <= kDirectBandwidth && solveBanded(cs, s, w, bandwidth)) return;
+    solveIterative(cs, s, w);
+}
+
 // x += dp at every constraint end, once each (an end shared by two links is consumed
 // by the first: its dp is zeroed after use).
 void applyToEnds(const std::vector<DistanceConstraint>& cs, ConstraintScratch& w,
@@ -117,6 +202,7 @@ double lengthError(const DistanceConstraint& c, const ParticleSet& set) {
 double solveConstraints(const std::vector<DistanceConstraint>& cs, ParticleSet& set,
                         ConstraintScratch& w, int newtonSteps, double tolerance) {
     w.lastIterations = 0;
+    w.lastDirectSolves = 0;
     if (cs.empty()) return 0.0;
     const std::size_t m = cs.size();
     for (auto* v : {&w.rhs, &w.x, &w.r, &w.z, &w.p, &w.q})
@@ -124,6 +210,7 @@ double solveConstraints(const std::vector<DistanceConstraint>& cs, ParticleSet& 
     w.dir.resize(m);
     w.active.resize(m);
     w.dp.resize(set.slots());
+    const int bandwidth = bandwidthOf(cs, set.slots(), w);
 
     // Position: Newton steps on C(p) = 0 over the rods and the taut cables.
     for (int step = 0; step < newtonSteps; ++step) {
@@ -140,7 +227,7 @@ double solveConstraints(const std::vector<DistanceConstraint>& cs, ParticleSet& 
             if (w.active[k]) worst = std::max(worst, std::abs(C) / c.length);
         }
         if (worst <= tolerance) break;
-        solve(cs, set, w);
+        solve(cs, set, w, bandwidth);
         applyToEnds(cs, w, set.px, set.py);
     }
 
@@ -157,7 +244,7 @@ double solveConstraints(const std::vector<DistanceConstraint>& cs, ParticleSet& 
                       (c.kind == ConstraintKind::Rod || (taut && u > 0.0));
         w.rhs[k] = -u;
     }
-    solve(cs, set, w);
+    solve(cs, set, w, bandwidth);
     applyToEnds(cs, w, set.vx, set.vy);
 
     // Anything a constraint moved forgets its multi-step integrator history.
