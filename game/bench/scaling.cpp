@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <random>
 
@@ -248,13 +249,30 @@ double scalingExponent(const std::vector<ScalingPoint>& points) {
     return n < 2 ? NAN : (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
+double parseLoadAverage(const std::string& text) {
+    char* end = nullptr;
+    const double one = std::strtod(text.c_str(), &end);
+    return end != text.c_str() && std::isfinite(one) && one >= 0.0 ? one : NAN;
+}
+
 double loadNow() {
     std::FILE* f = std::fopen("/proc/loadavg", "r");
     if (!f) return NAN;
-    double one = NAN;
-    if (std::fscanf(f, "%lf", &one) != 1) one = NAN;
+    char text[128] = {};
+    const std::size_t got = std::fread(text, 1, sizeof text - 1, f);
     std::fclose(f);
-    return one;
+    return parseLoadAverage(std::string(text, got));
+}
+
+std::string docsFiguresRefusal(double load, bool intoDocs, bool underLoad) {
+    if (!intoDocs || underLoad || load <= 1.0) return {};
+    char why[120];
+    if (std::isfinite(load))
+        std::snprintf(why, sizeof why, "the 1-minute load average is %.2f (above 1)", load);
+    else
+        std::snprintf(why, sizeof why, "the load average cannot be read (/proc/loadavg)");
+    return std::string("refusing to write figures into docs/: ") + why +
+           "; wait for a quiet machine, or pass --under-load to mark them as taken under load";
 }
 
 double FlightComparison::bytesPerParticle() const {

@@ -65,6 +65,13 @@ double scalingExponent(const std::vector<ScalingPoint>& points);
 /// The 1-minute load average when a figure was taken (from /proc/loadavg; NAN where
 /// the system does not say). The bench itself adds up to 1 while it runs.
 double loadNow();
+/// The first field of /proc/loadavg's text ("0.42 0.30 0.21 1/98 1234"), NAN if none.
+double parseLoadAverage(const std::string& text);
+
+/// Why the bench may not write its figures into docs/ now, "" when it may: figures for
+/// the documentation need a quiet machine (1-minute load `load` at most 1; NAN: the
+/// load cannot be read), unless `underLoad` (--under-load) marks them as taken under load.
+std::string docsFiguresRefusal(double load, bool intoDocs, bool underLoad);
 
 /// Particles in flight (gravity, quadratic drag relative to a wind) under one integrator,
 /// side by side in one process with the reference kernel over the same arrays

@@ -336,17 +336,9 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
     // Figures for the documentation come from a quiet machine: the load of other work
     // slows Box2D, the particles and the memory by different factors, so ratios taken
     // under load say little. The bench itself is not running yet, so this is the others.
-    if ((intoDocs(csv) || intoDocs(png)) && !underLoad && !(report.loadAtStart <= 1.0)) {
-        char why[160];
-        if (std::isfinite(report.loadAtStart))
-            std::snprintf(why, sizeof why, "the 1-minute load average is %.2f (above 1)",
-                          report.loadAtStart);
-        else
-            std::snprintf(why, sizeof why, "the load average cannot be read (/proc/loadavg)");
-        args.fail(std::string("refusing to write figures into docs/: ") + why +
-                  "; wait for a quiet machine, or pass --under-load to mark them as taken "
-                  "under load");
-    }
+    const std::string refusal =
+        docsFiguresRefusal(report.loadAtStart, intoDocs(csv) || intoDocs(png), underLoad);
+    if (!refusal.empty()) args.fail(refusal);
 
     ScalingDef light, heavy;
     std::vector<long> pileSizes{1000, 2000, 4000}, flightSizes{10000, 1000000};

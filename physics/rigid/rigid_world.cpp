@@ -89,9 +89,14 @@ class CollectBodies final : public b2QueryCallback {
     bool ReportFixture(b2Fixture* f) override {
         // The tree holds fattened boxes; test the shape's exact box so callers get only
         // real overlaps.
+        // The query reports a fixture once per child proxy it touches, without the
+        // child, so a terrain chain of n edges would cost n^2 box computations: each
+        // child is skipped unless its proxy box (the union of its exact boxes at the
+        // last two transforms, which holds the exact box) touches the query's.
         const b2Shape* shape = f->GetShape();
         const b2Transform& xf = f->GetBody()->GetTransform();
         for (int32 c = 0; c < shape->GetChildCount(); ++c) {
+            if (!b2TestOverlap(f->GetAABB(c), box_)) continue;
             b2AABB exact;
             shape->ComputeAABB(&exact, xf, c);
             if (b2TestOverlap(exact, box_)) {

@@ -27,8 +27,15 @@ cli_test(bench_stability_quick 0
          "explicit-euler +0 +0 +agree.*symplectic-euler +(1\\.99[0-9]*|2) +2 .*rk4 +2\\.8[0-9]* +2\\.828.*implicit-euler +inf +inf +agree"
          "bench;stability;--quick;--csv;${BENCH_OUT}/stab.csv;--png;${BENCH_OUT}/stab.png")
 cli_test(bench_scaling_quick 0
-         "flight .*pile of 200 balls: particles .*faster.*in flight: update .*streaming kernel.*cloth 64x64, 8 sub-steps: [0-9.]+ ms"
-         "bench;scaling;--quick;--csv;${BENCH_OUT}/scal.csv;--png;${BENCH_OUT}/scal.png")
+         "1-minute load average before the run  \\[load [0-9.]+\\].*flight .*\\[load [0-9.]+\\].*pile of 200 balls: particles .*faster  \\[load.*2000 in flight, symplectic-euler: update [0-9.e-]+ ms/step, reference \\([124] lanes\\) [0-9.e-]+ ms: [0-9.]+x.*92 B/particle moved: update [0-9.e+]+ GB/s, reference [0-9.e+]+ GB/s, memcpy of as many bytes [0-9.e+]+ GB/s.*2000 in flight, velocity-verlet.*20000 in flight, velocity-verlet.*replay 01_earth_basics.replay.json +4800 ticks: slowest seek.*cloth 64x64, 8 sub-steps: [0-9.]+ ms"
+         "bench;scaling;--quick;--replays;${PROJECT_SOURCE_DIR}/tests/replays;--csv;${BENCH_OUT}/scal.csv;--png;${BENCH_OUT}/scal.png")
+# Into a docs/ folder with --under-load whatever the load is: written, and marked.
+file(MAKE_DIRECTORY ${BENCH_OUT}/docs)
+cli_test(bench_scaling_docs_under_load 0
+         "1-minute load average before the run  \\[load [0-9.]+\\]  \\(taken under load: --under-load\\).*wrote .*docs/scal.csv and .*docs/scal.png"
+         "bench;scaling;--quick;--under-load;--replays;${PROJECT_SOURCE_DIR}/tests/replays;--csv;${BENCH_OUT}/docs/scal.csv;--png;${BENCH_OUT}/docs/scal.png")
+cli_test(bench_scaling_missing_replays 2 "--replays: folder '.*no_such_folder' does not exist"
+         "bench;scaling;--quick;--replays;${BENCH_OUT}/no_such_folder;--csv;${BENCH_OUT}/scal.csv;--png;${BENCH_OUT}/scal.png")
 cli_test(bench_choose_spring 0
          "spring within 0\\.001 m: [a-z0-9-]+ at dt = [0-9.e-]+ s \\([0-9]+ sub-steps per 1/120 s tick\\).*measured error [0-9.e-]+ m, cost"
          "bench;choose;--scene;spring;--tolerance;1e-3;--quick")
