@@ -46,7 +46,9 @@ void applyJ(const std::vector<DistanceConstraint>& cs, ConstraintScratch& w,
 // share a particle.
 int bandwidthOf(const std::vector<DistanceConstraint>& cs, std::size_t slots,
                 ConstraintScratch& w) {
-    w.lastRow.assign(slots, -1);
+    // Only the constraints' ends are touched, and put back to -1 after: a rope in a world
+    // of thousands of particles costs its own size.
+    if (w.lastRow.size() < slots) w.lastRow.resize(slots, -1);
     int b = 0;
     for (std::size_t k = 0; k < cs.size(); ++k)
         for (const ParticleId id : {cs[k].a, cs[k].b}) {
@@ -54,6 +56,9 @@ int bandwidthOf(const std::vector<DistanceConstraint>& cs, std::size_t slots,
             if (w.lastRow[id] >= 0) b = std::max(b, static_cast<int>(k) - w.lastRow[id]);
             w.lastRow[id] = static_cast<int>(k);
         }
+    for (const auto& c : cs)
+        for (const ParticleId id : {c.a, c.b})
+            if (id != kNoParticle && id < slots) w.lastRow[id] = -1;
     return b;
 }
 

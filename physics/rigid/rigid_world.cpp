@@ -93,7 +93,12 @@ class CollectBodies final : public b2QueryCallback {
         // child, so a terrain chain of n edges would cost n^2 box computations: each
         // child is skipped unless its proxy box (the union of its exact boxes at the
         // last two transforms, which holds the exact box) touches the query's.
+        // A fixture reported again (another of its children) was tested whole already.
         const b2Shape* shape = f->GetShape();
+        if (shape->GetChildCount() > 1) {
+            if (std::find(tested_.begin(), tested_.end(), f) != tested_.end()) return true;
+            tested_.push_back(f);
+        }
         const b2Transform& xf = f->GetBody()->GetTransform();
         for (int32 c = 0; c < shape->GetChildCount(); ++c) {
             if (!b2TestOverlap(f->GetAABB(c), box_)) continue;
@@ -110,6 +115,7 @@ class CollectBodies final : public b2QueryCallback {
   private:
     b2AABB box_;
     std::vector<const b2Body*>& out_;
+    std::vector<const b2Fixture*> tested_; ///< chains (several children) tested so far
 };
 
 class ClosestRay final : public b2RayCastCallback {
