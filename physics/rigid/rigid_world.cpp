@@ -99,11 +99,13 @@ class CollectBodies final : public b2QueryCallback {
             if (std::find(tested_.begin(), tested_.end(), f) != tested_.end()) return true;
             tested_.push_back(f);
         }
+        // A static body's proxy box is its exact box (both transforms are the same one).
         const b2Transform& xf = f->GetBody()->GetTransform();
+        const bool still = f->GetBody()->GetType() == b2_staticBody;
         for (int32 c = 0; c < shape->GetChildCount(); ++c) {
             if (!b2TestOverlap(f->GetAABB(c), box_)) continue;
-            b2AABB exact;
-            shape->ComputeAABB(&exact, xf, c);
+            b2AABB exact = f->GetAABB(c);
+            if (!still) shape->ComputeAABB(&exact, xf, c);
             if (b2TestOverlap(exact, box_)) {
                 out_.push_back(f->GetBody());
                 break;
