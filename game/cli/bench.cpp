@@ -28,7 +28,8 @@ const char* const kBenchUsage =
 
 Speed against accuracy. Each measuring sub-command prints progress on stderr, writes
 its measurements as CSV and a chart as PNG (drawn headless by the game's renderer),
-and prints its key figures. By default each finishes in well under 30 s on 2 cores;
+and prints its key figures. By default each finishes in under 30 s on 2 cores (scaling
+in about a minute);
 --full runs longer sweeps (finer dt, larger N, more repeats), --quick tiny ones (tests).
 Times are medians of repeats; the machine's load shows in them.
 
