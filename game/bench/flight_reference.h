@@ -4,6 +4,7 @@
 // four particles at a time with AVX2 where the processor has it (chosen at run time, as
 // physics/model_pass.cpp does), two with SSE2 otherwise, no model choice, no counts, no
 // closed form. Its bits need not match the game's; its bytes and its arithmetic do.
+// The velocity Verlet reference does that integrator's arithmetic (two drag evaluations).
 // Beside it, a copy of as many bytes with memcpy: what the memory moves in this process.
 #pragma once
 
@@ -32,6 +33,15 @@ struct FlightReferenceStep {
 ///   u = v - wind, k = 1/2 rho pi Cd r^2 |u|, v' = v + h (g - k u / m), p' = p + h v'
 /// (others drift: p' = p + h v). `lanes` caps the width (1, 2 or 4) as in the flight pass.
 void flightReferenceStep(phys::ParticleSet& s, const FlightReferenceStep& step, int lanes = 4);
+
+/// The same for velocity Verlet, the same bytes and twice the force arithmetic:
+///   a = g - k(v) u(v) / m,  p' = p + h v + h^2/2 a,  v~ = v + h a,
+///   b = g - k(v~) u(v~) / m,  v' = v + h/2 (a + b)
+/// (others drift). Four lanes with AVX2, else one.
+void flightReferenceVerletStep(phys::ParticleSet& s, const FlightReferenceStep& step,
+                               int lanes = 4);
+/// The widest lanes the velocity Verlet reference takes here (4 with AVX2, else 1).
+int flightReferenceVerletLanes();
 
 /// The widest lanes the reference takes on this processor (4 with AVX2, else 2 or 1).
 int flightReferenceLanes();

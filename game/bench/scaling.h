@@ -74,14 +74,14 @@ double parseLoadAverage(const std::string& text);
 std::string docsFiguresRefusal(double load, bool intoDocs, bool underLoad);
 
 /// Particles in flight (gravity, quadratic drag relative to a wind) under one integrator,
-/// side by side in one process with the reference kernel over the same arrays
-/// (flight_reference.h) and a memcpy moving the same number of bytes: per-step medians
+/// side by side in one process with the reference kernel of that integrator's arithmetic
+/// over the same arrays (flight_reference.h) and a memcpy moving the same number of bytes: per-step medians
 /// of alternating repeats, so a burst of load from elsewhere hits all three.
 struct FlightComparison {
     long n = 0;
     std::string integrator;   ///< "symplectic-euler" (the fused pass) or "velocity-verlet"
     double updateMs = 0;      ///< World::step
-    double referenceMs = 0;   ///< flightReferenceStep
+    double referenceMs = 0;   ///< flightReferenceStep (or flightReferenceVerletStep)
     double copyMs = 0;        ///< memcpy of n * kFlightBytesPerParticle / 2 bytes
     int referenceLanes = 0;   ///< 4 (AVX2), 2 (SSE2) or 1
     double load = NAN;        ///< 1-minute load average when measured

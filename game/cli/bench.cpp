@@ -45,8 +45,9 @@ stability       per integrator: the largest stable w dt on an undamped spring (e
 scaling         step cost against N: particles in flight, a particle pile with contacts,
                 cloth springs, Box2D circles; the same piles of 1,000-4,000 balls as
                 particles and as Box2D circles; 10k and 1M particles in flight (symplectic
-                Euler and velocity Verlet) against a vectorized reference kernel over the
-                same arrays, with bytes per particle, GB/s and a memcpy of as many bytes;
+                Euler and velocity Verlet) against a vectorized reference kernel of the
+                same arithmetic over the same arrays, with bytes per particle, GB/s and a
+                memcpy of as many bytes;
                 a 64x64 cloth frame (8 sub-steps); the slowest seek in every replay of
                 --replays DIR (default tests/replays, if it exists), the rope bridge's
                 cost per tick among them. Every figure has the 1-minute load average
@@ -457,7 +458,7 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
     for (const auto& f : report.flights) {
         if (!asJson) {
             std::snprintf(line, sizeof line,
-                          "%ld in flight, %s: update %.4g ms/step, reference (%d lanes) %.4g ms: "
+                          "%ld in flight, %s: update %.4g ms/step, reference of its arithmetic (%d lanes) %.4g ms: "
                           "%.2fx (target <= 1.5: %s)\n"
                           "  %.0f B/particle moved: update %.3g GB/s, reference %.3g GB/s, "
                           "memcpy of as many bytes %.3g GB/s (%.4g ms)",

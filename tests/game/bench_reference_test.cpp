@@ -1,6 +1,6 @@
-// The scaling bench's measuring tools: the reference flight kernel does the update's
-// arithmetic (against the closed form of one symplectic Euler step, at every lane
-// width), moves the bytes it says, the load average is read as /proc/loadavg writes
+// The scaling bench's measuring tools: the reference flight kernels do the update's
+// arithmetic (against the closed form of one symplectic Euler or velocity Verlet step,
+// at every lane width), moves the bytes it says, the load average is read as /proc/loadavg writes
 // it, and figures for docs/ are refused under load with the message that says why.
 #include "game/bench/flight_reference.h"
 #include "game/bench/scaling.h"
@@ -46,8 +46,8 @@ TEST(FlightReference, TakesOneSymplecticEulerStepWithQuadraticDragAtEveryWidth) 
         flightReferenceStep(s, c, lanes);
         for (std::size_t i = 0; i < s.slots(); ++i) {
             double vx = before.vx[i], vy = before.vy[i];
-            const bool moved = (before.flags[i] & (kAlive | kSleeping)) == kAlive &&
-                               before.invMass[i] > 0.0;
+            const bool moved =
+                (before.flags[i] & (kAlive | kSleeping)) == kAlive && before.invMass[i] > 0.0;
             if (moved) {
                 // v' = v + h (g - k u / m), u = v - wind, k = 1/2 rho pi Cd r^2 |u|
                 const double ux = vx - c.wind.x, uy = vy - c.wind.y;
@@ -61,6 +61,40 @@ TEST(FlightReference, TakesOneSymplecticEulerStepWithQuadraticDragAtEveryWidth) 
             EXPECT_NEAR(s.vy[i], vy, 1e-12);
             EXPECT_NEAR(s.px[i], before.px[i] + c.h * vx, 1e-12);
             EXPECT_NEAR(s.py[i], before.py[i] + c.h * vy, 1e-12);
+        }
+    }
+}
+
+TEST(FlightReference, TakesOneVelocityVerletStepWithQuadraticDragAtEveryWidth) {
+    FlightReferenceStep c;
+    c.h = 1.0 / 120.0;
+    c.gravity = {0.0, -9.81};
+    c.wind = {3.0, -1.0};
+    c.halfRhoPi = 0.5 * 1.225 * std::numbers::pi;
+    for (const int lanes : {1, 4}) {
+        ParticleSet s = someParticles();
+        const ParticleSet before = s;
+        flightReferenceVerletStep(s, c, lanes);
+        for (std::size_t i = 0; i < s.slots(); ++i) {
+            const double vx = before.vx[i], vy = before.vy[i];
+            const bool moved =
+                (before.flags[i] & (kAlive | kSleeping)) == kAlive && before.invMass[i] > 0.0;
+            // a(v) = g - k(v) (v - wind) / m, k = 1/2 rho pi Cd r^2 |v - wind|
+            auto accel = [&](double ux, double uy, double& ax, double& ay) {
+                ux -= c.wind.x, uy -= c.wind.y;
+                const double r = before.radius[i];
+                const double k = c.halfRhoPi * 0.47 * r * r * std::hypot(ux, uy);
+                ax = moved ? c.gravity.x - before.invMass[i] * k * ux : 0.0;
+                ay = moved ? c.gravity.y - before.invMass[i] * k * uy : 0.0;
+            };
+            double ax, ay, bx, by;
+            accel(vx, vy, ax, ay);
+            accel(vx + c.h * ax, vy + c.h * ay, bx, by);
+            SCOPED_TRACE(::testing::Message() << "lanes " << lanes << " particle " << i);
+            EXPECT_NEAR(s.px[i], before.px[i] + c.h * vx + 0.5 * c.h * c.h * ax, 1e-12);
+            EXPECT_NEAR(s.py[i], before.py[i] + c.h * vy + 0.5 * c.h * c.h * ay, 1e-12);
+            EXPECT_NEAR(s.vx[i], vx + 0.5 * c.h * (ax + bx), 1e-12);
+            EXPECT_NEAR(s.vy[i], vy + 0.5 * c.h * (ay + by), 1e-12);
         }
     }
 }
@@ -94,15 +128,14 @@ TEST(LoadAverage, FiguresForDocsAreRefusedAboveOneUnlessMarked) {
               "refusing to write figures into docs/: the load average cannot be read "
               "(/proc/loadavg); wait for a quiet machine, or pass --under-load to mark them "
               "as taken under load");
-    EXPECT_EQ(docsFiguresRefusal(1.0, true, false), "");  // at most 1: quiet enough
-    EXPECT_EQ(docsFiguresRefusal(1.73, true, true), "");  // --under-load
+    EXPECT_EQ(docsFiguresRefusal(1.0, true, false), "");   // at most 1: quiet enough
+    EXPECT_EQ(docsFiguresRefusal(1.73, true, true), "");   // --under-load
     EXPECT_EQ(docsFiguresRefusal(1.73, false, false), ""); // not into docs/
 }
 
 TEST(ScalingWorkloads, CsvCarriesTheLoadAndTheUnderLoadMark) {
     const std::vector<ScalingPoint> pts = {{"flight", 1000, 20.0, 20.0, 0.5}};
-    EXPECT_EQ(toCsv(pts, false),
-              "workload,items,us_per_step,ns_per_item,load_1min,under_load\n"
-              "flight,1000,20,20,0.50,0\n");
+    EXPECT_EQ(toCsv(pts, false), "workload,items,us_per_step,ns_per_item,load_1min,under_load\n"
+                                 "flight,1000,20,20,0.50,0\n");
     EXPECT_EQ(toCsv(pts, true).substr(toCsv(pts, true).rfind(',')), ",1\n");
 }
