@@ -66,13 +66,55 @@ int bandwidthOf(const std::vector<DistanceConstraint>& cs, std::size_t slots,
 // the signs of the two rows there (+ at a, - at b).
 double couplingOf(const DistanceConstraint& ck, const DistanceConstraint& cj, Vec2 nk, Vec2 nj,
                   const ParticleSet& s) {
+    // Signs: (+1)(+1) at a shared a-a or b-b, (+1)(-1) at a-b or b-a; ck.a is a particle.
     double sum = 0.0;
-    for (const auto& [pk, sk] : {std::pair{ck.a, 1.0}, std::pair{ck.b, -1.0}}) {
-        if (pk == kNoParticle) continue;
-        for (const auto& [pj, sj] : {std::pair{cj.a, 1.0}, std::pair{cj.b, -1.0}})
-            if (pj == pk) sum += sk * sj * s.invMass[pk];
+    const double wa = s.invMass[ck.a];
+    if (cj.a == ck.a) sum += wa;
+    if (cj.b == ck.a) sum += -wa;
+    if (ck.b != kNoParticle) {
+        const double wb = s.invMass[ck.b];
+        if (cj.a == ck.b) sum += -wb;
+        if (cj.b == ck.b) sum += wb;
     }
     return sum == 0.0 ? 0.0 : sum * dot(nk, nj);
+}
+
+// Tridiagonal J W J^T (bandwidth 1: ropes): the banded factorization below with its
+// empty inner loops left out, the same operations in the same order.
+bool solveTridiagonal(const std::vector<DistanceConstraint>& cs, const ParticleSet& s,
+                      ConstraintScratch& w) {
+    const std::size_t m = cs.size();
+    w.band.assign(2 * m, 0.0); // row k: L(k, k), L(k, k - 1)
+    double* L = w.band.data();
+    for (std::size_t k = 0; k < m; ++k) {
+        if (!w.active[k]) {
+            L[2 * k] = 1.0;
+            continue;
+        }
+        const double diag = (wOf(s, cs[k].a) + wOf(s, cs[k].b)) * dot(w.dir[k], w.dir[k]);
+        double a = diag;
+        if (k > 0) {
+            const double c =
+                w.active[k - 1] ? couplingOf(cs[k], cs[k - 1], w.dir[k], w.dir[k - 1], s) : 0.0;
+            L[2 * k + 1] = c / L[2 * k - 2];
+            a -= L[2 * k + 1] * L[2 * k + 1];
+        }
+        if (!(a > 1e-10 * diag)) return false;
+        L[2 * k] = std::sqrt(a);
+    }
+    for (std::size_t k = 0; k < m; ++k) {
+        double y = w.active[k] ? w.rhs[k] : 0.0;
+        if (k > 0) y -= L[2 * k + 1] * w.x[k - 1];
+        w.x[k] = y / L[2 * k];
+    }
+    for (std::size_t k = m; k-- > 0;) {
+        double x = w.x[k];
+        if (k + 1 < m) x -= L[2 * k + 3] * w.x[k + 1];
+        w.x[k] = x / L[2 * k];
+    }
+    ++w.lastDirectSolves;
+    applyJt(cs, s, w, w.x);
+    return true;
 }
 
 // Solves (J W J^T) x = rhs by banded Cholesky (the inactive rows and columns replaced by
@@ -171,7 +213,8 @@ void solveIterative(const std::vector<DistanceConstraint>& cs, const ParticleSet
 // Directly where the band is narrow, else (or where that fails) iteratively.
 void solve(const std::vector<DistanceConstraint>& cs, const ParticleSet& s, ConstraintScratch& w,
            int bandwidth) {
-    if (bandwidth <= kDirectBandwidth && solveBanded(cs, s, w, bandwidth)) return;
+    if (bandwidth == 1 && solveTridiagonal(cs, s, w)) return;
+    if (bandwidth != 1 && bandwidth <= kDirectBandwidth && solveBanded(cs, s, w, bandwidth)) return;
     solveIterative(cs, s, w);
 }
 

@@ -140,7 +140,9 @@ struct Chain {
     std::vector<DistanceConstraint> links;
 };
 
-Chain displacedChain(bool shuffled) {
+enum class Order { Chain, Pairs, Shuffled };
+
+Chain displacedChain(Order order) {
     Chain c;
     ParticleId prev = kNoParticle;
     for (int i = 0; i < 30; ++i) {
@@ -156,33 +158,46 @@ Chain displacedChain(bool shuffled) {
         c.links.push_back(d);
         prev = id;
     }
-    if (shuffled) // every 7th link first: links sharing a particle end up far apart
+    if (order == Order::Shuffled) // every 7th link first: links sharing a particle far apart
         std::stable_partition(c.links.begin(), c.links.end(),
                               [&](const DistanceConstraint& d) { return d.a % 7 == 0; });
+    if (order == Order::Pairs) // 1, 0, 3, 2, ...: neighbours up to 3 apart in the list
+        for (std::size_t k = 0; k + 1 < c.links.size(); k += 2)
+            std::swap(c.links[k], c.links[k + 1]);
     return c;
 }
 
 } // namespace
 
-// A chain listed in order has a band of 1 and is factored directly; the same chain
-// shuffled (band far above kDirectBandwidth) goes to conjugate gradients. Both solve the
-// same equations, so they agree to rounding, and both keep every link's length.
+// A chain listed in order has a band of 1 and is factored directly (tridiagonal); in
+// pairs swapped, a band of 3 (the general banded factorization); shuffled (a band far
+// above kDirectBandwidth), it goes to conjugate gradients. All solve the same
+// equations, so they agree to rounding, and all keep every link's length.
 TEST(Rods, TheBandedDirectSolveAgreesWithConjugateGradients) {
-    Chain direct = displacedChain(false), iterative = displacedChain(true);
-    ConstraintScratch wd, wi;
+    Chain direct = displacedChain(Order::Chain), banded = displacedChain(Order::Pairs),
+          iterative = displacedChain(Order::Shuffled);
+    ConstraintScratch wd, wb, wi;
     const double ed = solveConstraints(direct.links, direct.set, wd, 4, 1e-9);
+    const double eb = solveConstraints(banded.links, banded.set, wb, 4, 1e-9);
     const double ei = solveConstraints(iterative.links, iterative.set, wi, 4, 1e-9);
     EXPECT_GT(wd.lastDirectSolves, 0);
     EXPECT_EQ(wd.lastIterations, 0);
+    EXPECT_GT(wb.lastDirectSolves, 0);
+    EXPECT_EQ(wb.lastIterations, 0);
     EXPECT_EQ(wi.lastDirectSolves, 0);
     EXPECT_GT(wi.lastIterations, 0);
     EXPECT_LT(ed, 1e-9);
+    EXPECT_LT(eb, 1e-9);
     EXPECT_LT(ei, 1e-9);
     for (std::size_t i = 0; i < direct.set.slots(); ++i) {
         EXPECT_NEAR(direct.set.px[i], iterative.set.px[i], 1e-12) << i;
         EXPECT_NEAR(direct.set.py[i], iterative.set.py[i], 1e-12) << i;
         EXPECT_NEAR(direct.set.vx[i], iterative.set.vx[i], 1e-9) << i;
         EXPECT_NEAR(direct.set.vy[i], iterative.set.vy[i], 1e-9) << i;
+        EXPECT_NEAR(banded.set.px[i], direct.set.px[i], 1e-12) << i;
+        EXPECT_NEAR(banded.set.py[i], direct.set.py[i], 1e-12) << i;
+        EXPECT_NEAR(banded.set.vx[i], direct.set.vx[i], 1e-9) << i;
+        EXPECT_NEAR(banded.set.vy[i], direct.set.vy[i], 1e-9) << i;
     }
     // No velocity along any rod is left (J v = 0).
     for (const DistanceConstraint& d : direct.links) {
