@@ -11,7 +11,7 @@ PACKAGES := cmake g++ make pkg-config libbox2d-dev libsdl2-dev libimgui-dev \
             nlohmann-json3-dev libgtest-dev libbenchmark-dev libeigen3-dev xvfb xauth
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build play test bench charts clean sanitize fuzz
+.PHONY: all deps configure build play test bench charts clean sanitize fuzz cli-docs screenshots
 
 all: build
 
@@ -49,6 +49,17 @@ charts: build
 	./$(BUILD)/artillery bench work-precision $(BENCH) --csv $(BUILD)/charts/work_precision.csv --png docs/work_precision.png
 	./$(BUILD)/artillery bench stability $(BENCH) --csv $(BUILD)/charts/stability.csv --png docs/stability.png
 	./$(BUILD)/artillery bench scaling $(BENCH) $(SCALING) --csv $(BUILD)/charts/scaling.csv --png docs/scaling.png
+
+# docs/cli.md's reference part: every verb's --help as the program prints it (the docs
+# check in `make test` fails when it is out of date).
+cli-docs: build
+	cmake -DEXE=$(BUILD)/artillery -DSRC=. -DUPDATE=ON -P tests/docs/docs_check.cmake
+
+# The README's pictures, drawn by the game's own headless renderer.
+screenshots: build
+	./$(BUILD)/artillery play levels/05_castle.json --headless --frames 2 --no-panel --screenshot docs/game.png
+	./$(BUILD)/artillery play --replay tests/replays/05_castle.replay.json --headless --no-panel \
+	  --warmup 1.5 --frames 2 --ghosts --forces --contacts --models --screenshot docs/debug_view.png
 
 clean:
 	rm -rf $(BUILD)
