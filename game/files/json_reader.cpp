@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fcntl.h>
+#include <set>
+#include <sys/stat.h>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
@@ -11,7 +13,59 @@
 namespace game {
 
 LoadError::LoadError(const std::string& f, const std::string& p, const std::string& m)
-    : std::runtime_error(f + ": " + p + ": " + m), file(f), path(p), detail(m) {}
+    : std::runtime_error(printable(f) + ": " + printable(p) + ": " + printable(m)),
+      file(printable(f)), path(printable(p)), detail(printable(m)) {}
+
+namespace {
+
+/// Length of the UTF-8 sequence starting at text[i] (1..4), or 0 when the bytes there are
+/// not valid UTF-8 (overlong forms, surrogates and code points past U+10FFFF included).
+std::size_t utf8Sequence(const std::string& text, std::size_t i) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned c = byte(i);
+    if (c < 0x80) return 1;
+    std::size_t n = 0;
+    unsigned cp = 0;
+    if ((c & 0xe0) == 0xc0) n = 2, cp = c & 0x1f;
+    else if ((c & 0xf0) == 0xe0) n = 3, cp = c & 0x0f;
+    else if ((c & 0xf8) == 0xf0) n = 4, cp = c & 0x07;
+    else return 0;
+    if (i + n > text.size()) return 0;
+    for (std::size_t k = 1; k < n; ++k) {
+        if ((byte(i + k) & 0xc0) != 0x80) return 0;
+        cp = (cp << 6) | (byte(i + k) & 0x3f);
+    }
+    const unsigned least[5] = {0, 0, 0x80, 0x800, 0x10000};
+    if (cp < least[n] || cp > 0x10ffff || (cp >= 0xd800 && cp <= 0xdfff)) return 0;
+    return n;
+}
+
+} // namespace
+
+std::string printable(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size();) {
+        const std::size_t n = utf8Sequence(text, i);
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        if (n == 0 || (n == 1 && ((c < 0x20 && c != '\t') || c == 0x7f))) {
+            char hex[5];
+            std::snprintf(hex, sizeof hex, "\\x%02x", c);
+            out += hex;
+            ++i;
+        } else {
+            out.append(text, i, n);
+            i += n;
+        }
+    }
+    return out;
+}
+
+std::size_t characterCount(const std::string& text) {
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < text.size(); ++count) i += std::max<std::size_t>(1, utf8Sequence(text, i));
+    return count;
+}
 
 namespace {
 
@@ -46,9 +100,63 @@ LoadError numberOutOfRange(const std::string& file, const std::string& text,
 
 } // namespace
 
+namespace {
+
+/// The byte offset just past the `count`-th occurrence of an opening bracket or brace at
+/// depth `depth` outside strings: where nesting first goes deeper than allowed.
+std::size_t deepestOpening(const std::string& text, int limit) {
+    int depth = 0;
+    bool inString = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (c == '\\') ++i;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > limit) return i;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return std::string::npos;
+}
+
+/// Refuses a key given twice in one object (JSON allows it; the last one would silently
+/// win), while nlohmann parses: one set of keys per open object.
+struct DuplicateKeys {
+    std::vector<std::set<std::string>> open;
+    bool operator()(int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        using E = nlohmann::json::parse_event_t;
+        if (event == E::object_start) open.emplace_back();
+        else if (event == E::object_end) open.pop_back();
+        else if (event == E::key && !open.empty() && !open.back().insert(parsed.get<std::string>()).second)
+            throw duplicate(parsed.get<std::string>());
+        return true;
+    }
+    struct duplicate {
+        std::string key;
+    };
+};
+
+} // namespace
+
 nlohmann::json parseJson(const std::string& file, const std::string& text) {
+    // Depth first, on the raw text: nlohmann's parser and the values it builds recurse.
+    if (const std::size_t at = deepestOpening(text, kMaxJsonDepth); at != std::string::npos)
+        throw LoadError(file, lineColumn(text, at),
+                        "arrays and objects nest deeper than " + std::to_string(kMaxJsonDepth) +
+                            " levels (no file format of the game needs more than 5)");
     try {
-        return nlohmann::json::parse(text);
+        return nlohmann::json::parse(text, DuplicateKeys{});
+    } catch (const DuplicateKeys::duplicate& d) {
+        // nlohmann does not say where the parser is; the key's second occurrence is.
+        const std::string quoted = "\"" + d.key + "\"";
+        const std::size_t first = text.find(quoted);
+        const std::size_t second = first == std::string::npos ? first : text.find(quoted, first + 1);
+        throw LoadError(file, second == std::string::npos ? "$" : lineColumn(text, second),
+                        "the key " + quoted + " is given twice in one object (give it once)");
     } catch (const nlohmann::json::parse_error& e) {
         const std::string what = e.what();
         const auto cut = what.find("syntax error");
@@ -61,12 +169,46 @@ nlohmann::json parseJson(const std::string& file, const std::string& text) {
 }
 
 std::string readFile(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw LoadError(file, "$", "cannot open the file (does it exist and is it readable?)");
-    std::ostringstream s;
-    s << in.rdbuf();
-    if (in.bad()) throw LoadError(file, "$", "reading the file failed");
-    return s.str();
+    // Opened without blocking (a FIFO with no writer would wait for ever), then judged by
+    // what it is before a byte is read: /dev/zero never ends, a directory has no text.
+    const int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) throw LoadError(file, "$", "cannot open the file (does it exist and is it readable?)");
+    struct ::stat st {};
+    const bool known = ::fstat(fd, &st) == 0;
+    if (!known || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        throw LoadError(file, "$",
+                        std::string("expected a regular file, got ") +
+                            (!known ? "something that cannot be examined"
+                             : S_ISDIR(st.st_mode) ? "a directory"
+                             : S_ISFIFO(st.st_mode) ? "a FIFO (named pipe)"
+                             : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
+                             : "a socket or other special file"));
+    }
+    if (static_cast<unsigned long long>(st.st_size) > kMaxFileBytes) {
+        ::close(fd);
+        throw LoadError(file, "$",
+                        "the file is " + std::to_string(st.st_size) + " bytes; files of at most " +
+                            std::to_string(kMaxFileBytes) + " bytes (16 MiB) are read");
+    }
+    std::string text;
+    char buf[65536];
+    for (;;) {
+        const ssize_t n = ::read(fd, buf, sizeof buf);
+        if (n < 0) {
+            ::close(fd);
+            throw LoadError(file, "$", "reading the file failed");
+        }
+        if (n == 0) break;
+        text.append(buf, static_cast<std::size_t>(n));
+        if (text.size() > kMaxFileBytes) { // it grew while being read
+            ::close(fd);
+            throw LoadError(file, "$", "the file grew past " + std::to_string(kMaxFileBytes) +
+                                           " bytes while being read");
+        }
+    }
+    ::close(fd);
+    return text;
 }
 
 Node::Node(const nlohmann::json& value, std::string file, std::string path)
@@ -75,8 +217,12 @@ Node::Node(const nlohmann::json& value, std::string file, std::string path)
 void Node::fail(const std::string& message) const { throw LoadError(file_, path_, message); }
 
 std::string Node::describe() const {
-    std::string s = value_.dump();
-    if (s.size() > 40) s = s.substr(0, 37) + "...";
+    // Only scalars are written out: an array or object may be huge or deep, and its
+    // count is what the message needs. Invalid UTF-8 in a string is escaped, not thrown.
+    std::string s;
+    if (!value_.is_array() && !value_.is_object())
+        s = value_.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    if (characterCount(s) > 40) s = s.substr(0, 37) + "...";
     switch (value_.type()) {
     case nlohmann::json::value_t::string: return "the string " + s;
     case nlohmann::json::value_t::object: return "an object";
@@ -151,8 +297,9 @@ bool Node::boolean() const {
 std::string Node::string(std::size_t maxLength) const {
     if (!value_.is_string()) fail("expected a string, got " + describe());
     const auto& s = value_.get_ref<const std::string&>();
-    if (s.size() > maxLength)
-        fail("expected a string of at most " + std::to_string(maxLength) + " characters");
+    if (characterCount(s) > maxLength)
+        fail("expected a string of at most " + std::to_string(maxLength) + " characters, got " +
+             std::to_string(characterCount(s)));
     return s;
 }
 

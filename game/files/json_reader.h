@@ -26,10 +26,22 @@ struct LoadError : std::runtime_error {
     std::string file, path, detail;
 };
 
-/// Parses text as JSON; a syntax error becomes a LoadError with line and column.
+/// The largest file any loader reads (levels, replays, command scripts, settings), bytes.
+inline constexpr std::size_t kMaxFileBytes = 16u << 20;
+/// How deep arrays and objects may nest in any file; the formats need 5 levels.
+inline constexpr int kMaxJsonDepth = 64;
+
+/// Parses text as JSON; a syntax error, nesting deeper than kMaxJsonDepth and a key given
+/// twice in one object each become a LoadError with line and column.
 nlohmann::json parseJson(const std::string& file, const std::string& text);
-/// Reads a whole file; a missing or unreadable file is a LoadError.
+/// Reads a whole regular file of at most kMaxFileBytes; a missing or unreadable file, a
+/// device, a FIFO or a directory, or a larger file is a LoadError before anything is read.
 std::string readFile(const std::string& file);
+/// The text with every byte that is not part of valid UTF-8 (and every control
+/// character but tab) written as \xNN, so a message quoting a file prints cleanly.
+std::string printable(const std::string& text);
+/// Characters (UTF-8 code points) in text; an invalid byte counts as one.
+std::size_t characterCount(const std::string& text);
 
 class Node {
   public:
