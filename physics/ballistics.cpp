@@ -61,9 +61,10 @@ std::vector<FiringSolution> solveFiring(Vec2 from, Vec2 to, double speed, double
     const double disc = B * B - 4.0 * a * dd;
     if (disc < 0.0 || B <= 0.0) return out;
     const double root = std::sqrt(disc);
-    // Larger root directly, smaller through Vieta (T1 T2 = c/a) to avoid cancellation.
+    // Larger root directly, smaller in Vieta's form T = 2c / (B + sqrt(disc)), which
+    // neither cancels nor divides by a (g^2/4 underflows to 0 below g ~ 1e-162).
     const double tLong2 = (B + root) / (2.0 * a);
-    const double tShort2 = dd / (a * tLong2);
+    const double tShort2 = 2.0 * dd / (B + root);
     make(std::sqrt(tShort2));
     if (disc > 0.0) make(std::sqrt(tLong2));
     return out;

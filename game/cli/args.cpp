@@ -32,9 +32,15 @@ Args::Args(std::string verb, int argc, const char* const* argv, int first,
             continue;
         }
         if (!hasValue) {
-            if (i + 1 >= argc) fail("--" + name + " needs a value");
+            // Last on the line with no value: an option that needs one, or an unknown
+            // flag; which it is shows when the verb asks for it (text() or rejectUnknown()).
+            if (i + 1 >= argc) {
+                missingValue_.insert(name);
+                continue;
+            }
             value = argv[++i];
         }
+        if (value.empty()) fail("--" + name + " needs a value, got an empty one");
         if (values_.count(name)) fail("--" + name + " given twice");
         values_[name] = value;
     }
@@ -52,6 +58,7 @@ bool Args::flag(const std::string& name) const {
 
 std::optional<std::string> Args::text(const std::string& name) const {
     asked_.insert(name);
+    if (missingValue_.count(name)) fail("--" + name + " needs a value");
     auto it = values_.find(name);
     if (it == values_.end()) return std::nullopt;
     return it->second;
@@ -60,6 +67,31 @@ std::optional<std::string> Args::text(const std::string& name) const {
 std::string Args::text(const std::string& name, const std::string& fallback) const {
     return text(name).value_or(fallback);
 }
+
+namespace {
+
+/// Decimal notation only: [+-] digits [. digits] [e [+-] digits], at least one digit in
+/// the mantissa. strtod alone would also take "0x10", "inf", "nan" and leading spaces.
+bool decimal(const std::string& s) {
+    std::size_t i = 0, digits = 0;
+    auto isDigit = [&](std::size_t k) { return k < s.size() && s[k] >= '0' && s[k] <= '9'; };
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    while (isDigit(i)) ++i, ++digits;
+    if (i < s.size() && s[i] == '.') {
+        ++i;
+        while (isDigit(i)) ++i, ++digits;
+    }
+    if (digits == 0) return false;
+    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+        ++i;
+        if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+        if (!isDigit(i)) return false;
+        while (isDigit(i)) ++i;
+    }
+    return i == s.size();
+}
+
+} // namespace
 
 double Args::parseNumber(const std::string& name, const std::string& raw, double lo, double hi,
                          const char* what) const {
@@ -70,7 +102,7 @@ double Args::parseNumber(const std::string& name, const std::string& raw, double
     std::ostringstream range;
     range << "a number in [" << lo << ", " << hi << "]" << (what && *what ? " " : "")
           << (what ? what : "");
-    if (raw.empty() || end != s + raw.size() || !std::isfinite(v))
+    if (!decimal(raw) || end != s + raw.size() || !std::isfinite(v))
         fail("--" + name + " expects " + range.str() + ", got '" + raw + "'");
     if (v < lo || v > hi)
         fail("--" + name + " expects " + range.str() + ", got " + raw);
@@ -124,6 +156,8 @@ phys::Vec2 Args::requiredVec2(const std::string& name) const {
 }
 
 void Args::rejectUnknown() const {
+    for (const auto& name : missingValue_)
+        if (!asked_.count(name)) fail("unknown option --" + name);
     for (const auto& [name, value] : values_)
         if (!asked_.count(name)) fail("unknown option --" + name);
     for (const auto& name : flagsGiven_)

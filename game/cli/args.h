@@ -29,7 +29,7 @@ class Args {
          std::set<std::string> flags = {});
 
     bool flag(const std::string& name) const;
-    bool has(const std::string& name) const { return values_.count(name) != 0; }
+    bool has(const std::string& name) const { return values_.count(name) != 0 || missingValue_.count(name) != 0; }
     const std::vector<std::string>& positionals() const { return positionals_; }
 
     std::optional<std::string> text(const std::string& name) const;
@@ -55,6 +55,7 @@ class Args {
     std::string verb_;
     std::map<std::string, std::string> values_;
     std::set<std::string> flagsGiven_;
+    std::set<std::string> missingValue_; ///< options last on the line with no value
     std::set<std::string> flagNames_;
     std::vector<std::string> positionals_;
     mutable std::set<std::string> asked_;

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <ostream>
 
@@ -20,6 +21,11 @@ int runSolve(const Args& args, std::ostream& out) {
     if (from == to) args.fail("--from and --to are the same point; there is nothing to aim at");
 
     const auto solutions = phys::solveFiring(from, to, speed, g);
+    for (const auto& s : solutions)
+        if (!std::isfinite(s.angleDeg) || !std::isfinite(s.flightTime))
+            args.fail("at --gravity " + args.text("gravity", "9.81") +
+                      " m/s^2 the high shot's flight time does not fit in a double; give "
+                      "--gravity 0 for straight flight, or a larger gravity");
     if (json) {
         nlohmann::json j;
         j["solutions"] = nlohmann::json::array();

@@ -133,7 +133,8 @@ own (first-order) error.
   --integrator N  explicit-euler, symplectic-euler (euler-cromer), verlet,
                   velocity-verlet (default), leapfrog, midpoint, rk4, implicit-euler
   --dt S          time step, s (default 1/120)
-  --model M       particle (default); rigid is not yet available (exit 2)
+  --model M       particle (default), or rigid: the same drop as a Box2D circle on a
+                  static floor, to see how close Box2D comes to e^(2k) H
   --discrete      overlap testing with bisection in time instead of continuous
                   (swept-sphere) detection
   --contact M     impulse (default: equation 4 at the time of impact) or penalty
@@ -146,7 +147,7 @@ own (first-order) error.
                    "continuous":true|false,"came_to_rest":true|false,
                    "contact":"impulse"|"penalty","max_penetration_m":..}
 
-Exit codes: 0 ok, 2 bad input (including --model rigid for now).
+Exit codes: 0 ok, 2 bad input.
 )",
      {"discrete"},
      runDrop},

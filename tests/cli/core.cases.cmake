@@ -25,3 +25,15 @@ cli_test(spring_json 0 "\"analytic_position\":.*\"energy_j\":|\"energy_j\":.*\"a
          "spring;--k;100;--mass;1;--x0;0.1;--integrator;symplectic-euler;--dt;0.001;--time;1;--json")
 cli_test(spring_bad_k 2 "--k expects a number" "spring;--k;-1;--mass;1;--x0;1;--time;1")
 cli_test(spring_missing_mass 2 "--mass is required" "spring;--k;1;--x0;1;--time;1")
+# Numbers in decimal notation only; answers that would not be finite numbers are refused;
+# an option with an empty value, or an unknown one last on the line, says so.
+cli_test(solve_hex_speed 2 "--speed expects a number in .*got '0x10'" "solve;--from;0,0;--to;40,0;--speed;0x10")
+cli_test(solve_inf_speed 2 "--speed expects a number in .*got 'inf'" "solve;--from;0,0;--to;40,0;--speed;inf")
+cli_test(solve_tiny_gravity 2 "at --gravity 1e-300 m/s\\^2 the high shot's flight time does not fit in a double"
+         "solve;--from;10,2;--to;50,20;--speed;30;--gravity;1e-300")
+cli_test(solve_small_gravity_low_shot 0 "low   angle   24\\.228 deg"
+         "solve;--from;10,2;--to;50,20;--speed;30;--gravity;1e-9")
+cli_test(solve_unknown_last 2 "unknown option --bogus" "solve;--from;0,0;--to;40,0;--speed;30;--bogus")
+cli_test(solve_value_missing_last 2 "--speed needs a value" "solve;--from;0,0;--to;40,0;--speed")
+cli_test(run_record_empty 2 "--record needs a value, got an empty one"
+         "run;${PROJECT_SOURCE_DIR}/levels/01_earth_basics.json;--record=")

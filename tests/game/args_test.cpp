@@ -47,7 +47,21 @@ TEST(Args, OutOfRangeAndUnknownOptionsAreRefused) {
     EXPECT_NE(errorOf([&] { a.requiredNumber("speed", 0, 100, "m/s"); }).find("got -3"),
               std::string::npos);
     EXPECT_NE(errorOf([&] { a.rejectUnknown(); }).find("unknown option --sped"), std::string::npos);
-    EXPECT_NE(errorOf([] { make({"--speed"}); }).find("--speed needs a value"), std::string::npos);
+    // Last on the line with no value: asked for, it needs one; never asked for, it is
+    // unknown (a flag the verb does not have), not "needs a value".
+    EXPECT_EQ(errorOf([] { make({"--speed"}).requiredNumber("speed", 0, 100, "m/s"); }),
+              "artillery solve: --speed needs a value (see artillery solve --help)");
+    EXPECT_EQ(errorOf([] { make({"--verbose"}).rejectUnknown(); }),
+              "artillery solve: unknown option --verbose (see artillery solve --help)");
+    EXPECT_EQ(errorOf([] { make({"--out="}); }),
+              "artillery solve: --out needs a value, got an empty one (see artillery solve --help)");
+    for (const char* notDecimal : {"0x10", "inf", "nan", " 3", "1e", ".", "+", "3,5"})
+        EXPECT_NE(errorOf([&] { make({"--v", notDecimal}).requiredNumber("v", -1e9, 1e9, ""); })
+                      .find("--v expects a number"),
+                  std::string::npos)
+            << notDecimal;
+    for (const char* decimal : {"16", "-3.5", "+2", ".5", "5.", "1e3", "2.5E-2"})
+        EXPECT_NO_THROW(make({"--v", decimal}).requiredNumber("v", -1e9, 1e9, "")) << decimal;
     EXPECT_NE(errorOf([] { make({"--a", "1", "--a", "2"}); }).find("given twice"),
               std::string::npos);
 }

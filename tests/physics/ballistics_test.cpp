@@ -58,6 +58,20 @@ TEST(FiringSolution, NotesTargetAboveTheCannon) {
 }
 
 // Notes 000: a target 40 m away at the same height.
+// As g -> 0 the direct shot tends to the straight line at constant speed, and stays a
+// finite number even where g^2/4 underflows to zero (g = 1e-200): t = |d| / s to rounding.
+TEST(FiringSolution, VanishingGravityGivesTheStraightShot) {
+    const Vec2 from{10.0, 2.0}, to{50.0, 20.0};
+    const double straightT = length(to - from) / 30.0;
+    const double straightDeg = std::atan2(18.0, 40.0) * 180.0 / std::numbers::pi;
+    for (const double g : {1e-9, 1e-100, 1e-200, 1e-300}) {
+        const auto s = solveFiring(from, to, 30.0, g);
+        ASSERT_FALSE(s.empty()) << g;
+        EXPECT_NEAR(s[0].flightTime, straightT, 1e-9 * straightT) << g;
+        EXPECT_NEAR(s[0].angleDeg, straightDeg, 1e-6) << g;
+    }
+}
+
 TEST(FiringSolution, NotesTargetAtTheSameHeight) {
     struct Case {
         double speed, low, high;
