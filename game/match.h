@@ -185,6 +185,11 @@ class Match {
     bool sandbox() const { return level_.mode == Mode::Sandbox; }
     const GrabState& grab() const { return grab_; }
 
+    /// Test hook of the network desync test (match_tamper.cpp): changes the shell's
+    /// velocity by `dv` outside any command, as a tampered client would. False when no
+    /// shell is in flight.
+    bool perturbShellForTest(phys::Vec2 dv);
+
   private:
     phys::BodyId addBlock(const Block& b);
     void addRope(const Rope& r);
