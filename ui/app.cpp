@@ -3,6 +3,7 @@
 #include "game/cli/verbs.h"
 #include "ui/charts/bench_verb.h"
 #include "ui/game/png_frames.h"
+#include "ui/net/net_verbs.h"
 #include "ui/play/play_verb.h"
 
 #include <string_view>
@@ -22,6 +23,8 @@ std::vector<game::cli::Verb> allVerbs() {
     for (const game::cli::Verb& v : game::cli::verbs())
         all.push_back(std::string_view(v.name) == "run" ? runVerbWithRenderer() : v);
     all.push_back(benchVerb()); // draws its charts with the renderer, so it lives in ui/
+    all.push_back(net::hostVerb()); // sockets live beside the window, not in game/
+    all.push_back(net::joinVerb());
     return all;
 }
 

@@ -1,0 +1,445 @@
+#include "ui/net/net_duel.h"
+
+#include "game/files/json_reader.h"
+#include "game/replay.h"
+
+#include <filesystem>
+#include <thread>
+
+namespace ui::net {
+
+using game::net::Message;
+using game::net::MessageType;
+
+const char* netResultName(NetResult r) {
+    switch (r) {
+    case NetResult::Running: return "running";
+    case NetResult::Over: return "over";
+    case NetResult::Desync: return "desync";
+    case NetResult::Abandoned: return "abandoned";
+    case NetResult::Refused: return "refused";
+    case NetResult::Failed: return "failed";
+    }
+    return "?";
+}
+
+namespace {
+
+/// How long both sides linger after the match to exchange the last checkpoints (s).
+constexpr double kGoodbyeSeconds = 10.0;
+
+Message offerFor(const game::Level& level, const std::string& name, std::uint64_t every) {
+    Message m;
+    m.type = MessageType::Offer;
+    m.version = game::net::kProgramVersion;
+    m.levelHash = level.contentHash;
+    m.levelName = std::filesystem::path(level.file).filename().string();
+    m.name = name;
+    m.checkpointEvery = static_cast<std::uint32_t>(every);
+    return m;
+}
+
+Message reasonMessage(MessageType t, const std::string& why) {
+    Message m;
+    m.type = t;
+    m.reason = why.substr(0, game::net::kMaxReasonBytes);
+    return m;
+}
+
+} // namespace
+
+NetDuel::NetDuel(NetOptions options) : o_(std::move(options)) {
+    names_[o_.host ? 0 : 1] = o_.name;
+}
+
+double NetDuel::since(Clock::time_point t) const {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::vector<std::string> NetDuel::takeLog() {
+    std::vector<std::string> out;
+    out.swap(log_);
+    return out;
+}
+
+bool NetDuel::start(std::string& why) {
+    if (o_.host) {
+        try {
+            level_ = game::loadLevel(o_.levelFile);
+        } catch (const std::exception& e) {
+            why = e.what();
+            return false;
+        }
+        if (level_->mode != game::Mode::Duel || level_->cannons.size() != 2) {
+            why = o_.levelFile + ": a network duel needs a duel level with two cannons";
+            return false;
+        }
+        link_ = Link::listen(o_.bindAddress, o_.port, 8, why);
+        if (!link_) return false;
+        game::net::LockstepOptions lo;
+        lo.localCannon = 0;
+        lo.autoplay = o_.autoplay;
+        lo.tamperTick = o_.tamperTick;
+        lockstep_ = std::make_unique<game::net::Lockstep>(*level_, lo);
+        log_.push_back("hosting " + std::filesystem::path(o_.levelFile).filename().string() + " on " +
+                       o_.bindAddress + ":" + std::to_string(link_->port()));
+        return true;
+    }
+    link_ = Link::connect(o_.address, o_.port, why);
+    if (!link_) return false;
+    log_.push_back("connecting to " + o_.address + ":" + std::to_string(o_.port));
+    return true;
+}
+
+void NetDuel::finish(NetResult r, std::string message) {
+    if (result_ != NetResult::Running) return;
+    result_ = r;
+    message_ = std::move(message);
+    log_.push_back(message_);
+    flushOutboxes();
+    save();
+    if (link_) {
+        if (player_) link_->close(player_);
+        if (server_) link_->close(server_);
+        for (PeerId s : spectators_) link_->close(s);
+        // Let the goodbyes leave before the socket closes.
+        for (int i = 0; i < 20; ++i) {
+            const LinkEvent e = link_->poll(10);
+            if (e.kind == LinkEvent::Kind::None && i > 5) break;
+        }
+    }
+}
+
+void NetDuel::save() {
+    if (o_.recordFile.empty() || !lockstep_ || !level_) return;
+    try {
+        game::saveReplay(o_.recordFile, lockstep_->recording(level_->file));
+        log_.push_back("replay saved to " + o_.recordFile);
+    } catch (const std::exception& e) {
+        log_.push_back(std::string("could not save the replay: ") + e.what());
+    }
+}
+
+void NetDuel::closePeer(PeerId peer, const std::string& why) {
+    log_.push_back("closing " + link_->address(peer) + ": " + why);
+    link_->send(peer, reasonMessage(MessageType::Bye, why));
+    link_->close(peer);
+    greeted_.erase(peer);
+    spectators_.erase(peer);
+    if (peer == player_) {
+        player_ = nullptr;
+        paused_ = true;
+        droppedAt_ = Clock::now();
+    }
+}
+
+std::string NetDuel::submit(const game::Command& c) {
+    if (!lockstep_ || result_ != NetResult::Running) return "the match is not running";
+    if (lockstep_->localCannon() == game::net::kSpectator) return "spectators watch only";
+    return lockstep_->submit(c);
+}
+
+void NetDuel::hostHello(PeerId peer, const Message& m) {
+    const std::string levelName = std::filesystem::path(level_->file).filename().string();
+    if (m.version != game::net::kProgramVersion) {
+        const std::string why = "program version differs: host runs '" + std::string(game::net::kProgramVersion) +
+                                "', " + m.name + " runs '" + m.version + "'";
+        link_->send(peer, reasonMessage(MessageType::Refuse, why));
+        return closePeer(peer, why);
+    }
+    if (m.levelHash != level_->contentHash) {
+        const std::string why = "level differs: host plays " + levelName + " (content hash " + level_->contentHash +
+                                "), " + m.name +
+                                (m.levelHash.empty() ? " has no level with that name" : " has content hash " + m.levelHash);
+        link_->send(peer, reasonMessage(MessageType::Refuse, why));
+        return closePeer(peer, why);
+    }
+    greeted_.erase(peer);
+    Message welcome;
+    welcome.type = MessageType::Welcome;
+    if (m.spectator) {
+        spectators_.insert(peer);
+        welcome.cannon = -1;
+        welcome.name = names_[0];
+        link_->send(peer, welcome);
+        for (const Message& c : lockstep_->catchUp(0, true)) link_->send(peer, c);
+        log_.push_back("spectator " + m.name + " joined at tick " + std::to_string(lockstep_->match().tick()));
+        return;
+    }
+    if (player_ && m.name == names_[1]) {
+        // The same player again from a new connection: its old one went stale before
+        // the timeout noticed (a cut cable). The new one takes over.
+        link_->cut(player_);
+        player_ = nullptr;
+    }
+    if (player_) {
+        const std::string why = "the match already has two players (join with --spectate to watch)";
+        link_->send(peer, reasonMessage(MessageType::Refuse, why));
+        return closePeer(peer, why);
+    }
+    player_ = peer;
+    names_[1] = m.name;
+    welcome.cannon = 1;
+    welcome.name = names_[0];
+    welcome.commandIndex = lockstep_->commandCount();
+    link_->send(peer, welcome);
+    Link::setTimeout(peer, 5000);
+    if (playerEverJoined_) {
+        log_.push_back(m.name + " is back at tick " + std::to_string(m.tick) + "; resuming from tick " +
+                       std::to_string(lockstep_->match().tick()));
+    } else {
+        log_.push_back(m.name + " joined from " + link_->address(peer));
+    }
+    playerEverJoined_ = true;
+    paused_ = false;
+    // Everything the player lacks: the host's commands from its count on, and our mark.
+    for (const Message& c : lockstep_->catchUp(m.commandIndex, false))
+        if (c.type != MessageType::Command || c.player == 0) link_->send(peer, c);
+}
+
+void NetDuel::hostMessage(PeerId peer, const Message& m) {
+    if (greeted_.count(peer)) {
+        if (m.type != MessageType::Hello) return closePeer(peer, std::string("expected hello, got ") + messageName(m.type));
+        return hostHello(peer, m);
+    }
+    if (spectators_.count(peer)) {
+        if (m.type == MessageType::Bye) {
+            spectators_.erase(peer);
+            return;
+        }
+        return closePeer(peer, "spectators send nothing but bye");
+    }
+    if (peer != player_) return;
+    if (m.type == MessageType::Bye) {
+        peerBye_ = true;
+        peerByeReason_ = m.reason;
+        return;
+    }
+    if (std::string why = lockstep_->receive(m); !why.empty()) closePeer(peer, "protocol error: " + why);
+}
+
+void NetDuel::joinMessage(const Message& m) {
+    if (!level_) {
+        if (m.type != MessageType::Offer) return finish(NetResult::Failed, std::string("expected the host's offer, got ") + game::net::messageName(m.type));
+        names_[0] = m.name;
+        Message hello;
+        hello.type = MessageType::Hello;
+        hello.version = game::net::kProgramVersion;
+        hello.name = o_.name;
+        hello.spectator = o_.spectate;
+        const std::filesystem::path file = std::filesystem::path(o_.levelsDir) / m.levelName;
+        try {
+            game::Level level = game::loadLevel(file.string());
+            hello.levelHash = level.contentHash;
+            if (level.contentHash == m.levelHash) level_ = std::move(level);
+        } catch (const std::exception&) {
+            // No such level here: the empty hash tells the host, which says what differs.
+        }
+        link_->send(server_, hello);
+        return;
+    }
+    if (!welcomed_) {
+        if (m.type == MessageType::Refuse) return finish(NetResult::Refused, "the host refused: " + m.reason);
+        if (m.type == MessageType::Bye) return finish(NetResult::Refused, "the host closed: " + m.reason);
+        if (m.type == MessageType::Offer) { // a reconnect: the host offers again
+            Message hello;
+            hello.type = MessageType::Hello;
+            hello.version = game::net::kProgramVersion;
+            hello.name = o_.name;
+            hello.spectator = o_.spectate;
+            hello.levelHash = level_->contentHash;
+            if (lockstep_) {
+                hello.commandIndex = lockstep_->commandCount();
+                hello.tick = static_cast<std::uint32_t>(lockstep_->match().tick());
+            }
+            link_->send(server_, hello);
+            return;
+        }
+        if (m.type != MessageType::Welcome) return finish(NetResult::Failed, std::string("expected welcome, got ") + game::net::messageName(m.type));
+        welcomed_ = true;
+        paused_ = false;
+        names_[0] = m.name;
+        if (!lockstep_) {
+            game::net::LockstepOptions lo;
+            lo.localCannon = m.cannon;
+            lo.autoplay = o_.autoplay;
+            lo.tamperTick = o_.tamperTick;
+            lockstep_ = std::make_unique<game::net::Lockstep>(*level_, lo);
+            log_.push_back(std::string(o_.spectate ? "watching " : "playing ") + std::filesystem::path(level_->file).filename().string() +
+                           " against host " + m.name);
+        } else {
+            log_.push_back("back in the match at tick " + std::to_string(lockstep_->match().tick()));
+            lockstep_->resume(m.commandIndex);
+        }
+        return;
+    }
+    if (m.type == MessageType::Bye) {
+        peerBye_ = true;
+        peerByeReason_ = m.reason;
+        return;
+    }
+    if (std::string why = lockstep_->receive(m); !why.empty()) {
+        link_->send(server_, reasonMessage(MessageType::Bye, "protocol error: " + why));
+        finish(NetResult::Failed, "protocol error from the host: " + why);
+    }
+}
+
+void NetDuel::onEvent(const LinkEvent& e) {
+    switch (e.kind) {
+    case LinkEvent::Kind::None: return;
+    case LinkEvent::Kind::Connected:
+        if (o_.host) {
+            greeted_.insert(e.peer);
+            link_->send(e.peer, offerFor(*level_, names_[0], game::kDefaultCheckpointEvery));
+        } else {
+            server_ = e.peer;
+            Link::setTimeout(e.peer, 5000);
+        }
+        return;
+    case LinkEvent::Kind::Malformed:
+        if (o_.host) return closePeer(e.peer, "malformed message: " + e.error);
+        return finish(NetResult::Failed, "malformed message from the host: " + e.error);
+    case LinkEvent::Kind::Message:
+        if (o_.host) return hostMessage(e.peer, e.message);
+        return joinMessage(e.message);
+    case LinkEvent::Kind::Disconnected:
+        if (o_.host) {
+            greeted_.erase(e.peer);
+            spectators_.erase(e.peer);
+            if (e.peer == player_) {
+                player_ = nullptr;
+                if (lockstep_->over() || peerBye_) return;
+                paused_ = true;
+                droppedAt_ = Clock::now();
+                log_.push_back(names_[1] + " dropped at tick " + std::to_string(lockstep_->match().tick()) +
+                               "; the match is paused for up to " + std::to_string(static_cast<int>(o_.timeoutSeconds)) + " s");
+            }
+            return;
+        }
+        server_ = nullptr;
+        if (!level_ || !welcomed_) {
+            if (!lockstep_) return finish(NetResult::Failed, "could not connect to " + o_.address + ":" + std::to_string(o_.port));
+        }
+        if (lockstep_ && (lockstep_->over() || peerBye_)) return;
+        if (!paused_) {
+            paused_ = true;
+            droppedAt_ = Clock::now();
+            log_.push_back("connection to the host lost at tick " +
+                           std::to_string(lockstep_ ? lockstep_->match().tick() : 0) + "; reconnecting");
+        }
+        welcomed_ = false;
+        reconnect();
+        return;
+    }
+}
+
+void NetDuel::reconnect() {
+    std::string why;
+    link_ = Link::connect(o_.address, o_.port, why);
+    if (!link_) log_.push_back("reconnect failed: " + why);
+}
+
+void NetDuel::flushOutboxes() {
+    if (!lockstep_ || !link_) return;
+    for (const Message& m : lockstep_->takeOutbox()) {
+        if (o_.host && player_) link_->send(player_, m);
+        if (!o_.host && server_ && welcomed_) link_->send(server_, m);
+    }
+    for (const Message& m : lockstep_->takeSpectatorOutbox())
+        for (PeerId s : spectators_) link_->send(s, m);
+    link_->flush();
+}
+
+void NetDuel::stepMatch(std::uint64_t maxTicks) {
+    game::net::Lockstep& ls = *lockstep_;
+    for (std::uint64_t i = 0; i < maxTicks; ++i) {
+        if (o_.quitAtTick && ls.match().tick() >= *o_.quitAtTick) {
+            // Test hook: vanish like a crashed process, no goodbye.
+            if (server_) link_->cut(server_);
+            server_ = nullptr;
+            return finish(NetResult::Failed, "left without a goodbye at tick " + std::to_string(ls.match().tick()) + " (test hook)");
+        }
+        if (o_.dropAtTick && ls.match().tick() >= *o_.dropAtTick && server_) {
+            o_.dropAtTick.reset();
+            log_.push_back("cutting the connection at tick " + std::to_string(ls.match().tick()) + " (test hook)");
+            flushOutboxes();
+            link_->cut(server_);
+            server_ = nullptr;
+            welcomed_ = false;
+            paused_ = true;
+            droppedAt_ = Clock::now();
+            std::this_thread::sleep_for(std::chrono::milliseconds(300));
+            reconnect();
+            return;
+        }
+        while (nextScript_ < o_.script.size() && ls.localTurn() && o_.script[nextScript_].tick <= ls.match().tick()) {
+            if (std::string why = ls.submit(o_.script[nextScript_]); !why.empty())
+                log_.push_back("tick " + std::to_string(ls.match().tick()) + ": " +
+                               game::commandName(o_.script[nextScript_].kind) + " refused: " + why);
+            ++nextScript_;
+        }
+        if (!ls.canStep()) return;
+        ls.step();
+    }
+}
+
+bool NetDuel::pump(std::uint32_t waitMs, std::uint64_t maxTicks) {
+    if (result_ != NetResult::Running) return false;
+    if (!link_) {
+        if (since(droppedAt_) > o_.timeoutSeconds)
+            finish(NetResult::Abandoned, "could not get back to the host within " + std::to_string(static_cast<int>(o_.timeoutSeconds)) + " s");
+        else
+            reconnect();
+        return result_ == NetResult::Running;
+    }
+    for (LinkEvent e = link_->poll(waitMs); e.kind != LinkEvent::Kind::None && result_ == NetResult::Running; e = link_->poll(0))
+        onEvent(e);
+    if (result_ != NetResult::Running) return false;
+    const bool connected = o_.host ? player_ != nullptr : (server_ != nullptr && welcomed_);
+    if (lockstep_ && connected && !paused_) stepMatch(maxTicks);
+    if (result_ != NetResult::Running) return false;
+    flushOutboxes();
+    if (!lockstep_ || (!o_.host && !welcomed_ && !paused_)) {
+        if (since(started_) > o_.waitSeconds && !playerEverJoined_ && !lockstep_)
+            finish(NetResult::Failed, "nobody answered within " + std::to_string(static_cast<int>(o_.waitSeconds)) + " s");
+        return result_ == NetResult::Running;
+    }
+    const game::net::Lockstep& ls = *lockstep_;
+    const std::string tick = std::to_string(ls.match().tick());
+    if (!ls.stopped().empty()) {
+        const bool desync = ls.stopped().rfind("desync", 0) == 0;
+        finish(desync ? NetResult::Desync : NetResult::Failed, ls.stopped());
+        return false;
+    }
+    if (o_.host && !playerEverJoined_) {
+        if (since(started_) > o_.waitSeconds)
+            finish(NetResult::Failed, "no player joined within " + std::to_string(static_cast<int>(o_.waitSeconds)) + " s");
+        return result_ == NetResult::Running;
+    }
+    if (paused_ && since(droppedAt_) > o_.timeoutSeconds) {
+        finish(NetResult::Abandoned, (o_.host ? names_[1] : std::string("the host")) + " did not return within " +
+                                         std::to_string(static_cast<int>(o_.timeoutSeconds)) + " s: the match ends at tick " + tick);
+        return false;
+    }
+    if (ls.over()) {
+        if (!byeSent_) {
+            byeSent_ = true;
+            overAt_ = Clock::now();
+            const Message bye = reasonMessage(MessageType::Bye, "match over");
+            if (o_.host && player_) link_->send(player_, bye);
+            if (!o_.host && server_) link_->send(server_, bye);
+            link_->flush();
+        }
+        const int winner = ls.match().winner();
+        const std::string who = winner < 0 ? "a draw" : "cannon " + std::to_string(winner) + " (" + names_[winner] + ") wins";
+        const bool spectator = ls.localCannon() == game::net::kSpectator;
+        if (peerBye_ || spectator || (o_.host && !player_) || since(*overAt_) > kGoodbyeSeconds)
+            finish(NetResult::Over, "match over at tick " + tick + ": " + who + ", final hash " + game::hex(ls.match().hash()));
+        return result_ == NetResult::Running;
+    }
+    if (peerBye_ && !ls.canStep() && ls.pending() == 0)
+        finish(NetResult::Failed, "the peer left at tick " + tick + ": " + peerByeReason_);
+    return result_ == NetResult::Running;
+}
+
+} // namespace ui::net

@@ -1,0 +1,113 @@
+// A duel over the network, one side of it: the host (cannon 0, and the spectators'
+// source), a joining player (cannon 1) or a spectator. It owns the ENet link and the
+// lockstep session and is driven by pump() — from the headless verbs' loop or once per
+// frame by the window — so the same code runs with and without a screen.
+//
+// Timing lives here, at the edge (wall-clock timeouts for a dropped peer); the match
+// itself advances only by ticks, whatever the network does.
+#pragma once
+
+#include "game/level.h"
+#include "game/net/lockstep.h"
+#include "ui/net/enet_link.h"
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace ui::net {
+
+inline constexpr std::uint16_t kDefaultPort = 7777;
+
+struct NetOptions {
+    bool host = true;
+    // host
+    std::string levelFile;
+    std::string bindAddress = "127.0.0.1";
+    std::uint16_t port = kDefaultPort; ///< 0: any free port (printed)
+    // join
+    std::string address = "127.0.0.1";
+    std::string levelsDir = "levels"; ///< where the joiner looks for the host's level
+    bool spectate = false;
+    // both
+    std::string name = "player";
+    bool autoplay = false;
+    std::vector<game::Command> script; ///< local commands at their ticks (own turns)
+    std::string recordFile;
+    double timeoutSeconds = 60.0; ///< how long a dropped peer may take to return
+    double waitSeconds = 120.0;   ///< how long to wait for the other side to appear
+    // test hooks
+    std::optional<std::uint64_t> tamperTick; ///< perturb the shell from this tick on
+    std::optional<std::uint64_t> dropAtTick; ///< cut the connection once, then reconnect
+    std::optional<std::uint64_t> quitAtTick; ///< vanish at this tick without a goodbye
+};
+
+enum class NetResult { Running, Over, Desync, Abandoned, Refused, Failed };
+const char* netResultName(NetResult r);
+
+class NetDuel {
+  public:
+    explicit NetDuel(NetOptions options);
+    /// Listens (host) or connects (join). False with `why` on failure.
+    bool start(std::string& why);
+    /// Services the network for up to `waitMs`, then runs at most `maxTicks` ticks.
+    /// Returns false once the duel is finished (result() says how).
+    bool pump(std::uint32_t waitMs, std::uint64_t maxTicks);
+    /// A command from the window for the local cannon ("" or why refused).
+    std::string submit(const game::Command& c);
+
+    NetResult result() const { return result_; }
+    const std::string& message() const { return message_; }
+    std::uint16_t port() const { return link_ ? link_->port() : 0; }
+    /// Null until the match starts (a joiner learns the level from the host).
+    const game::net::Lockstep* lockstep() const { return lockstep_.get(); }
+    const game::Level* level() const { return level_ ? &*level_ : nullptr; }
+    /// Lines for the log since the last call.
+    std::vector<std::string> takeLog();
+    /// The players' names, cannon 0 then 1 ("" while unknown).
+    const std::string& playerName(int cannon) const { return names_[cannon == 0 ? 0 : 1]; }
+    bool paused() const { return paused_; }
+    /// Saves the recording now (when --record was given).
+    void save();
+
+  private:
+    using Clock = std::chrono::steady_clock;
+    void onEvent(const LinkEvent& e);
+    void hostMessage(PeerId peer, const game::net::Message& m);
+    void joinMessage(const game::net::Message& m);
+    void hostHello(PeerId peer, const game::net::Message& m);
+    void stepMatch(std::uint64_t maxTicks);
+    void flushOutboxes();
+    void finish(NetResult r, std::string message);
+    void closePeer(PeerId peer, const std::string& why);
+    void reconnect();
+    double since(Clock::time_point t) const;
+
+    NetOptions o_;
+    std::unique_ptr<Link> link_;
+    std::optional<game::Level> level_;
+    std::unique_ptr<game::net::Lockstep> lockstep_;
+    NetResult result_ = NetResult::Running;
+    std::string message_;
+    std::vector<std::string> log_;
+    std::string names_[2];
+    // host
+    PeerId player_ = nullptr;
+    bool playerEverJoined_ = false;
+    std::set<PeerId> spectators_, greeted_;
+    // join
+    PeerId server_ = nullptr;
+    bool welcomed_ = false;
+    // both
+    bool paused_ = false;
+    Clock::time_point started_ = Clock::now(), droppedAt_;
+    std::optional<Clock::time_point> overAt_;
+    bool byeSent_ = false, peerBye_ = false, dropped_ = false;
+    std::string peerByeReason_;
+    std::size_t nextScript_ = 0;
+};
+
+} // namespace ui::net

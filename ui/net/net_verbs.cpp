@@ -1,0 +1,153 @@
+#include "ui/net/net_verbs.h"
+
+#include "game/replay.h"
+#include "ui/net/net_duel.h"
+
+#include <chrono>
+#include <iostream>
+
+namespace ui::net {
+
+namespace {
+
+using game::cli::Args;
+
+const char* const kHostUsage = R"(usage: artillery host [LEVEL] [--port P] [--bind ADDR] [--name NAME]
+           (--commands FILE | --autoplay) [--record FILE] [--timeout S] [--wait S] [--json]
+
+Hosts a duel over the network (ENet over UDP): the host plays cannon 0, the player who
+joins plays cannon 1, spectators may watch. Lockstep on the command stream: each side
+sends only its own commands, and both compare state hashes at every replay checkpoint.
+LEVEL is a duel level (default levels/10_duel.json).
+
+  --port P          UDP port (default 7777; 0 picks a free one, printed)
+  --bind ADDR       address to listen on (default 127.0.0.1; 0.0.0.0 for every interface)
+  --name NAME       your name (at most 24 printable characters; default host)
+  --commands FILE   a JSON commands list for your cannon, applied at their ticks in your turns
+  --autoplay        the computer plays your cannon
+  --record FILE     save the match as a replay (also when it ends by desync or timeout)
+  --timeout S       how long a dropped player may take to come back (default 60 s)
+  --wait S          how long to wait for a player to join (default 120 s)
+  --json            {"result":"over|desync|abandoned|refused|failed","message":..,
+                     "ticks":n,"final_hash":"hex","winner":i}
+Exit: 0 the match was played to the end, 1 it was not (desync, abandoned, refused),
+2 bad input. See docs/network.md.
+)";
+
+const char* const kJoinUsage = R"(usage: artillery join HOST[:P] [--name NAME] [--spectate]
+           (--commands FILE | --autoplay) [--record FILE] [--levels DIR] [--timeout S] [--json]
+
+Joins a duel hosted with `artillery host` and plays cannon 1, or watches it with
+--spectate. The level is the host's: it is looked up by file name in DIR (default
+./levels) and must have the same content hash; the program version must match too.
+
+  HOST[:P]          the host's address and port (default port 7777)
+  --name NAME       your name (default guest)
+  --spectate        watch only (the host's read-only command stream)
+  --commands FILE   a JSON commands list for your cannon, applied at their ticks in your turns
+  --autoplay        the computer plays your cannon
+  --record FILE     save the match as a replay
+  --levels DIR      where to look for the host's level (default levels)
+  --timeout S       how long to keep trying to reconnect after a drop (default 60 s)
+  --json            as for host
+Exit: 0 the match was played to the end, 1 it was not, 2 bad input.
+)";
+
+int runNet(const Args& args, std::ostream& out, bool host) {
+    NetOptions o;
+    o.host = host;
+    args.text("<positional>"); // LEVEL or HOST[:P]
+    const auto& pos = args.positionals();
+    if (pos.size() > 1) args.fail("takes one " + std::string(host ? "LEVEL" : "HOST[:P]") + ", got " + std::to_string(pos.size()));
+    if (host) {
+        o.levelFile = pos.empty() ? "levels/10_duel.json" : pos[0];
+        o.port = static_cast<std::uint16_t>(args.integer("port", kDefaultPort, 0, 65535));
+        o.bindAddress = args.text("bind", "127.0.0.1");
+    } else {
+        if (pos.empty()) args.fail("needs the host's address, HOST[:P]");
+        const auto a = parseAddress(pos[0], kDefaultPort);
+        if (!a) args.fail("'" + pos[0] + "' is not HOST[:P] with P in 1..65535");
+        o.address = a->first;
+        o.port = a->second;
+        o.spectate = args.flag("spectate");
+        o.levelsDir = args.text("levels", "levels");
+    }
+    o.name = args.text("name", host ? "host" : "guest");
+    if (o.name.empty() || o.name.size() > game::net::kMaxNameBytes)
+        args.fail("--name expects 1 to 24 printable characters");
+    for (char c : o.name)
+        if (c < 0x20 || c > 0x7e) args.fail("--name expects printable ASCII characters");
+    o.autoplay = args.flag("autoplay");
+    o.recordFile = args.text("record", "");
+    o.timeoutSeconds = args.number("timeout", 60.0, 0.1, 86400.0, "s");
+    o.waitSeconds = args.number("wait", 120.0, 0.1, 86400.0, "s");
+    const double limitSeconds = args.number("limit", 3600.0, 1.0, 86400.0, "s");
+    if (args.has("tamper-at-tick")) o.tamperTick = static_cast<std::uint64_t>(args.integer("tamper-at-tick", 0, 0, 1'000'000));
+    if (args.has("drop-at-tick")) o.dropAtTick = static_cast<std::uint64_t>(args.integer("drop-at-tick", 0, 0, 1'000'000));
+    if (args.has("quit-at-tick")) o.quitAtTick = static_cast<std::uint64_t>(args.integer("quit-at-tick", 0, 0, 1'000'000));
+    if (auto file = args.text("commands")) {
+        try {
+            o.script = game::loadCommands(*file);
+        } catch (const std::exception& e) {
+            std::cerr << e.what() << "\n";
+            return game::cli::kBadInput;
+        }
+    }
+    const bool json = args.flag("json");
+    args.rejectUnknown();
+    if (o.autoplay && !o.script.empty()) args.fail("takes --commands or --autoplay, not both");
+    if (!o.spectate && !o.autoplay && !args.has("commands"))
+        args.fail("needs --commands FILE or --autoplay (or --spectate) to play without a window");
+
+    NetDuel duel(o);
+    std::string why;
+    if (!duel.start(why)) {
+        std::cerr << "artillery " << (host ? "host" : "join") << ": " << why << "\n";
+        return game::cli::kBadInput;
+    }
+    std::ostream& log = json ? std::cerr : out;
+    const auto started = std::chrono::steady_clock::now();
+    auto printLog = [&] {
+        for (const std::string& line : duel.takeLog()) log << line << std::endl;
+    };
+    printLog();
+    // Bounded: every wait inside has its own timeout, and the whole run has --limit.
+    while (duel.pump(5, 240)) {
+        printLog();
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > limitSeconds) {
+            duel.save();
+            log << "stopped after --limit " << limitSeconds << " s\n";
+            printLog();
+            return game::cli::kCheckFailed;
+        }
+    }
+    printLog();
+    if (json) {
+        const auto* ls = duel.lockstep();
+        std::string msg;
+        for (char c : duel.message()) msg += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+        out << "{\"result\":\"" << netResultName(duel.result()) << "\",\"message\":\"" << msg << "\",\"ticks\":"
+            << (ls ? ls->match().tick() : 0) << ",\"final_hash\":\"" << (ls ? game::hex(ls->match().hash()) : "")
+            << "\",\"winner\":" << (ls ? ls->match().winner() : -1) << "}\n";
+    }
+    return duel.result() == NetResult::Over ? game::cli::kOk : game::cli::kCheckFailed;
+}
+
+int runHost(const Args& args, std::ostream& out) { return runNet(args, out, true); }
+int runJoin(const Args& args, std::ostream& out) { return runNet(args, out, false); }
+
+} // namespace
+
+const game::cli::Verb& hostVerb() {
+    static const game::cli::Verb v{"host", "host a duel over the network (lockstep on commands)", kHostUsage,
+                                   {"autoplay"}, runHost};
+    return v;
+}
+
+const game::cli::Verb& joinVerb() {
+    static const game::cli::Verb v{"join", "join or watch a networked duel", kJoinUsage,
+                                   {"autoplay", "spectate"}, runJoin};
+    return v;
+}
+
+} // namespace ui::net
