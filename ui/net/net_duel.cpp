@@ -219,8 +219,9 @@ void NetDuel::hostMessage(PeerId peer, const Message& m) {
 }
 
 void NetDuel::joinMessage(const Message& m) {
-    if (!level_) {
+    if (!offered_) {
         if (m.type != MessageType::Offer) return finish(NetResult::Failed, std::string("expected the host's offer, got ") + game::net::messageName(m.type));
+        offered_ = true;
         names_[0] = m.name;
         Message hello;
         hello.type = MessageType::Hello;
@@ -241,7 +242,7 @@ void NetDuel::joinMessage(const Message& m) {
     if (!welcomed_) {
         if (m.type == MessageType::Refuse) return finish(NetResult::Refused, "the host refused: " + m.reason);
         if (m.type == MessageType::Bye) return finish(NetResult::Refused, "the host closed: " + m.reason);
-        if (m.type == MessageType::Offer) { // a reconnect: the host offers again
+        if (m.type == MessageType::Offer && level_) { // a reconnect: the host offers again
             Message hello;
             hello.type = MessageType::Hello;
             hello.version = game::net::kProgramVersion;

@@ -100,6 +100,7 @@ class NetDuel {
     std::set<PeerId> spectators_, greeted_;
     // join
     PeerId server_ = nullptr;
+    bool offered_ = false;
     bool welcomed_ = false;
     // both
     bool paused_ = false;

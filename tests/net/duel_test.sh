@@ -1,0 +1,113 @@
+#!/bin/bash
+# Networked duels between real processes over 127.0.0.1 (ports chosen by the system,
+# so tests running side by side never collide). Every wait is bounded.
+#   duel_test.sh EXE RELAY SOURCE_DIR WORK_DIR MODE
+# MODE: loopback | relay | tamper | reconnect | timeout | refuse
+set -u
+EXE=$1 RELAY=$2 SRC=$3 WORK=$4 MODE=$5
+rm -rf "$WORK" && mkdir -p "$WORK" && cd "$SRC" || exit 2
+fail() { echo "FAIL ($MODE): $*"; for f in "$WORK"/*.log; do echo "--- $f"; cat "$f"; done; exit 1; }
+
+# Waits (at most 10 s) for "on 127.0.0.1:PORT" in a log and prints PORT.
+port_of() {
+    for _ in $(seq 100); do
+        p=$(sed -n 's/.* on 127\.0\.0\.1:\([0-9]*\).*/\1/p' "$1" | head -1)
+        [ -n "$p" ] && { echo "$p"; return 0; }
+        sleep 0.1
+    done
+    return 1
+}
+
+# An uninterrupted duel: both sides autoplayed, the reference for every mode.
+duel() { # NAME HOST_ARGS -- JOIN_ARGS (the join target is filled in)
+    local name=$1; shift
+    local hargs=() jargs=() target_relay=""
+    while [ "$1" != "--" ]; do hargs+=("$1"); shift; done; shift
+    jargs=("$@")
+    timeout 120 "$EXE" host levels/10_duel.json --port 0 --autoplay --name ada \
+        --record "$WORK/$name.host.json" "${hargs[@]}" > "$WORK/$name.host.log" 2>&1 &
+    HOST_PID=$!
+    HP=$(port_of "$WORK/$name.host.log") || fail "the host did not start"
+    TARGET=$HP
+    if [ "${USE_RELAY:-0}" = 1 ]; then
+        timeout 120 "$RELAY" --to "$HP" --drop 0.1 --delay-ms 40 --seed 7 --seconds 100 > "$WORK/$name.relay.log" 2>&1 &
+        RELAY_PID=$!
+        TARGET=$(port_of "$WORK/$name.relay.log") || fail "the relay did not start"
+    fi
+    timeout 120 "$EXE" join "127.0.0.1:$TARGET" --autoplay --name bob \
+        --record "$WORK/$name.join.json" "${jargs[@]}" > "$WORK/$name.join.log" 2>&1
+    JOIN_RC=$?
+    wait $HOST_PID; HOST_RC=$?
+    if [ "${USE_RELAY:-0}" = 1 ]; then kill -TERM "$RELAY_PID" 2>/dev/null; wait "$RELAY_PID" 2>/dev/null; fi
+    return 0
+}
+
+final_hash() { sed -n 's/.*"final_hash": *"\([0-9a-f]*\)".*/\1/p' "$1" | head -1; }
+
+case $MODE in
+loopback)
+    # With a spectator watching from the start.
+    timeout 120 "$EXE" host levels/10_duel.json --port 0 --autoplay --name ada --record "$WORK/h.json" > "$WORK/h.log" 2>&1 &
+    H=$!
+    HP=$(port_of "$WORK/h.log") || fail "the host did not start"
+    timeout 120 "$EXE" join "127.0.0.1:$HP" --spectate --name eve --record "$WORK/s.json" > "$WORK/s.log" 2>&1 &
+    S=$!
+    sleep 0.3
+    timeout 120 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob --record "$WORK/j.json" > "$WORK/j.log" 2>&1 || fail "join exited $?"
+    wait $H || fail "host exited $?"
+    wait $S || fail "spectator exited $?"
+    cmp "$WORK/h.json" "$WORK/j.json" || fail "the two replays differ"
+    cmp "$WORK/h.json" "$WORK/s.json" || fail "the spectator's replay differs"
+    "$EXE" replay verify "$WORK/h.json" || fail "the host's replay does not verify"
+    "$EXE" replay verify "$WORK/j.json" || fail "the joiner's replay does not verify"
+    grep -q "match over at tick .*: cannon . (.*) wins, final hash $(final_hash "$WORK/h.json")" "$WORK/j.log" || fail "no result line"
+    grep -q "spectator eve joined" "$WORK/h.log" || fail "the spectator was not announced"
+    ;;
+relay)
+    duel plain --
+    [ $JOIN_RC = 0 ] && [ $HOST_RC = 0 ] || fail "plain duel exited $HOST_RC/$JOIN_RC"
+    USE_RELAY=1 duel lossy --
+    [ $JOIN_RC = 0 ] && [ $HOST_RC = 0 ] || fail "lossy duel exited $HOST_RC/$JOIN_RC"
+    grep -q "dropped [1-9]" "$WORK/lossy.relay.log" || fail "the relay dropped nothing"
+    cmp "$WORK/lossy.host.json" "$WORK/lossy.join.json" || fail "the replays through the relay differ"
+    cmp "$WORK/plain.host.json" "$WORK/lossy.host.json" || fail "the relay changed the match"
+    "$EXE" replay verify "$WORK/lossy.join.json" || fail "the replay does not verify"
+    ;;
+tamper)
+    duel tamper -- --tamper-at-tick 0
+    [ $JOIN_RC = 1 ] && [ $HOST_RC = 1 ] || fail "expected exit 1 on both sides, got $HOST_RC/$JOIN_RC"
+    grep -qx "desync at tick 120 (particles differ)" "$WORK/tamper.host.log" || fail "host: no desync message"
+    grep -qx "desync at tick 120 (particles differ)" "$WORK/tamper.join.log" || fail "joiner: no desync message"
+    # Both keep their replay; the honest host's verifies, the tampered one's does not.
+    "$EXE" replay verify "$WORK/tamper.host.json" || fail "the host's replay does not verify"
+    "$EXE" replay verify "$WORK/tamper.join.json" > "$WORK/verify.log" 2>&1 && fail "the tampered replay verifies"
+    grep -q "tick 120" "$WORK/verify.log" || fail "verify does not name tick 120"
+    ;;
+reconnect)
+    duel plain --
+    [ $HOST_RC = 0 ] || fail "plain duel exited $HOST_RC"
+    duel cut -- --drop-at-tick 3000
+    [ $JOIN_RC = 0 ] && [ $HOST_RC = 0 ] || fail "interrupted duel exited $HOST_RC/$JOIN_RC"
+    grep -q "cutting the connection at tick 3000" "$WORK/cut.join.log" || fail "the connection was not cut"
+    grep -q "back in the match" "$WORK/cut.join.log" || fail "the joiner did not come back"
+    [ "$(final_hash "$WORK/cut.host.json")" = "$(final_hash "$WORK/plain.host.json")" ] || fail "final hash differs from the uninterrupted match"
+    cmp "$WORK/cut.host.json" "$WORK/cut.join.json" || fail "the replays differ"
+    ;;
+timeout)
+    duel gone --timeout 2 -- --quit-at-tick 2000
+    [ $HOST_RC = 1 ] || fail "host exited $HOST_RC, expected 1"
+    grep -Eq "^bob did not return within 2 s: the match ends at tick [0-9]+$" "$WORK/gone.host.log" || fail "no timeout message"
+    grep -q "replay saved to $WORK/gone.host.json" "$WORK/gone.host.log" || fail "the match was not saved"
+    "$EXE" replay verify "$WORK/gone.host.json" || fail "the saved match does not verify"
+    ;;
+refuse)
+    # A joiner whose level folder has an edited copy: the host says what differs.
+    mkdir -p "$WORK/levels"
+    sed 's/"shots": 10/"shots": 9/' levels/10_duel.json > "$WORK/levels/10_duel.json"
+    duel edited --wait 3 -- --levels "$WORK/levels"
+    [ $JOIN_RC = 1 ] || fail "join exited $JOIN_RC, expected 1"
+    grep -q "the host refused: level differs: host plays 10_duel.json (content hash [0-9a-f]*), bob has content hash [0-9a-f]*" "$WORK/edited.join.log" || fail "no level message"
+    ;;
+*) echo "unknown mode $MODE"; exit 2 ;;
+esac
+echo "ok ($MODE)"
