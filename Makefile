@@ -75,7 +75,8 @@ sanitize: deps
 	cd $(SAN_BUILD) && ARTILLERY_TRAP_FP=1 ASAN_OPTIONS=detect_leaks=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
 
-# make fuzz: libFuzzer on the level, replay, commands and player settings loaders,
+# make fuzz: libFuzzer on the level, replay, commands and player settings loaders and
+# the network message decoder,
 # FUZZ_SECONDS each. What a fuzzer finds (crash-*, leak-*, timeout-*, oom-*) is saved in
 # $(FUZZ_BUILD)/artifacts/LOADER/, never in the source tree; the target fails if any
 # fuzzer did.
@@ -92,12 +93,13 @@ fuzz: deps
 	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARTILLERY_FUZZ=ON
 	cmake --build $(FUZZ_BUILD) -j $(JOBS)
 	@failed=""; \
-	for t in level replay commands settings; do \
+	for t in level replay commands settings message; do \
 	  case $$t in \
 	    level) seeds="levels tests/data/bad_levels" ;; \
 	    replay) seeds="tests/replays tests/data/bad_replays" ;; \
 	    commands) seeds="tests/data/bad_commands" ;; \
 	    settings) seeds="tests/data/bad_settings" ;; \
+	    message) seeds="tests/data/net_messages" ;; \
 	  esac; \
 	  corpus=$(FUZZ_BUILD)/corpus/$$t; artifacts=$(FUZZ_BUILD)/artifacts/$$t; \
 	  log=$(FUZZ_BUILD)/fuzz_$$t.log; mkdir -p $$corpus $$artifacts; \

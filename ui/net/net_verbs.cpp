@@ -2,6 +2,7 @@
 
 #include "game/replay.h"
 #include "ui/net/net_duel.h"
+#include "ui/net/net_screen.h"
 
 #include <chrono>
 #include <iostream>
@@ -28,6 +29,10 @@ LEVEL is a duel level (default levels/10_duel.json).
   --record FILE     save the match as a replay (also when it ends by desync or timeout)
   --timeout S       how long a dropped player may take to come back (default 60 s)
   --wait S          how long to wait for a player to join (default 120 s)
+  --window          play in a window: the host/join form (address, port, level, names),
+                    then the match; aim with the keys (Left/Right, Up/Down, Tab, Space,
+                    Enter). With --autoplay or --commands the form is skipped.
+                    --screenshot F.png (last frame), --frames N, --close-when-over
   --json            {"result":"over|desync|abandoned|refused|failed","message":..,
                      "ticks":n,"final_hash":"hex","winner":i}
 Exit: 0 the match was played to the end, 1 it was not (desync, abandoned, refused),
@@ -49,6 +54,7 @@ Joins a duel hosted with `artillery host` and plays cannon 1, or watches it with
   --record FILE     save the match as a replay
   --levels DIR      where to look for the host's level (default levels)
   --timeout S       how long to keep trying to reconnect after a drop (default 60 s)
+  --window          in a window, as for host (--screenshot, --frames, --close-when-over)
   --json            as for host
 Exit: 0 the match was played to the end, 1 it was not, 2 bad input.
 )";
@@ -94,8 +100,20 @@ int runNet(const Args& args, std::ostream& out, bool host) {
         }
     }
     const bool json = args.flag("json");
+    const bool window = args.flag("window");
+    NetWindowOptions wo;
+    if (window) {
+        wo.screenshot = args.text("screenshot", "");
+        if (args.has("frames")) wo.frames = args.integer("frames", 0, 1, 100'000'000);
+        wo.closeWhenOver = args.flag("close-when-over");
+    }
     args.rejectUnknown();
     if (o.autoplay && !o.script.empty()) args.fail("takes --commands or --autoplay, not both");
+    if (window) {
+        wo.duel = o;
+        wo.startNow = o.autoplay || o.spectate || args.has("commands");
+        return runNetWindow(wo, out);
+    }
     if (!o.spectate && !o.autoplay && !args.has("commands"))
         args.fail("needs --commands FILE or --autoplay (or --spectate) to play without a window");
 
@@ -140,13 +158,13 @@ int runJoin(const Args& args, std::ostream& out) { return runNet(args, out, fals
 
 const game::cli::Verb& hostVerb() {
     static const game::cli::Verb v{"host", "host a duel over the network (lockstep on commands)", kHostUsage,
-                                   {"autoplay"}, runHost};
+                                   {"autoplay", "window", "close-when-over"}, runHost};
     return v;
 }
 
 const game::cli::Verb& joinVerb() {
     static const game::cli::Verb v{"join", "join or watch a networked duel", kJoinUsage,
-                                   {"autoplay", "spectate"}, runJoin};
+                                   {"autoplay", "spectate", "window", "close-when-over"}, runJoin};
     return v;
 }
 
