@@ -32,7 +32,7 @@ bool Lockstep::localTurn() const {
 
 bool Lockstep::canStep() const {
     if (!stopped_.empty() || match_->over()) return false;
-    if (localTurn()) return true;
+    if (localTurn() && !catchingUp()) return true;
     return match_->tick() < peerMark_;
 }
 
@@ -57,6 +57,7 @@ std::string Lockstep::submit(Command command) {
         return std::string("'") + commandName(command.kind) +
                "' is not a duel command (aim, power, select, fire, end_turn)";
     if (!localTurn()) return "it is not your turn";
+    if (catchingUp()) return "catching up with the match (tick " + std::to_string(replayUntil_) + ")";
     command.tick = match_->tick();
     if (std::string why = match_->apply(command); !why.empty()) return why;
     send(commandMessage(command, commandCount(), options_.localCannon));
@@ -85,7 +86,7 @@ void Lockstep::applyPending() {
 }
 
 void Lockstep::computerTurn() {
-    if (!options_.autoplay || !localTurn() || match_->shell()) {
+    if (!options_.autoplay || !localTurn() || catchingUp() || match_->shell()) {
         cpuFireTick_.reset();
         return;
     }
@@ -100,7 +101,7 @@ void Lockstep::step() {
     applyPending();
     if (!stopped_.empty()) return;
     computerTurn();
-    const bool mine = localTurn();
+    const bool mine = localTurn() && !catchingUp();
     if (options_.tamperTick && !tampered_ && match_->tick() >= *options_.tamperTick)
         tampered_ = const_cast<Match&>(*match_).perturbShellForTest({0.001, 0.0});
     match_->step();
@@ -164,7 +165,8 @@ std::string Lockstep::receive(const Message& m) {
             return "command number " + std::to_string(m.commandIndex) + " arrived, expected " +
                    std::to_string(known);
         const int sender = options_.localCannon == kSpectator ? m.player : 1 - options_.localCannon;
-        if (m.player != sender)
+        const bool ownReplayed = m.player == options_.localCannon && m.tick < replayUntil_;
+        if (m.player != sender && !ownReplayed)
             return "a command for cannon " + std::to_string(m.player) + " came from the peer of cannon " +
                    std::to_string(sender);
         const std::uint64_t last = pending_.empty() ? now : pending_.back().tick;
@@ -234,6 +236,12 @@ std::vector<Message> Lockstep::catchUp(std::uint32_t fromIndex, bool forSpectato
     mark.tick = static_cast<std::uint32_t>(forSpectator ? match_->tick() : std::max(lastMarkSent_, match_->tick()));
     if (forSpectator || localTurn() || mark.tick > 0) out.push_back(mark);
     return out;
+}
+
+void Lockstep::forgetPeerProgress() {
+    pending_.clear();
+    peerCheckpoints_.clear();
+    peerMark_ = std::min<std::uint64_t>(peerMark_, match_->tick());
 }
 
 void Lockstep::resume(std::uint32_t peerHas) {

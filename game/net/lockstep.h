@@ -75,6 +75,13 @@ class Lockstep {
     std::vector<Message> catchUp(std::uint32_t fromIndex, bool forSpectator) const;
     /// The peer resumes: resend our own commands it lacks (it holds `peerHas` commands).
     void resume(std::uint32_t peerHas);
+    /// A peer rejoined (host side): what the old connection had announced but not
+    /// delivered is forgotten; the new one resends or replaces it.
+    void forgetPeerProgress();
+    /// A rejoining side (perhaps a new process) replays the host's stream, its own old
+    /// commands included, up to `tick` before it plays again.
+    void catchUpTo(std::uint64_t tick) { replayUntil_ = tick; }
+    bool catchingUp() const { return match_->tick() < replayUntil_; }
 
     const Match& match() const { return *match_; }
     int localCannon() const { return options_.localCannon; }
@@ -112,6 +119,7 @@ class Lockstep {
     std::vector<Message> outbox_, spectatorOutbox_;
     std::string stopped_;
     bool tampered_ = false;
+    std::uint64_t replayUntil_ = 0;
 };
 
 /// "desync at tick N (particles differ)": which parts of two checkpoints differ.

@@ -142,6 +142,7 @@ void writePayload(Writer& w, const Message& m) {
         w.u8(static_cast<std::uint8_t>(m.cannon));
         w.str(m.name);
         w.u32(m.commandIndex);
+        w.u32(m.tick);
         break;
     case MessageType::Refuse:
     case MessageType::Bye: w.str(m.reason); break;
@@ -191,6 +192,7 @@ bool readPayload(Reader& r, Message& m, std::string& error) {
         m.cannon = static_cast<std::int8_t>(r.u8());
         m.name = r.str();
         m.commandIndex = r.u32();
+        m.tick = r.u32();
         break;
     case MessageType::Refuse:
     case MessageType::Bye: m.reason = r.str(); break;
@@ -251,6 +253,7 @@ std::string validate(const Message& m) {
         if (m.cannon < -1 || m.cannon > 1) return what + ": cannon must be -1, 0 or 1";
         if (!(e = field("name", m.name, kMaxNameBytes)).empty()) return e;
         if (m.commandIndex > kMaxCommands) return what + ": command count is too large";
+        if (m.tick > kMaxCommandTick) return what + ": tick is too large";
         return "";
     case MessageType::Refuse:
     case MessageType::Bye: return field("reason", m.reason, kMaxReasonBytes);

@@ -18,7 +18,8 @@
 //              spectator or player, and resume: the number of match commands and the
 //              tick it already has (0, 0 for a fresh join)
 //   Welcome    host -> peer: its cannon (-1 for a spectator), the other player's name,
-//              and how many of the joiner's commands the host already holds
+//              how many commands the host holds and its tick (a rejoining peer
+//              replays the stream up to there before it plays again)
 //   Refuse     host -> peer: why the join was refused (version or level differ, full)
 //   Command    one match command at a tick: its index in the match's command list, the
 //              player whose command it is, kind, number, text (select's projectile)
@@ -75,7 +76,7 @@ struct Message {
     std::int8_t cannon = -1; ///< Welcome: the joiner's cannon, -1 spectator
     std::uint32_t checkpointEvery = 120; ///< Offer
     std::uint32_t commandIndex = 0; ///< Command: index in the match's list; Hello, Welcome: count held
-    std::uint32_t tick = 0;  ///< Command, Advance, Handover, Checkpoint; Hello: resume tick
+    std::uint32_t tick = 0;  ///< Command, Advance, Handover, Checkpoint; Hello: resume tick; Welcome: host's tick
     std::uint8_t player = 0; ///< Command: whose cannon
     CommandKind kind = CommandKind::Fire; ///< Command
     double number = 0.0;     ///< Command: aim angle (deg) or power (m/s)

@@ -2,7 +2,7 @@
 # Networked duels between real processes over 127.0.0.1 (ports chosen by the system,
 # so tests running side by side never collide). Every wait is bounded.
 #   duel_test.sh EXE RELAY SOURCE_DIR WORK_DIR MODE
-# MODE: loopback | relay | tamper | reconnect | timeout | refuse
+# MODE: loopback | relay | tamper | reconnect | rejoin | timeout | refuse
 set -u
 EXE=$1 RELAY=$2 SRC=$3 WORK=$4 MODE=$5
 rm -rf "$WORK" && mkdir -p "$WORK" && cd "$SRC" || exit 2
@@ -92,6 +92,21 @@ reconnect)
     grep -q "back in the match" "$WORK/cut.join.log" || fail "the joiner did not come back"
     [ "$(final_hash "$WORK/cut.host.json")" = "$(final_hash "$WORK/plain.host.json")" ] || fail "final hash differs from the uninterrupted match"
     cmp "$WORK/cut.host.json" "$WORK/cut.join.json" || fail "the replays differ"
+    ;;
+rejoin)
+    # The joiner's process dies at tick 3000; a new process with the same name takes its
+    # place, replays the host's stream (its predecessor's commands included) and plays on.
+    timeout 120 "$EXE" host levels/10_duel.json --port 0 --autoplay --name ada --timeout 30 \
+        --record "$WORK/h.json" > "$WORK/h.log" 2>&1 &
+    H=$!
+    HP=$(port_of "$WORK/h.log") || fail "the host did not start"
+    timeout 60 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob --quit-at-tick 3000 > "$WORK/j1.log" 2>&1
+    timeout 120 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob --record "$WORK/j2.json" > "$WORK/j2.log" 2>&1 || fail "the new joiner exited $?"
+    wait $H || fail "host exited $?"
+    grep -q "left without a goodbye at tick 3000" "$WORK/j1.log" || fail "the first joiner did not quit"
+    grep -q "rejoining: replaying the match up to tick" "$WORK/j2.log" || fail "the new joiner did not replay"
+    cmp "$WORK/h.json" "$WORK/j2.json" || fail "the replays differ"
+    "$EXE" replay verify "$WORK/h.json" || fail "the replay does not verify"
     ;;
 timeout)
     duel gone --timeout 2 -- --quit-at-tick 2000

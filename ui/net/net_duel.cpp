@@ -181,7 +181,9 @@ void NetDuel::hostHello(PeerId peer, const Message& m) {
     names_[1] = m.name;
     welcome.cannon = 1;
     welcome.name = names_[0];
+    lockstep_->forgetPeerProgress();
     welcome.commandIndex = lockstep_->commandCount();
+    welcome.tick = static_cast<std::uint32_t>(lockstep_->match().tick());
     link_->send(peer, welcome);
     Link::setTimeout(peer, 5000);
     if (playerEverJoined_) {
@@ -192,9 +194,9 @@ void NetDuel::hostHello(PeerId peer, const Message& m) {
     }
     playerEverJoined_ = true;
     paused_ = false;
-    // Everything the player lacks: the host's commands from its count on, and our mark.
-    for (const Message& c : lockstep_->catchUp(m.commandIndex, false))
-        if (c.type != MessageType::Command || c.player == 0) link_->send(peer, c);
+    // Everything the player lacks from its count on (a new process lacks its own old
+    // commands too), then our mark.
+    for (const Message& c : lockstep_->catchUp(m.commandIndex, false)) link_->send(peer, c);
 }
 
 void NetDuel::hostMessage(PeerId peer, const Message& m) {
@@ -266,10 +268,13 @@ void NetDuel::joinMessage(const Message& m) {
             lo.autoplay = o_.autoplay;
             lo.tamperTick = o_.tamperTick;
             lockstep_ = std::make_unique<game::net::Lockstep>(*level_, lo);
+            lockstep_->catchUpTo(m.tick);
+            if (m.tick > 0) log_.push_back("rejoining: replaying the match up to tick " + std::to_string(m.tick));
             log_.push_back(std::string(o_.spectate ? "watching " : "playing ") + std::filesystem::path(level_->file).filename().string() +
                            " against host " + m.name);
         } else {
             log_.push_back("back in the match at tick " + std::to_string(lockstep_->match().tick()));
+            lockstep_->catchUpTo(m.tick);
             lockstep_->resume(m.commandIndex);
         }
         return;
