@@ -57,7 +57,8 @@ std::string Lockstep::submit(Command command) {
         return std::string("'") + commandName(command.kind) +
                "' is not a duel command (aim, power, select, fire, end_turn)";
     if (!localTurn()) return "it is not your turn";
-    if (catchingUp()) return "catching up with the match (tick " + std::to_string(replayUntil_) + ")";
+    if (catchingUp())
+        return "catching up with the match (tick " + std::to_string(replayUntil_) + ")";
     command.tick = match_->tick();
     if (std::string why = match_->apply(command); !why.empty()) return why;
     send(commandMessage(command, commandCount(), options_.localCannon));
@@ -71,8 +72,8 @@ void Lockstep::applyPending() {
         const Message m = pending_.front();
         pending_.pop_front();
         if (match_->currentPlayer() != m.player) {
-            return stop("player " + std::to_string(m.player) + " sent a command outside its turn (tick " +
-                        std::to_string(m.tick) + ")");
+            return stop("player " + std::to_string(m.player) +
+                        " sent a command outside its turn (tick " + std::to_string(m.tick) + ")");
         }
         const Command c = commandOf(m);
         if (std::string why = match_->apply(c); !why.empty())
@@ -93,7 +94,8 @@ void Lockstep::computerTurn() {
     if (!cpuFireTick_) cpuFireTick_ = match_->tick() + options_.cpuDelayTicks;
     if (match_->tick() < *cpuFireTick_) return;
     cpuFireTick_.reset();
-    for (const Command& c : cpu_.takeTurn(*match_, match_->tick())) submit(c);
+    for (const Command& c : cpu_.takeTurn(*match_, match_->tick()))
+        submit(c);
 }
 
 void Lockstep::step() {
@@ -119,8 +121,8 @@ void Lockstep::step() {
             send(mark, false);
         }
     }
-    if (options_.localCannon == 0 && (match_->over() || t % options_.advanceEvery == 0 ||
-                                      mine != localTurn())) {
+    if (options_.localCannon == 0 &&
+        (match_->over() || t % options_.advanceEvery == 0 || mine != localTurn())) {
         Message mark;
         mark.type = MessageType::Advance;
         mark.tick = static_cast<std::uint32_t>(t);
@@ -167,13 +169,14 @@ std::string Lockstep::receive(const Message& m) {
         const int sender = options_.localCannon == kSpectator ? m.player : 1 - options_.localCannon;
         const bool ownReplayed = m.player == options_.localCannon && m.tick < replayUntil_;
         if (m.player != sender && !ownReplayed)
-            return "a command for cannon " + std::to_string(m.player) + " came from the peer of cannon " +
-                   std::to_string(sender);
+            return "a command for cannon " + std::to_string(m.player) +
+                   " came from the peer of cannon " + std::to_string(sender);
         const std::uint64_t last = pending_.empty() ? now : pending_.back().tick;
         if (m.tick < last)
             return "a command for tick " + std::to_string(m.tick) + " arrived after tick " +
                    std::to_string(last);
-        if (pending_.size() >= kMaxPending) return "more than " + std::to_string(kMaxPending) + " commands waiting";
+        if (pending_.size() >= kMaxPending)
+            return "more than " + std::to_string(kMaxPending) + " commands waiting";
         pending_.push_back(m);
         return "";
     }
@@ -193,14 +196,16 @@ std::string Lockstep::receive(const Message& m) {
             if (i < checkpoints_.size()) compare(checkpoints_[i], m);
             return "";
         }
-        if (peerCheckpoints_.size() >= kMaxPending) return "too many checkpoints ahead of this side";
+        if (peerCheckpoints_.size() >= kMaxPending)
+            return "too many checkpoints ahead of this side";
         peerCheckpoints_[m.tick] = m;
         return "";
     }
     case MessageType::Bye:
         stopped_ = stopped_.empty() ? "the peer left: " + m.reason : stopped_;
         return "";
-    default: return std::string("a ") + messageName(m.type) + " message in the middle of a match";
+    default:
+        return std::string("a ") + messageName(m.type) + " message in the middle of a match";
     }
 }
 
@@ -233,7 +238,8 @@ std::vector<Message> Lockstep::catchUp(std::uint32_t fromIndex, bool forSpectato
     // Every command of ours before our tick is in the list above.
     Message mark;
     mark.type = MessageType::Advance;
-    mark.tick = static_cast<std::uint32_t>(forSpectator ? match_->tick() : std::max(lastMarkSent_, match_->tick()));
+    mark.tick = static_cast<std::uint32_t>(forSpectator ? match_->tick()
+                                                        : std::max(lastMarkSent_, match_->tick()));
     if (forSpectator || localTurn() || mark.tick > 0) out.push_back(mark);
     return out;
 }

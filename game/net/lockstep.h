@@ -37,8 +37,8 @@ inline constexpr int kSpectator = -1;
 inline constexpr std::size_t kMaxPending = 4096;
 
 struct LockstepOptions {
-    int localCannon = 0;        ///< 0 host, 1 joiner, kSpectator watches
-    bool autoplay = false;      ///< the computer plays the local cannon
+    int localCannon = 0;   ///< 0 host, 1 joiner, kSpectator watches
+    bool autoplay = false; ///< the computer plays the local cannon
     Difficulty difficulty = Difficulty::Normal;
     std::uint64_t cpuSeed = 1;
     std::uint64_t cpuDelayTicks = 60;

@@ -9,15 +9,24 @@ namespace game::net {
 
 const char* messageName(MessageType t) {
     switch (t) {
-    case MessageType::Offer: return "offer";
-    case MessageType::Hello: return "hello";
-    case MessageType::Welcome: return "welcome";
-    case MessageType::Refuse: return "refuse";
-    case MessageType::Command: return "command";
-    case MessageType::Advance: return "advance";
-    case MessageType::Handover: return "handover";
-    case MessageType::Checkpoint: return "checkpoint";
-    case MessageType::Bye: return "bye";
+    case MessageType::Offer:
+        return "offer";
+    case MessageType::Hello:
+        return "hello";
+    case MessageType::Welcome:
+        return "welcome";
+    case MessageType::Refuse:
+        return "refuse";
+    case MessageType::Command:
+        return "command";
+    case MessageType::Advance:
+        return "advance";
+    case MessageType::Handover:
+        return "handover";
+    case MessageType::Checkpoint:
+        return "checkpoint";
+    case MessageType::Bye:
+        return "bye";
     }
     return "?";
 }
@@ -57,9 +66,18 @@ bool bareName(const std::string& s) {
 class Writer {
   public:
     void u8(std::uint8_t v) { out.push_back(v); }
-    void u16(std::uint16_t v) { for (int i = 0; i < 2; ++i) u8(static_cast<std::uint8_t>(v >> (8 * i))); }
-    void u32(std::uint32_t v) { for (int i = 0; i < 4; ++i) u8(static_cast<std::uint8_t>(v >> (8 * i))); }
-    void u64(std::uint64_t v) { for (int i = 0; i < 8; ++i) u8(static_cast<std::uint8_t>(v >> (8 * i))); }
+    void u16(std::uint16_t v) {
+        for (int i = 0; i < 2; ++i)
+            u8(static_cast<std::uint8_t>(v >> (8 * i)));
+    }
+    void u32(std::uint32_t v) {
+        for (int i = 0; i < 4; ++i)
+            u8(static_cast<std::uint8_t>(v >> (8 * i)));
+    }
+    void u64(std::uint64_t v) {
+        for (int i = 0; i < 8; ++i)
+            u8(static_cast<std::uint8_t>(v >> (8 * i)));
+    }
     void f64(double d) {
         std::uint64_t v;
         std::memcpy(&v, &d, sizeof v);
@@ -86,12 +104,14 @@ class Reader {
     std::uint16_t u16() { return static_cast<std::uint16_t>(u8() | (u8() << 8)); }
     std::uint32_t u32() {
         std::uint32_t v = 0;
-        for (int i = 0; i < 4; ++i) v |= static_cast<std::uint32_t>(u8()) << (8 * i);
+        for (int i = 0; i < 4; ++i)
+            v |= static_cast<std::uint32_t>(u8()) << (8 * i);
         return v;
     }
     std::uint64_t u64() {
         std::uint64_t v = 0;
-        for (int i = 0; i < 8; ++i) v |= static_cast<std::uint64_t>(u8()) << (8 * i);
+        for (int i = 0; i < 8; ++i)
+            v |= static_cast<std::uint64_t>(u8()) << (8 * i);
         return v;
     }
     double f64() {
@@ -145,7 +165,9 @@ void writePayload(Writer& w, const Message& m) {
         w.u32(m.tick);
         break;
     case MessageType::Refuse:
-    case MessageType::Bye: w.str(m.reason); break;
+    case MessageType::Bye:
+        w.str(m.reason);
+        break;
     case MessageType::Command:
         w.u32(m.commandIndex);
         w.u32(m.tick);
@@ -155,7 +177,9 @@ void writePayload(Writer& w, const Message& m) {
         w.str(m.text);
         break;
     case MessageType::Advance:
-    case MessageType::Handover: w.u32(m.tick); break;
+    case MessageType::Handover:
+        w.u32(m.tick);
+        break;
     case MessageType::Checkpoint:
         w.u32(m.tick);
         w.u64(m.particles);
@@ -195,7 +219,9 @@ bool readPayload(Reader& r, Message& m, std::string& error) {
         m.tick = r.u32();
         break;
     case MessageType::Refuse:
-    case MessageType::Bye: m.reason = r.str(); break;
+    case MessageType::Bye:
+        m.reason = r.str();
+        break;
     case MessageType::Command: {
         m.commandIndex = r.u32();
         m.tick = r.u32();
@@ -211,7 +237,9 @@ bool readPayload(Reader& r, Message& m, std::string& error) {
         break;
     }
     case MessageType::Advance:
-    case MessageType::Handover: m.tick = r.u32(); break;
+    case MessageType::Handover:
+        m.tick = r.u32();
+        break;
     case MessageType::Checkpoint:
         m.tick = r.u32();
         m.particles = r.u64();
@@ -256,7 +284,8 @@ std::string validate(const Message& m) {
         if (m.tick > kMaxCommandTick) return what + ": tick is too large";
         return "";
     case MessageType::Refuse:
-    case MessageType::Bye: return field("reason", m.reason, kMaxReasonBytes);
+    case MessageType::Bye:
+        return field("reason", m.reason, kMaxReasonBytes);
     case MessageType::Command:
         if (m.commandIndex >= kMaxCommands) return what + ": index is too large";
         if (m.tick > kMaxCommandTick) return what + ": tick is too large";
@@ -323,8 +352,8 @@ Decoded decode(const std::uint8_t* data, std::size_t size) {
     }
     const std::size_t length = static_cast<std::size_t>(data[4] | (data[5] << 8));
     if (length != size - kHeaderBytes) {
-        d.error = "payload length field says " + std::to_string(length) + " bytes, the message has " +
-                  std::to_string(size - kHeaderBytes);
+        d.error = "payload length field says " + std::to_string(length) +
+                  " bytes, the message has " + std::to_string(size - kHeaderBytes);
         return d;
     }
     Message m;

@@ -75,12 +75,14 @@ struct Message {
     bool spectator = false;  ///< Hello
     std::int8_t cannon = -1; ///< Welcome: the joiner's cannon, -1 spectator
     std::uint32_t checkpointEvery = 120; ///< Offer
-    std::uint32_t commandIndex = 0; ///< Command: index in the match's list; Hello, Welcome: count held
-    std::uint32_t tick = 0;  ///< Command, Advance, Handover, Checkpoint; Hello: resume tick; Welcome: host's tick
-    std::uint8_t player = 0; ///< Command: whose cannon
-    CommandKind kind = CommandKind::Fire; ///< Command
-    double number = 0.0;     ///< Command: aim angle (deg) or power (m/s)
-    std::string text;        ///< Command: select's projectile
+    std::uint32_t commandIndex =
+        0; ///< Command: index in the match's list; Hello, Welcome: count held
+    std::uint32_t tick =
+        0; ///< Command, Advance, Handover, Checkpoint; Hello: resume tick; Welcome: host's tick
+    std::uint8_t player = 0;                           ///< Command: whose cannon
+    CommandKind kind = CommandKind::Fire;              ///< Command
+    double number = 0.0;                               ///< Command: aim angle (deg) or power (m/s)
+    std::string text;                                  ///< Command: select's projectile
     std::uint64_t particles = 0, bodies = 0, game = 0; ///< Checkpoint
 };
 

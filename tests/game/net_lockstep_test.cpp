@@ -13,8 +13,8 @@ namespace game::net {
 namespace {
 
 const Level& duel() {
-    static const Level level =
-        loadLevel((std::filesystem::path(ARTILLERY_SOURCE_DIR) / "levels" / "10_duel.json").string());
+    static const Level level = loadLevel(
+        (std::filesystem::path(ARTILLERY_SOURCE_DIR) / "levels" / "10_duel.json").string());
     return level;
 }
 
@@ -26,12 +26,17 @@ int play(Lockstep& a, Lockstep& b, std::uint64_t seed, int maxRounds = 200000) {
     std::uniform_int_distribution<int> lag(0, 8), burst(0, 3);
     int round = 0;
     for (; round < maxRounds; ++round) {
-        for (int i = burst(rng); i >= 0; --i) a.step();
-        for (int i = burst(rng); i >= 0; --i) b.step();
-        for (Message& m : a.takeOutbox()) ab.emplace_back(lag(rng), std::move(m));
-        for (Message& m : b.takeOutbox()) ba.emplace_back(lag(rng), std::move(m));
+        for (int i = burst(rng); i >= 0; --i)
+            a.step();
+        for (int i = burst(rng); i >= 0; --i)
+            b.step();
+        for (Message& m : a.takeOutbox())
+            ab.emplace_back(lag(rng), std::move(m));
+        for (Message& m : b.takeOutbox())
+            ba.emplace_back(lag(rng), std::move(m));
         auto deliver = [](std::deque<std::pair<int, Message>>& q, Lockstep& to) {
-            for (auto& [left, m] : q) left = std::max(0, left - 1);
+            for (auto& [left, m] : q)
+                left = std::max(0, left - 1);
             while (!q.empty() && q.front().first == 0) {
                 EXPECT_EQ(to.receive(q.front().second), "");
                 q.pop_front();
@@ -115,7 +120,8 @@ TEST(NetLockstep, TheFollowerWaitsForTheMarkAndOutOfOrderInputIsAnError) {
     mark.type = MessageType::Advance;
     mark.tick = 12;
     EXPECT_EQ(joiner.receive(mark), "");
-    for (int i = 0; i < 100; ++i) joiner.step();
+    for (int i = 0; i < 100; ++i)
+        joiner.step();
     EXPECT_EQ(joiner.match().tick(), 12u);
     Message late = commandMessage(Command{.tick = 3, .kind = CommandKind::Fire}, 0, 0);
     EXPECT_EQ(joiner.receive(late), "a command for tick 3 arrived after tick 12");
@@ -136,15 +142,19 @@ TEST(NetLockstep, ASpectatorFollowsTheHostsStreamToTheSameEnd) {
     // Join the spectator half-way: it catches up from the host's list.
     std::mt19937_64 rng(5);
     bool joined = false;
-    for (int round = 0; round < 200000 && !(host.over() && joiner.over() && watcher.over()); ++round) {
+    for (int round = 0; round < 200000 && !(host.over() && joiner.over() && watcher.over());
+         ++round) {
         host.step();
         joiner.step();
-        for (const Message& m : host.takeOutbox()) ASSERT_EQ(joiner.receive(m), "");
-        for (const Message& m : joiner.takeOutbox()) ASSERT_EQ(host.receive(m), "");
+        for (const Message& m : host.takeOutbox())
+            ASSERT_EQ(joiner.receive(m), "");
+        for (const Message& m : joiner.takeOutbox())
+            ASSERT_EQ(host.receive(m), "");
         if (!joined && host.match().tick() > 700) {
             joined = true;
             host.takeSpectatorOutbox();
-            for (const Message& m : host.catchUp(0, true)) ASSERT_EQ(watcher.receive(m), "");
+            for (const Message& m : host.catchUp(0, true))
+                ASSERT_EQ(watcher.receive(m), "");
         }
         for (const Message& m : host.takeSpectatorOutbox())
             if (joined) ASSERT_EQ(watcher.receive(m), "");

@@ -42,7 +42,8 @@ TEST(NetMessage, EveryTypeRoundTrips) {
     EXPECT_EQ(h.tick, 4321u);
     EXPECT_EQ(h.levelHash, "");
 
-    Message cmd = commandMessage(Command{.tick = 99, .kind = CommandKind::Select, .text = "golf-ball"}, 5, 1);
+    Message cmd =
+        commandMessage(Command{.tick = 99, .kind = CommandKind::Select, .text = "golf-ball"}, 5, 1);
     const Message c = roundTrip(cmd);
     EXPECT_EQ(c.type, MessageType::Command);
     EXPECT_EQ(c.tick, 99u);
@@ -51,7 +52,8 @@ TEST(NetMessage, EveryTypeRoundTrips) {
     EXPECT_EQ(c.kind, CommandKind::Select);
     EXPECT_EQ(c.text, "golf-ball");
 
-    Message aim = commandMessage(Command{.tick = 3, .kind = CommandKind::Aim, .number = 52.125}, 0, 0);
+    Message aim =
+        commandMessage(Command{.tick = 3, .kind = CommandKind::Aim, .number = 52.125}, 0, 0);
     EXPECT_EQ(roundTrip(aim).number, 52.125); // the double's bits, exactly
 
     Message cp;
@@ -86,7 +88,8 @@ std::vector<std::uint8_t> advanceBytes() {
 
 TEST(NetMessage, MalformedPacketsAreRefusedWithTheirReason) {
     EXPECT_EQ(errorOf({'A', 'N', 1}), "message of 3 bytes is shorter than its header");
-    EXPECT_EQ(errorOf(std::vector<std::uint8_t>(600, 'A')), "message of 600 bytes is over the limit of 512");
+    EXPECT_EQ(errorOf(std::vector<std::uint8_t>(600, 'A')),
+              "message of 600 bytes is over the limit of 512");
     auto b = advanceBytes();
     b[0] = 'X';
     EXPECT_EQ(errorOf(b), "message does not start with the protocol's magic bytes");
@@ -110,19 +113,24 @@ TEST(NetMessage, MalformedPacketsAreRefusedWithTheirReason) {
 }
 
 TEST(NetMessage, OnlyTheFiveDuelCommandsPass) {
-    Message set = commandMessage(Command{.tick = 1, .kind = CommandKind::Set, .text = "integrator"}, 0, 0);
-    EXPECT_EQ(validate(set), "command: 'set' is not a duel command (aim, power, select, fire, end_turn)");
+    Message set =
+        commandMessage(Command{.tick = 1, .kind = CommandKind::Set, .text = "integrator"}, 0, 0);
+    EXPECT_EQ(validate(set),
+              "command: 'set' is not a duel command (aim, power, select, fire, end_turn)");
     EXPECT_THROW(encode(set), std::invalid_argument);
     // Forge the bytes of a set command by hand: the decoder refuses it too.
     Message aim = commandMessage(Command{.tick = 1, .kind = CommandKind::Aim, .number = 1}, 0, 0);
     auto bytes = encode(aim);
     bytes[kHeaderBytes + 9] = static_cast<std::uint8_t>(CommandKind::Set);
-    EXPECT_EQ(errorOf(bytes), "command: 'set' is not a duel command (aim, power, select, fire, end_turn)");
+    EXPECT_EQ(errorOf(bytes),
+              "command: 'set' is not a duel command (aim, power, select, fire, end_turn)");
     bytes[kHeaderBytes + 9] = 250;
     EXPECT_EQ(errorOf(bytes), "command: kind 250 is unknown");
-    Message sel = commandMessage(Command{.tick = 1, .kind = CommandKind::Select, .text = "../../etc/passwd"}, 0, 0);
+    Message sel = commandMessage(
+        Command{.tick = 1, .kind = CommandKind::Select, .text = "../../etc/passwd"}, 0, 0);
     EXPECT_EQ(validate(sel), "command: select needs a projectile name (letters, digits, _ - .)");
-    Message nan = commandMessage(Command{.tick = 1, .kind = CommandKind::Power, .number = NAN}, 0, 0);
+    Message nan =
+        commandMessage(Command{.tick = 1, .kind = CommandKind::Power, .number = NAN}, 0, 0);
     EXPECT_EQ(validate(nan), "command: number must be finite and within +-1e6");
     Message who = aim;
     who.player = 3;
@@ -142,7 +150,8 @@ TEST(NetMessage, TextFieldsAreBoundedAndPrintable) {
     offer.version = kProgramVersion;
     offer.levelHash = "0123456789abcdef";
     offer.levelName = "../levels/10_duel.json";
-    EXPECT_EQ(validate(offer), "offer: level name must be a bare file name (letters, digits, _ - .)");
+    EXPECT_EQ(validate(offer),
+              "offer: level name must be a bare file name (letters, digits, _ - .)");
     offer.levelName = "10_duel.json";
     offer.levelHash = "0123";
     EXPECT_EQ(validate(offer), "offer: level hash must be 16 lowercase hex digits");

@@ -27,7 +27,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 volatile std::sig_atomic_t stopRequested = 0;
-void requestStop(int) { stopRequested = 1; }
+void requestStop(int) {
+    stopRequested = 1;
+}
 
 struct Datagram {
     Clock::time_point due;
@@ -64,11 +66,16 @@ int main(int argc, char** argv) {
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string k = argv[i];
         const char* v = argv[i + 1];
-        if (k == "--to") to = static_cast<unsigned short>(std::atoi(v));
-        else if (k == "--drop") drop = std::atof(v);
-        else if (k == "--delay-ms") delayMs = std::atoi(v);
-        else if (k == "--seed") seed = std::strtoull(v, nullptr, 10);
-        else if (k == "--seconds") seconds = std::atof(v);
+        if (k == "--to")
+            to = static_cast<unsigned short>(std::atoi(v));
+        else if (k == "--drop")
+            drop = std::atof(v);
+        else if (k == "--delay-ms")
+            delayMs = std::atoi(v);
+        else if (k == "--seed")
+            seed = std::strtoull(v, nullptr, 10);
+        else if (k == "--seconds")
+            seconds = std::atof(v);
         else {
             std::fprintf(stderr, "relay: unknown option %s\n", k.c_str());
             return 2;
@@ -105,7 +112,8 @@ int main(int argc, char** argv) {
             std::vector<char> buf(65536);
             sockaddr_in from{};
             socklen_t fl = sizeof from;
-            const ssize_t n = recvfrom(fds[i].fd, buf.data(), buf.size(), 0, reinterpret_cast<sockaddr*>(&from), &fl);
+            const ssize_t n = recvfrom(fds[i].fd, buf.data(), buf.size(), 0,
+                                       reinterpret_cast<sockaddr*>(&from), &fl);
             if (n < 0) continue;
             lastTraffic = Clock::now();
             if (i == 0) {
@@ -117,15 +125,18 @@ int main(int argc, char** argv) {
                 continue;
             }
             buf.resize(static_cast<std::size_t>(n));
-            const auto lag = std::chrono::microseconds(static_cast<long>(u(rng) * delayMs * 1000.0));
+            const auto lag =
+                std::chrono::microseconds(static_cast<long>(u(rng) * delayMs * 1000.0));
             queue.push({Clock::now() + lag, i == 0, std::move(buf)});
         }
         while (!queue.empty() && queue.top().due <= Clock::now()) {
             const Datagram& d = queue.top();
             if (d.toServer)
-                sendto(back, d.bytes.data(), d.bytes.size(), 0, reinterpret_cast<const sockaddr*>(&server), sizeof server);
+                sendto(back, d.bytes.data(), d.bytes.size(), 0,
+                       reinterpret_cast<const sockaddr*>(&server), sizeof server);
             else if (haveClient)
-                sendto(front, d.bytes.data(), d.bytes.size(), 0, reinterpret_cast<const sockaddr*>(&client), sizeof client);
+                sendto(front, d.bytes.data(), d.bytes.size(), 0,
+                       reinterpret_cast<const sockaddr*>(&client), sizeof client);
             ++forwarded;
             queue.pop();
         }

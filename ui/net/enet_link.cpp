@@ -47,7 +47,8 @@ std::unique_ptr<Link> Link::listen(const std::string& bindAddress, std::uint16_t
     return std::unique_ptr<Link>(new Link(host));
 }
 
-std::unique_ptr<Link> Link::connect(const std::string& address, std::uint16_t port, std::string& why) {
+std::unique_ptr<Link> Link::connect(const std::string& address, std::uint16_t port,
+                                    std::string& why) {
     if (!initialised()) {
         why = "ENet could not be initialised";
         return nullptr;
@@ -77,7 +78,9 @@ Link::~Link() {
     if (host_) enet_host_destroy(host_);
 }
 
-std::uint16_t Link::port() const { return host_->address.port; }
+std::uint16_t Link::port() const {
+    return host_->address.port;
+}
 
 LinkEvent Link::poll(std::uint32_t timeoutMs) {
     ENetEvent e;
@@ -85,8 +88,12 @@ LinkEvent Link::poll(std::uint32_t timeoutMs) {
     if (enet_host_service(host_, &e, timeoutMs) <= 0) return out;
     out.peer = e.peer;
     switch (e.type) {
-    case ENET_EVENT_TYPE_CONNECT: out.kind = LinkEvent::Kind::Connected; break;
-    case ENET_EVENT_TYPE_DISCONNECT: out.kind = LinkEvent::Kind::Disconnected; break;
+    case ENET_EVENT_TYPE_CONNECT:
+        out.kind = LinkEvent::Kind::Connected;
+        break;
+    case ENET_EVENT_TYPE_DISCONNECT:
+        out.kind = LinkEvent::Kind::Disconnected;
+        break;
     case ENET_EVENT_TYPE_RECEIVE: {
         game::net::Decoded d = game::net::decode(e.packet->data, e.packet->dataLength);
         enet_packet_destroy(e.packet);
@@ -99,7 +106,8 @@ LinkEvent Link::poll(std::uint32_t timeoutMs) {
         }
         break;
     }
-    default: break;
+    default:
+        break;
     }
     return out;
 }
@@ -110,11 +118,17 @@ void Link::send(PeerId peer, const game::net::Message& m) {
     if (enet_peer_send(peer, 0, p) != 0) enet_packet_destroy(p);
 }
 
-void Link::close(PeerId peer) { enet_peer_disconnect_later(peer, 0); }
+void Link::close(PeerId peer) {
+    enet_peer_disconnect_later(peer, 0);
+}
 
-void Link::cut(PeerId peer) { enet_peer_reset(peer); }
+void Link::cut(PeerId peer) {
+    enet_peer_reset(peer);
+}
 
-void Link::flush() { enet_host_flush(host_); }
+void Link::flush() {
+    enet_host_flush(host_);
+}
 
 std::string Link::address(PeerId peer) const {
     char ip[64] = "?";
@@ -122,10 +136,12 @@ std::string Link::address(PeerId peer) const {
     return std::string(ip) + ":" + std::to_string(peer->address.port);
 }
 
-void Link::setTimeout(PeerId peer, std::uint32_t ms) { enet_peer_timeout(peer, 0, ms, ms); }
+void Link::setTimeout(PeerId peer, std::uint32_t ms) {
+    enet_peer_timeout(peer, 0, ms, ms);
+}
 
 std::optional<std::pair<std::string, std::uint16_t>> parseAddress(const std::string& text,
-                                                                   std::uint16_t fallbackPort) {
+                                                                  std::uint16_t fallbackPort) {
     const auto colon = text.rfind(':');
     std::string host = text.substr(0, colon);
     std::uint16_t port = fallbackPort;
@@ -133,7 +149,8 @@ std::optional<std::pair<std::string, std::uint16_t>> parseAddress(const std::str
         const std::string p = text.substr(colon + 1);
         unsigned v = 0;
         const auto [end, ec] = std::from_chars(p.data(), p.data() + p.size(), v);
-        if (ec != std::errc() || end != p.data() + p.size() || v == 0 || v > 65535) return std::nullopt;
+        if (ec != std::errc() || end != p.data() + p.size() || v == 0 || v > 65535)
+            return std::nullopt;
         port = static_cast<std::uint16_t>(v);
     }
     if (host.empty()) return std::nullopt;

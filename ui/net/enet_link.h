@@ -59,6 +59,6 @@ class Link {
 
 /// "HOST[:PORT]" -> host and port (default `fallbackPort`); nullopt when malformed.
 std::optional<std::pair<std::string, std::uint16_t>> parseAddress(const std::string& text,
-                                                                   std::uint16_t fallbackPort);
+                                                                  std::uint16_t fallbackPort);
 
 } // namespace ui::net

@@ -13,12 +13,18 @@ using game::net::MessageType;
 
 const char* netResultName(NetResult r) {
     switch (r) {
-    case NetResult::Running: return "running";
-    case NetResult::Over: return "over";
-    case NetResult::Desync: return "desync";
-    case NetResult::Abandoned: return "abandoned";
-    case NetResult::Refused: return "refused";
-    case NetResult::Failed: return "failed";
+    case NetResult::Running:
+        return "running";
+    case NetResult::Over:
+        return "over";
+    case NetResult::Desync:
+        return "desync";
+    case NetResult::Abandoned:
+        return "abandoned";
+    case NetResult::Refused:
+        return "refused";
+    case NetResult::Failed:
+        return "failed";
     }
     return "?";
 }
@@ -81,8 +87,8 @@ bool NetDuel::start(std::string& why) {
         lo.autoplay = o_.autoplay;
         lo.tamperTick = o_.tamperTick;
         lockstep_ = std::make_unique<game::net::Lockstep>(*level_, lo);
-        log_.push_back("hosting " + std::filesystem::path(o_.levelFile).filename().string() + " on " +
-                       o_.bindAddress + ":" + std::to_string(link_->port()));
+        log_.push_back("hosting " + std::filesystem::path(o_.levelFile).filename().string() +
+                       " on " + o_.bindAddress + ":" + std::to_string(link_->port()));
         return true;
     }
     link_ = Link::connect(o_.address, o_.port, why);
@@ -101,7 +107,8 @@ void NetDuel::finish(NetResult r, std::string message) {
     if (link_) {
         if (player_) link_->close(player_);
         if (server_) link_->close(server_);
-        for (PeerId s : spectators_) link_->close(s);
+        for (PeerId s : spectators_)
+            link_->close(s);
         // Let the goodbyes leave before the socket closes.
         for (int i = 0; i < 20; ++i) {
             const LinkEvent e = link_->poll(10);
@@ -142,15 +149,17 @@ std::string NetDuel::submit(const game::Command& c) {
 void NetDuel::hostHello(PeerId peer, const Message& m) {
     const std::string levelName = std::filesystem::path(level_->file).filename().string();
     if (m.version != game::net::kProgramVersion) {
-        const std::string why = "program version differs: host runs '" + std::string(game::net::kProgramVersion) +
-                                "', " + m.name + " runs '" + m.version + "'";
+        const std::string why = "program version differs: host runs '" +
+                                std::string(game::net::kProgramVersion) + "', " + m.name +
+                                " runs '" + m.version + "'";
         link_->send(peer, reasonMessage(MessageType::Refuse, why));
         return closePeer(peer, why);
     }
     if (m.levelHash != level_->contentHash) {
-        const std::string why = "level differs: host plays " + levelName + " (content hash " + level_->contentHash +
-                                "), " + m.name +
-                                (m.levelHash.empty() ? " has no level with that name" : " has content hash " + m.levelHash);
+        const std::string why = "level differs: host plays " + levelName + " (content hash " +
+                                level_->contentHash + "), " + m.name +
+                                (m.levelHash.empty() ? " has no level with that name"
+                                                     : " has content hash " + m.levelHash);
         link_->send(peer, reasonMessage(MessageType::Refuse, why));
         return closePeer(peer, why);
     }
@@ -162,8 +171,10 @@ void NetDuel::hostHello(PeerId peer, const Message& m) {
         welcome.cannon = -1;
         welcome.name = names_[0];
         link_->send(peer, welcome);
-        for (const Message& c : lockstep_->catchUp(0, true)) link_->send(peer, c);
-        log_.push_back("spectator " + m.name + " joined at tick " + std::to_string(lockstep_->match().tick()));
+        for (const Message& c : lockstep_->catchUp(0, true))
+            link_->send(peer, c);
+        log_.push_back("spectator " + m.name + " joined at tick " +
+                       std::to_string(lockstep_->match().tick()));
         return;
     }
     if (player_ && m.name == names_[1]) {
@@ -187,8 +198,8 @@ void NetDuel::hostHello(PeerId peer, const Message& m) {
     link_->send(peer, welcome);
     Link::setTimeout(peer, 5000);
     if (playerEverJoined_) {
-        log_.push_back(m.name + " is back at tick " + std::to_string(m.tick) + "; resuming from tick " +
-                       std::to_string(lockstep_->match().tick()));
+        log_.push_back(m.name + " is back at tick " + std::to_string(m.tick) +
+                       "; resuming from tick " + std::to_string(lockstep_->match().tick()));
     } else {
         log_.push_back(m.name + " joined from " + link_->address(peer));
     }
@@ -196,12 +207,14 @@ void NetDuel::hostHello(PeerId peer, const Message& m) {
     paused_ = false;
     // Everything the player lacks from its count on (a new process lacks its own old
     // commands too), then our mark.
-    for (const Message& c : lockstep_->catchUp(m.commandIndex, false)) link_->send(peer, c);
+    for (const Message& c : lockstep_->catchUp(m.commandIndex, false))
+        link_->send(peer, c);
 }
 
 void NetDuel::hostMessage(PeerId peer, const Message& m) {
     if (greeted_.count(peer)) {
-        if (m.type != MessageType::Hello) return closePeer(peer, std::string("expected hello, got ") + messageName(m.type));
+        if (m.type != MessageType::Hello)
+            return closePeer(peer, std::string("expected hello, got ") + messageName(m.type));
         return hostHello(peer, m);
     }
     if (spectators_.count(peer)) {
@@ -217,12 +230,15 @@ void NetDuel::hostMessage(PeerId peer, const Message& m) {
         peerByeReason_ = m.reason;
         return;
     }
-    if (std::string why = lockstep_->receive(m); !why.empty()) closePeer(peer, "protocol error: " + why);
+    if (std::string why = lockstep_->receive(m); !why.empty())
+        closePeer(peer, "protocol error: " + why);
 }
 
 void NetDuel::joinMessage(const Message& m) {
     if (!offered_) {
-        if (m.type != MessageType::Offer) return finish(NetResult::Failed, std::string("expected the host's offer, got ") + game::net::messageName(m.type));
+        if (m.type != MessageType::Offer)
+            return finish(NetResult::Failed, std::string("expected the host's offer, got ") +
+                                                 game::net::messageName(m.type));
         offered_ = true;
         names_[0] = m.name;
         Message hello;
@@ -242,8 +258,10 @@ void NetDuel::joinMessage(const Message& m) {
         return;
     }
     if (!welcomed_) {
-        if (m.type == MessageType::Refuse) return finish(NetResult::Refused, "the host refused: " + m.reason);
-        if (m.type == MessageType::Bye) return finish(NetResult::Refused, "the host closed: " + m.reason);
+        if (m.type == MessageType::Refuse)
+            return finish(NetResult::Refused, "the host refused: " + m.reason);
+        if (m.type == MessageType::Bye)
+            return finish(NetResult::Refused, "the host closed: " + m.reason);
         if (m.type == MessageType::Offer && level_) { // a reconnect: the host offers again
             Message hello;
             hello.type = MessageType::Hello;
@@ -258,7 +276,9 @@ void NetDuel::joinMessage(const Message& m) {
             link_->send(server_, hello);
             return;
         }
-        if (m.type != MessageType::Welcome) return finish(NetResult::Failed, std::string("expected welcome, got ") + game::net::messageName(m.type));
+        if (m.type != MessageType::Welcome)
+            return finish(NetResult::Failed,
+                          std::string("expected welcome, got ") + game::net::messageName(m.type));
         welcomed_ = true;
         paused_ = false;
         names_[0] = m.name;
@@ -269,11 +289,15 @@ void NetDuel::joinMessage(const Message& m) {
             lo.tamperTick = o_.tamperTick;
             lockstep_ = std::make_unique<game::net::Lockstep>(*level_, lo);
             lockstep_->catchUpTo(m.tick);
-            if (m.tick > 0) log_.push_back("rejoining: replaying the match up to tick " + std::to_string(m.tick));
-            log_.push_back(std::string(o_.spectate ? "watching " : "playing ") + std::filesystem::path(level_->file).filename().string() +
+            if (m.tick > 0)
+                log_.push_back("rejoining: replaying the match up to tick " +
+                               std::to_string(m.tick));
+            log_.push_back(std::string(o_.spectate ? "watching " : "playing ") +
+                           std::filesystem::path(level_->file).filename().string() +
                            " against host " + m.name);
         } else {
-            log_.push_back("back in the match at tick " + std::to_string(lockstep_->match().tick()));
+            log_.push_back("back in the match at tick " +
+                           std::to_string(lockstep_->match().tick()));
             lockstep_->catchUpTo(m.tick);
             lockstep_->resume(m.commandIndex);
         }
@@ -292,7 +316,8 @@ void NetDuel::joinMessage(const Message& m) {
 
 void NetDuel::onEvent(const LinkEvent& e) {
     switch (e.kind) {
-    case LinkEvent::Kind::None: return;
+    case LinkEvent::Kind::None:
+        return;
     case LinkEvent::Kind::Connected:
         if (o_.host) {
             greeted_.insert(e.peer);
@@ -317,21 +342,26 @@ void NetDuel::onEvent(const LinkEvent& e) {
                 if (lockstep_->over() || peerBye_) return;
                 paused_ = true;
                 droppedAt_ = Clock::now();
-                log_.push_back(names_[1] + " dropped at tick " + std::to_string(lockstep_->match().tick()) +
-                               "; the match is paused for up to " + std::to_string(static_cast<int>(o_.timeoutSeconds)) + " s");
+                log_.push_back(names_[1] + " dropped at tick " +
+                               std::to_string(lockstep_->match().tick()) +
+                               "; the match is paused for up to " +
+                               std::to_string(static_cast<int>(o_.timeoutSeconds)) + " s");
             }
             return;
         }
         server_ = nullptr;
         if (!level_ || !welcomed_) {
-            if (!lockstep_) return finish(NetResult::Failed, "could not connect to " + o_.address + ":" + std::to_string(o_.port));
+            if (!lockstep_)
+                return finish(NetResult::Failed,
+                              "could not connect to " + o_.address + ":" + std::to_string(o_.port));
         }
         if (lockstep_ && (lockstep_->over() || peerBye_)) return;
         if (!paused_) {
             paused_ = true;
             droppedAt_ = Clock::now();
             log_.push_back("connection to the host lost at tick " +
-                           std::to_string(lockstep_ ? lockstep_->match().tick() : 0) + "; reconnecting");
+                           std::to_string(lockstep_ ? lockstep_->match().tick() : 0) +
+                           "; reconnecting");
         }
         welcomed_ = false;
         reconnect();
@@ -352,7 +382,8 @@ void NetDuel::flushOutboxes() {
         if (!o_.host && server_ && welcomed_) link_->send(server_, m);
     }
     for (const Message& m : lockstep_->takeSpectatorOutbox())
-        for (PeerId s : spectators_) link_->send(s, m);
+        for (PeerId s : spectators_)
+            link_->send(s, m);
     link_->flush();
 }
 
@@ -363,11 +394,14 @@ void NetDuel::stepMatch(std::uint64_t maxTicks) {
             // Test hook: vanish like a crashed process, no goodbye.
             if (server_) link_->cut(server_);
             server_ = nullptr;
-            return finish(NetResult::Failed, "left without a goodbye at tick " + std::to_string(ls.match().tick()) + " (test hook)");
+            return finish(NetResult::Failed, "left without a goodbye at tick " +
+                                                 std::to_string(ls.match().tick()) +
+                                                 " (test hook)");
         }
         if (o_.dropAtTick && ls.match().tick() >= *o_.dropAtTick && server_) {
             o_.dropAtTick.reset();
-            log_.push_back("cutting the connection at tick " + std::to_string(ls.match().tick()) + " (test hook)");
+            log_.push_back("cutting the connection at tick " + std::to_string(ls.match().tick()) +
+                           " (test hook)");
             flushOutboxes();
             link_->cut(server_);
             server_ = nullptr;
@@ -378,7 +412,8 @@ void NetDuel::stepMatch(std::uint64_t maxTicks) {
             reconnect();
             return;
         }
-        while (nextScript_ < o_.script.size() && ls.localTurn() && o_.script[nextScript_].tick <= ls.match().tick()) {
+        while (nextScript_ < o_.script.size() && ls.localTurn() &&
+               o_.script[nextScript_].tick <= ls.match().tick()) {
             if (std::string why = ls.submit(o_.script[nextScript_]); !why.empty())
                 log_.push_back("tick " + std::to_string(ls.match().tick()) + ": " +
                                game::commandName(o_.script[nextScript_].kind) + " refused: " + why);
@@ -393,12 +428,15 @@ bool NetDuel::pump(std::uint32_t waitMs, std::uint64_t maxTicks) {
     if (result_ != NetResult::Running) return false;
     if (!link_) {
         if (since(droppedAt_) > o_.timeoutSeconds)
-            finish(NetResult::Abandoned, "could not get back to the host within " + std::to_string(static_cast<int>(o_.timeoutSeconds)) + " s");
+            finish(NetResult::Abandoned, "could not get back to the host within " +
+                                             std::to_string(static_cast<int>(o_.timeoutSeconds)) +
+                                             " s");
         else
             reconnect();
         return result_ == NetResult::Running;
     }
-    for (LinkEvent e = link_->poll(waitMs); e.kind != LinkEvent::Kind::None && result_ == NetResult::Running; e = link_->poll(0))
+    for (LinkEvent e = link_->poll(waitMs);
+         e.kind != LinkEvent::Kind::None && result_ == NetResult::Running; e = link_->poll(0))
         onEvent(e);
     if (result_ != NetResult::Running) return false;
     const bool connected = o_.host ? player_ != nullptr : (server_ != nullptr && welcomed_);
@@ -407,7 +445,8 @@ bool NetDuel::pump(std::uint32_t waitMs, std::uint64_t maxTicks) {
     flushOutboxes();
     if (!lockstep_ || (!o_.host && !welcomed_ && !paused_)) {
         if (since(started_) > o_.waitSeconds && !playerEverJoined_ && !lockstep_)
-            finish(NetResult::Failed, "nobody answered within " + std::to_string(static_cast<int>(o_.waitSeconds)) + " s");
+            finish(NetResult::Failed, "nobody answered within " +
+                                          std::to_string(static_cast<int>(o_.waitSeconds)) + " s");
         return result_ == NetResult::Running;
     }
     const game::net::Lockstep& ls = *lockstep_;
@@ -419,12 +458,15 @@ bool NetDuel::pump(std::uint32_t waitMs, std::uint64_t maxTicks) {
     }
     if (o_.host && !playerEverJoined_) {
         if (since(started_) > o_.waitSeconds)
-            finish(NetResult::Failed, "no player joined within " + std::to_string(static_cast<int>(o_.waitSeconds)) + " s");
+            finish(NetResult::Failed, "no player joined within " +
+                                          std::to_string(static_cast<int>(o_.waitSeconds)) + " s");
         return result_ == NetResult::Running;
     }
     if (paused_ && since(droppedAt_) > o_.timeoutSeconds) {
-        finish(NetResult::Abandoned, (o_.host ? names_[1] : std::string("the host")) + " did not return within " +
-                                         std::to_string(static_cast<int>(o_.timeoutSeconds)) + " s: the match ends at tick " + tick);
+        finish(NetResult::Abandoned, (o_.host ? names_[1] : std::string("the host")) +
+                                         " did not return within " +
+                                         std::to_string(static_cast<int>(o_.timeoutSeconds)) +
+                                         " s: the match ends at tick " + tick);
         return false;
     }
     if (ls.over()) {
@@ -437,10 +479,13 @@ bool NetDuel::pump(std::uint32_t waitMs, std::uint64_t maxTicks) {
             link_->flush();
         }
         const int winner = ls.match().winner();
-        const std::string who = winner < 0 ? "a draw" : "cannon " + std::to_string(winner) + " (" + names_[winner] + ") wins";
+        const std::string who =
+            winner < 0 ? "a draw"
+                       : "cannon " + std::to_string(winner) + " (" + names_[winner] + ") wins";
         const bool spectator = ls.localCannon() == game::net::kSpectator;
         if (peerBye_ || spectator || (o_.host && !player_) || since(*overAt_) > kGoodbyeSeconds)
-            finish(NetResult::Over, "match over at tick " + tick + ": " + who + ", final hash " + game::hex(ls.match().hash()));
+            finish(NetResult::Over, "match over at tick " + tick + ": " + who + ", final hash " +
+                                        game::hex(ls.match().hash()));
         return result_ == NetResult::Running;
     }
     if (peerBye_ && !ls.canStep() && ls.pending() == 0)

@@ -46,8 +46,9 @@ bool drawForm(Form& f, NetOptions& o, const std::string& error) {
     ImGui::SetNextWindowPos(ImVec2(40, 40), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(460, 0), ImGuiCond_Always);
     ImGui::Begin("Network duel", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize);
-    ImGui::TextWrapped("Host a duel (you play cannon 0) or join one (cannon 1). Both sides need the "
-                       "same program and the same level file.");
+    ImGui::TextWrapped(
+        "Host a duel (you play cannon 0) or join one (cannon 1). Both sides need the "
+        "same program and the same level file.");
     ImGui::InputText("your name", f.name, sizeof f.name);
     ImGui::InputText("level (host)", f.level, sizeof f.level);
     ImGui::InputText("address (join)", f.address, sizeof f.address);
@@ -91,39 +92,57 @@ void keyCommand(NetDuel& duel, SDL_Keycode key, std::string& status) {
     const game::CannonState& c = ls->match().cannon();
     game::Command cmd;
     switch (key) {
-    case SDLK_LEFT: cmd = {.kind = game::CommandKind::Aim, .number = c.angleDeg + 1.0}; break;
-    case SDLK_RIGHT: cmd = {.kind = game::CommandKind::Aim, .number = c.angleDeg - 1.0}; break;
-    case SDLK_UP: cmd = {.kind = game::CommandKind::Power, .number = std::min(c.def.maxSpeedMps, c.speedMps + 1.0)}; break;
-    case SDLK_DOWN: cmd = {.kind = game::CommandKind::Power, .number = std::max(0.0, c.speedMps - 1.0)}; break;
+    case SDLK_LEFT:
+        cmd = {.kind = game::CommandKind::Aim, .number = c.angleDeg + 1.0};
+        break;
+    case SDLK_RIGHT:
+        cmd = {.kind = game::CommandKind::Aim, .number = c.angleDeg - 1.0};
+        break;
+    case SDLK_UP:
+        cmd = {.kind = game::CommandKind::Power,
+               .number = std::min(c.def.maxSpeedMps, c.speedMps + 1.0)};
+        break;
+    case SDLK_DOWN:
+        cmd = {.kind = game::CommandKind::Power, .number = std::max(0.0, c.speedMps - 1.0)};
+        break;
     case SDLK_TAB:
         cmd = {.kind = game::CommandKind::Select,
                .text = c.def.projectiles[(c.projectile + 1) % c.def.projectiles.size()]};
         break;
-    case SDLK_SPACE: cmd = {.kind = game::CommandKind::Fire}; break;
-    case SDLK_RETURN: cmd = {.kind = game::CommandKind::EndTurn}; break;
-    default: return;
+    case SDLK_SPACE:
+        cmd = {.kind = game::CommandKind::Fire};
+        break;
+    case SDLK_RETURN:
+        cmd = {.kind = game::CommandKind::EndTurn};
+        break;
+    default:
+        return;
     }
     if (std::string why = duel.submit(cmd); !why.empty()) status = why;
 }
 
-void drawStatus(const NetDuel& duel, const std::deque<std::string>& log, const std::string& status) {
+void drawStatus(const NetDuel& duel, const std::deque<std::string>& log,
+                const std::string& status) {
     // Top right: the match's HUD has the top left (level, hit points) and the bottom.
-    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10, 10), ImGuiCond_Always, ImVec2(1, 0));
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10, 10), ImGuiCond_Always,
+                            ImVec2(1, 0));
     ImGui::SetNextWindowBgAlpha(0.75f);
     ImGui::Begin("duel", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar);
     const auto* ls = duel.lockstep();
     if (ls) {
         const int me = ls->localCannon();
-        ImGui::Text("%s (cannon 0) vs %s (cannon 1)%s", duel.playerName(0).c_str(), duel.playerName(1).c_str(),
-                    me < 0 ? "   watching" : "");
+        ImGui::Text("%s (cannon 0) vs %s (cannon 1)%s", duel.playerName(0).c_str(),
+                    duel.playerName(1).c_str(), me < 0 ? "   watching" : "");
         ImGui::Text("tick %llu   %s", static_cast<unsigned long long>(ls->match().tick()),
-                    ls->over()                ? "match over"
-                    : ls->localTurn()         ? "your turn: Left/Right aim, Up/Down power, Tab shell, Space fire"
-                    : duel.paused()           ? "connection lost: paused"
-                    : ls->canStep()           ? "their turn"
-                                              : "waiting for the other side");
+                    ls->over() ? "match over"
+                    : ls->localTurn()
+                        ? "your turn: Left/Right aim, Up/Down power, Tab shell, Space fire"
+                    : duel.paused() ? "connection lost: paused"
+                    : ls->canStep() ? "their turn"
+                                    : "waiting for the other side");
     }
-    for (const std::string& line : log) ImGui::TextUnformatted(line.c_str());
+    for (const std::string& line : log)
+        ImGui::TextUnformatted(line.c_str());
     if (!status.empty()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%s", status.c_str());
     ImGui::End();
 }
@@ -132,7 +151,8 @@ void drawStatus(const NetDuel& duel, const std::deque<std::string>& log, const s
 
 int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
     std::string error;
-    auto window = SdlWindow::open(opt.duel.host ? "artillery host" : "artillery join", opt.width, opt.height, error);
+    auto window = SdlWindow::open(opt.duel.host ? "artillery host" : "artillery join", opt.width,
+                                  opt.height, error);
     if (!window) {
         std::cerr << "artillery: " << error << "\n";
         return game::cli::kBadInput;
@@ -169,7 +189,8 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
         while (SDL_PollEvent(&e)) {
             const bool uiWants = imgui.processEvent(e);
             if (e.type == SDL_QUIT) running = false;
-            if (e.type == SDL_KEYDOWN && !uiWants && duel) keyCommand(*duel, e.key.keysym.sym, status);
+            if (e.type == SDL_KEYDOWN && !uiWants && duel)
+                keyCommand(*duel, e.key.keysym.sym, status);
         }
         const auto now = Clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();
@@ -188,7 +209,8 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
                 log.push_back(std::move(line));
                 if (log.size() > 6) log.pop_front();
             }
-            if (duel->result() != NetResult::Running && opt.closeWhenOver && ++overFrames > 30) running = false;
+            if (duel->result() != NetResult::Running && opt.closeWhenOver && ++overFrames > 30)
+                running = false;
         }
         const int w = window->width(), h = window->height();
         imgui.newFrame(dt);
@@ -201,7 +223,8 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
             o.trajectoryPreview = false;
             o.solutionHint = false;
             if (match->over())
-                o.banner = match->winner() < 0 ? std::string("draw") : duel->playerName(match->winner()) + " wins";
+                o.banner = match->winner() < 0 ? std::string("draw")
+                                               : duel->playerName(match->winner()) + " wins";
             drawMatchFrame(renderer, view, *match, levelCamera(*match, w, h), o);
         } else {
             gl::fn.Viewport(0, 0, w, h);
@@ -217,7 +240,8 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
         imgui.render();
         const bool lastFrame = !running || (opt.frames && f + 1 == *opt.frames);
         if (lastFrame && !opt.screenshot.empty()) {
-            const std::string err = writePng(opt.screenshot, readFramebuffer(window->framebuffer(), w, h));
+            const std::string err =
+                writePng(opt.screenshot, readFramebuffer(window->framebuffer(), w, h));
             if (err.empty())
                 out << "screenshot: " << opt.screenshot << std::endl;
             else

@@ -14,11 +14,11 @@ namespace ui::net {
 
 struct NetWindowOptions {
     NetOptions duel;
-    bool startNow = false;          ///< skip the form (the command line said everything)
+    bool startNow = false; ///< skip the form (the command line said everything)
     int width = 960, height = 540;
-    std::string screenshot;         ///< PNG of the last frame
-    std::optional<long long> frames;///< stop after this many frames
-    bool closeWhenOver = false;     ///< leave a few frames after the match ends
+    std::string screenshot;          ///< PNG of the last frame
+    std::optional<long long> frames; ///< stop after this many frames
+    bool closeWhenOver = false;      ///< leave a few frames after the match ends
 };
 
 /// Runs the window; exit code as the headless verbs (0 match played to the end).

@@ -13,7 +13,8 @@ namespace {
 
 using game::cli::Args;
 
-const char* const kHostUsage = R"(usage: artillery host [LEVEL] [--port P] [--bind ADDR] [--name NAME]
+const char* const kHostUsage =
+    R"(usage: artillery host [LEVEL] [--port P] [--bind ADDR] [--name NAME]
            (--commands FILE | --autoplay) [--record FILE] [--timeout S] [--wait S] [--json]
 
 Hosts a duel over the network (ENet over UDP): the host plays cannon 0, the player who
@@ -64,7 +65,9 @@ int runNet(const Args& args, std::ostream& out, bool host) {
     o.host = host;
     args.text("<positional>"); // LEVEL or HOST[:P]
     const auto& pos = args.positionals();
-    if (pos.size() > 1) args.fail("takes one " + std::string(host ? "LEVEL" : "HOST[:P]") + ", got " + std::to_string(pos.size()));
+    if (pos.size() > 1)
+        args.fail("takes one " + std::string(host ? "LEVEL" : "HOST[:P]") + ", got " +
+                  std::to_string(pos.size()));
     if (host) {
         o.levelFile = pos.empty() ? "levels/10_duel.json" : pos[0];
         o.port = static_cast<std::uint16_t>(args.integer("port", kDefaultPort, 0, 65535));
@@ -88,9 +91,12 @@ int runNet(const Args& args, std::ostream& out, bool host) {
     o.timeoutSeconds = args.number("timeout", 60.0, 0.1, 86400.0, "s");
     o.waitSeconds = args.number("wait", 120.0, 0.1, 86400.0, "s");
     const double limitSeconds = args.number("limit", 3600.0, 1.0, 86400.0, "s");
-    if (args.has("tamper-at-tick")) o.tamperTick = static_cast<std::uint64_t>(args.integer("tamper-at-tick", 0, 0, 1'000'000));
-    if (args.has("drop-at-tick")) o.dropAtTick = static_cast<std::uint64_t>(args.integer("drop-at-tick", 0, 0, 1'000'000));
-    if (args.has("quit-at-tick")) o.quitAtTick = static_cast<std::uint64_t>(args.integer("quit-at-tick", 0, 0, 1'000'000));
+    if (args.has("tamper-at-tick"))
+        o.tamperTick = static_cast<std::uint64_t>(args.integer("tamper-at-tick", 0, 0, 1'000'000));
+    if (args.has("drop-at-tick"))
+        o.dropAtTick = static_cast<std::uint64_t>(args.integer("drop-at-tick", 0, 0, 1'000'000));
+    if (args.has("quit-at-tick"))
+        o.quitAtTick = static_cast<std::uint64_t>(args.integer("quit-at-tick", 0, 0, 1'000'000));
     if (auto file = args.text("commands")) {
         try {
             o.script = game::loadCommands(*file);
@@ -126,13 +132,15 @@ int runNet(const Args& args, std::ostream& out, bool host) {
     std::ostream& log = json ? std::cerr : out;
     const auto started = std::chrono::steady_clock::now();
     auto printLog = [&] {
-        for (const std::string& line : duel.takeLog()) log << line << std::endl;
+        for (const std::string& line : duel.takeLog())
+            log << line << std::endl;
     };
     printLog();
     // Bounded: every wait inside has its own timeout, and the whole run has --limit.
     while (duel.pump(5, 240)) {
         printLog();
-        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > limitSeconds) {
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
+            limitSeconds) {
             duel.save();
             log << "stopped after --limit " << limitSeconds << " s\n";
             printLog();
@@ -143,28 +151,40 @@ int runNet(const Args& args, std::ostream& out, bool host) {
     if (json) {
         const auto* ls = duel.lockstep();
         std::string msg;
-        for (char c : duel.message()) msg += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
-        out << "{\"result\":\"" << netResultName(duel.result()) << "\",\"message\":\"" << msg << "\",\"ticks\":"
-            << (ls ? ls->match().tick() : 0) << ",\"final_hash\":\"" << (ls ? game::hex(ls->match().hash()) : "")
+        for (char c : duel.message())
+            msg += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+        out << "{\"result\":\"" << netResultName(duel.result()) << "\",\"message\":\"" << msg
+            << "\",\"ticks\":" << (ls ? ls->match().tick() : 0) << ",\"final_hash\":\""
+            << (ls ? game::hex(ls->match().hash()) : "")
             << "\",\"winner\":" << (ls ? ls->match().winner() : -1) << "}\n";
     }
     return duel.result() == NetResult::Over ? game::cli::kOk : game::cli::kCheckFailed;
 }
 
-int runHost(const Args& args, std::ostream& out) { return runNet(args, out, true); }
-int runJoin(const Args& args, std::ostream& out) { return runNet(args, out, false); }
+int runHost(const Args& args, std::ostream& out) {
+    return runNet(args, out, true);
+}
+int runJoin(const Args& args, std::ostream& out) {
+    return runNet(args, out, false);
+}
 
 } // namespace
 
 const game::cli::Verb& hostVerb() {
-    static const game::cli::Verb v{"host", "host a duel over the network (lockstep on commands)", kHostUsage,
-                                   {"autoplay", "window", "close-when-over"}, runHost};
+    static const game::cli::Verb v{"host",
+                                   "host a duel over the network (lockstep on commands)",
+                                   kHostUsage,
+                                   {"autoplay", "window", "close-when-over"},
+                                   runHost};
     return v;
 }
 
 const game::cli::Verb& joinVerb() {
-    static const game::cli::Verb v{"join", "join or watch a networked duel", kJoinUsage,
-                                   {"autoplay", "spectate", "window", "close-when-over"}, runJoin};
+    static const game::cli::Verb v{"join",
+                                   "join or watch a networked duel",
+                                   kJoinUsage,
+                                   {"autoplay", "spectate", "window", "close-when-over"},
+                                   runJoin};
     return v;
 }
 
