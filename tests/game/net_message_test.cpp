@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
 namespace game::net {
 namespace {
 
@@ -155,6 +159,29 @@ TEST(NetMessage, TextFieldsAreBoundedAndPrintable) {
     offer.levelName = "10_duel.json";
     offer.levelHash = "0123";
     EXPECT_EQ(validate(offer), "offer: level hash must be 16 lowercase hex digits");
+}
+
+} // namespace
+} // namespace game::net
+
+namespace game::net {
+namespace {
+
+// The fuzzer's seeds (tests/data/net_messages) are valid messages of every kind.
+TEST(NetMessage, TheFuzzSeedsDecode) {
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(
+             std::filesystem::path(ARTILLERY_SOURCE_DIR) / "tests" / "data" / "net_messages")) {
+        std::ifstream in(entry.path(), std::ios::binary);
+        const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), {});
+        const Decoded d = decode(bytes.data(), bytes.size());
+        EXPECT_EQ(d.error, "") << entry.path();
+        if (d.message) {
+            EXPECT_EQ(encode(*d.message), bytes) << entry.path();
+        }
+        ++files;
+    }
+    EXPECT_EQ(files, 8);
 }
 
 } // namespace
