@@ -12,6 +12,25 @@
 namespace game::net {
 namespace {
 
+/// A command without designated initializers (the build warns about unnamed members).
+Command commandAt(CommandKind kind, std::uint64_t tick = 0, double number = 0.0,
+                  std::string text = {}) {
+    Command c;
+    c.tick = tick;
+    c.kind = kind;
+    c.number = number;
+    c.text = std::move(text);
+    return c;
+}
+
+LockstepOptions side(int cannon, bool autoplay = false, std::optional<std::uint64_t> tamper = {}) {
+    LockstepOptions o;
+    o.localCannon = cannon;
+    o.autoplay = autoplay;
+    o.tamperTick = tamper;
+    return o;
+}
+
 const Level& duel() {
     static const Level level = loadLevel(
         (std::filesystem::path(ARTILLERY_SOURCE_DIR) / "levels" / "10_duel.json").string());
@@ -51,8 +70,8 @@ int play(Lockstep& a, Lockstep& b, std::uint64_t seed, int maxRounds = 200000) {
 }
 
 TEST(NetLockstep, AutoplayedDuelEndsWithTheSameReplayOnBothSides) {
-    Lockstep host(duel(), {.localCannon = 0, .autoplay = true});
-    Lockstep joiner(duel(), {.localCannon = 1, .autoplay = true});
+    Lockstep host(duel(), side(0, true));
+    Lockstep joiner(duel(), side(1, true));
     play(host, joiner, 1);
     ASSERT_TRUE(host.over());
     ASSERT_TRUE(joiner.over());
@@ -68,18 +87,18 @@ TEST(NetLockstep, AutoplayedDuelEndsWithTheSameReplayOnBothSides) {
 }
 
 TEST(NetLockstep, AnotherLagPatternGivesTheSameMatch) {
-    Lockstep h1(duel(), {.localCannon = 0, .autoplay = true});
-    Lockstep j1(duel(), {.localCannon = 1, .autoplay = true});
+    Lockstep h1(duel(), side(0, true));
+    Lockstep j1(duel(), side(1, true));
     play(h1, j1, 1);
-    Lockstep h2(duel(), {.localCannon = 0, .autoplay = true});
-    Lockstep j2(duel(), {.localCannon = 1, .autoplay = true});
+    Lockstep h2(duel(), side(0, true));
+    Lockstep j2(duel(), side(1, true));
     play(h2, j2, 987654321);
     EXPECT_EQ(replayToJson(h1.recording("x")), replayToJson(h2.recording("x")));
 }
 
 TEST(NetLockstep, ATamperedSideIsCaughtAtTheNextCheckpoint) {
-    Lockstep host(duel(), {.localCannon = 0, .autoplay = true});
-    Lockstep joiner(duel(), {.localCannon = 1, .autoplay = true, .tamperTick = 0});
+    Lockstep host(duel(), side(0, true));
+    Lockstep joiner(duel(), side(1, true, 0));
     play(host, joiner, 3);
     // The host fires first, after the computer's 60-tick pause: the shell flies from
     // tick 61, is nudged there on the joiner's side, and the checkpoint at 120 differs.
@@ -89,32 +108,32 @@ TEST(NetLockstep, ATamperedSideIsCaughtAtTheNextCheckpoint) {
 }
 
 TEST(NetLockstep, APeerMaySendOnlyItsOwnCommandsInItsTurn) {
-    Lockstep host(duel(), {.localCannon = 0});
+    Lockstep host(duel(), side(0));
     // The joiner's cannon is 1: a command for cannon 0 is refused on arrival.
-    Message forged = commandMessage(Command{.tick = 0, .kind = CommandKind::Fire}, 0, 0);
+    Message forged = commandMessage(commandAt(CommandKind::Fire, 0), 0, 0);
     EXPECT_EQ(host.receive(forged), "a command for cannon 0 came from the peer of cannon 1");
     // Its own cannon, but the host's turn: refused when its tick comes.
-    Lockstep host2(duel(), {.localCannon = 0});
-    Message early = commandMessage(Command{.tick = 0, .kind = CommandKind::Fire}, 0, 1);
+    Lockstep host2(duel(), side(0));
+    Message early = commandMessage(commandAt(CommandKind::Fire, 0), 0, 1);
     EXPECT_EQ(host2.receive(early), "");
     Message mark;
     mark.type = MessageType::Advance;
     mark.tick = 1;
     EXPECT_EQ(host2.receive(mark), "");
-    EXPECT_EQ(host2.submit(Command{.kind = CommandKind::Aim, .number = 40}), "");
+    EXPECT_EQ(host2.submit(commandAt(CommandKind::Aim, 0, 40)), "");
     // The host's own turn: it runs without waiting, and the forged command meets it at tick 0.
     host2.step();
     EXPECT_EQ(host2.stopped(), "player 1 sent a command outside its turn (tick 0)");
     // A local command in the peer's turn is refused before it is sent.
-    Lockstep joiner(duel(), {.localCannon = 1});
-    EXPECT_EQ(joiner.submit(Command{.kind = CommandKind::Fire}), "it is not your turn");
-    EXPECT_EQ(joiner.submit(Command{.kind = CommandKind::Set, .text = "integrator"}),
+    Lockstep joiner(duel(), side(1));
+    EXPECT_EQ(joiner.submit(commandAt(CommandKind::Fire, 0)), "it is not your turn");
+    EXPECT_EQ(joiner.submit(commandAt(CommandKind::Set, 0, 0.0, "integrator")),
               "'set' is not a duel command (aim, power, select, fire, end_turn)");
     EXPECT_TRUE(joiner.takeOutbox().empty());
 }
 
 TEST(NetLockstep, TheFollowerWaitsForTheMarkAndOutOfOrderInputIsAnError) {
-    Lockstep joiner(duel(), {.localCannon = 1});
+    Lockstep joiner(duel(), side(1));
     EXPECT_FALSE(joiner.canStep()); // the host's turn, no mark yet
     Message mark;
     mark.type = MessageType::Advance;
@@ -123,9 +142,9 @@ TEST(NetLockstep, TheFollowerWaitsForTheMarkAndOutOfOrderInputIsAnError) {
     for (int i = 0; i < 100; ++i)
         joiner.step();
     EXPECT_EQ(joiner.match().tick(), 12u);
-    Message late = commandMessage(Command{.tick = 3, .kind = CommandKind::Fire}, 0, 0);
+    Message late = commandMessage(commandAt(CommandKind::Fire, 3), 0, 0);
     EXPECT_EQ(joiner.receive(late), "a command for tick 3 arrived after tick 12");
-    Message gap = commandMessage(Command{.tick = 20, .kind = CommandKind::Fire}, 4, 0);
+    Message gap = commandMessage(commandAt(CommandKind::Fire, 20), 4, 0);
     EXPECT_EQ(joiner.receive(gap), "command number 4 arrived, expected 0");
     mark.tick = 6;
     EXPECT_EQ(joiner.receive(mark), "advance to tick 6 after one to tick 12");
@@ -135,9 +154,9 @@ TEST(NetLockstep, TheFollowerWaitsForTheMarkAndOutOfOrderInputIsAnError) {
 }
 
 TEST(NetLockstep, ASpectatorFollowsTheHostsStreamToTheSameEnd) {
-    Lockstep host(duel(), {.localCannon = 0, .autoplay = true});
-    Lockstep joiner(duel(), {.localCannon = 1, .autoplay = true});
-    Lockstep watcher(duel(), {.localCannon = kSpectator});
+    Lockstep host(duel(), side(0, true));
+    Lockstep joiner(duel(), side(1, true));
+    Lockstep watcher(duel(), side(kSpectator));
     std::vector<Message> stream;
     // Join the spectator half-way: it catches up from the host's list.
     std::mt19937_64 rng(5);

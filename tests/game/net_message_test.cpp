@@ -11,6 +11,17 @@
 namespace game::net {
 namespace {
 
+/// A command without designated initializers (the build warns about unnamed members).
+Command commandAt(CommandKind kind, std::uint64_t tick = 0, double number = 0.0,
+                  std::string text = {}) {
+    Command c;
+    c.tick = tick;
+    c.kind = kind;
+    c.number = number;
+    c.text = std::move(text);
+    return c;
+}
+
 Message roundTrip(const Message& m) {
     const auto bytes = encode(m);
     const Decoded d = decode(bytes.data(), bytes.size());
@@ -46,8 +57,7 @@ TEST(NetMessage, EveryTypeRoundTrips) {
     EXPECT_EQ(h.tick, 4321u);
     EXPECT_EQ(h.levelHash, "");
 
-    Message cmd =
-        commandMessage(Command{.tick = 99, .kind = CommandKind::Select, .text = "golf-ball"}, 5, 1);
+    Message cmd = commandMessage(commandAt(CommandKind::Select, 99, 0.0, "golf-ball"), 5, 1);
     const Message c = roundTrip(cmd);
     EXPECT_EQ(c.type, MessageType::Command);
     EXPECT_EQ(c.tick, 99u);
@@ -56,8 +66,7 @@ TEST(NetMessage, EveryTypeRoundTrips) {
     EXPECT_EQ(c.kind, CommandKind::Select);
     EXPECT_EQ(c.text, "golf-ball");
 
-    Message aim =
-        commandMessage(Command{.tick = 3, .kind = CommandKind::Aim, .number = 52.125}, 0, 0);
+    Message aim = commandMessage(commandAt(CommandKind::Aim, 3, 52.125), 0, 0);
     EXPECT_EQ(roundTrip(aim).number, 52.125); // the double's bits, exactly
 
     Message cp;
@@ -117,24 +126,21 @@ TEST(NetMessage, MalformedPacketsAreRefusedWithTheirReason) {
 }
 
 TEST(NetMessage, OnlyTheFiveDuelCommandsPass) {
-    Message set =
-        commandMessage(Command{.tick = 1, .kind = CommandKind::Set, .text = "integrator"}, 0, 0);
+    Message set = commandMessage(commandAt(CommandKind::Set, 1, 0.0, "integrator"), 0, 0);
     EXPECT_EQ(validate(set),
               "command: 'set' is not a duel command (aim, power, select, fire, end_turn)");
     EXPECT_THROW(encode(set), std::invalid_argument);
     // Forge the bytes of a set command by hand: the decoder refuses it too.
-    Message aim = commandMessage(Command{.tick = 1, .kind = CommandKind::Aim, .number = 1}, 0, 0);
+    Message aim = commandMessage(commandAt(CommandKind::Aim, 1, 1), 0, 0);
     auto bytes = encode(aim);
     bytes[kHeaderBytes + 9] = static_cast<std::uint8_t>(CommandKind::Set);
     EXPECT_EQ(errorOf(bytes),
               "command: 'set' is not a duel command (aim, power, select, fire, end_turn)");
     bytes[kHeaderBytes + 9] = 250;
     EXPECT_EQ(errorOf(bytes), "command: kind 250 is unknown");
-    Message sel = commandMessage(
-        Command{.tick = 1, .kind = CommandKind::Select, .text = "../../etc/passwd"}, 0, 0);
+    Message sel = commandMessage(commandAt(CommandKind::Select, 1, 0.0, "../../etc/passwd"), 0, 0);
     EXPECT_EQ(validate(sel), "command: select needs a projectile name (letters, digits, _ - .)");
-    Message nan =
-        commandMessage(Command{.tick = 1, .kind = CommandKind::Power, .number = NAN}, 0, 0);
+    Message nan = commandMessage(commandAt(CommandKind::Power, 1, NAN), 0, 0);
     EXPECT_EQ(validate(nan), "command: number must be finite and within +-1e6");
     Message who = aim;
     who.player = 3;

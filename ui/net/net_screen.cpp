@@ -93,27 +93,30 @@ void keyCommand(NetDuel& duel, SDL_Keycode key, std::string& status) {
     game::Command cmd;
     switch (key) {
     case SDLK_LEFT:
-        cmd = {.kind = game::CommandKind::Aim, .number = c.angleDeg + 1.0};
+        cmd.kind = game::CommandKind::Aim;
+        cmd.number = c.angleDeg + 1.0;
         break;
     case SDLK_RIGHT:
-        cmd = {.kind = game::CommandKind::Aim, .number = c.angleDeg - 1.0};
+        cmd.kind = game::CommandKind::Aim;
+        cmd.number = c.angleDeg - 1.0;
         break;
     case SDLK_UP:
-        cmd = {.kind = game::CommandKind::Power,
-               .number = std::min(c.def.maxSpeedMps, c.speedMps + 1.0)};
+        cmd.kind = game::CommandKind::Power;
+        cmd.number = std::min(c.def.maxSpeedMps, c.speedMps + 1.0);
         break;
     case SDLK_DOWN:
-        cmd = {.kind = game::CommandKind::Power, .number = std::max(0.0, c.speedMps - 1.0)};
+        cmd.kind = game::CommandKind::Power;
+        cmd.number = std::max(0.0, c.speedMps - 1.0);
         break;
     case SDLK_TAB:
-        cmd = {.kind = game::CommandKind::Select,
-               .text = c.def.projectiles[(c.projectile + 1) % c.def.projectiles.size()]};
+        cmd.kind = game::CommandKind::Select;
+        cmd.text = c.def.projectiles[(c.projectile + 1) % c.def.projectiles.size()];
         break;
     case SDLK_SPACE:
-        cmd = {.kind = game::CommandKind::Fire};
+        cmd.kind = game::CommandKind::Fire;
         break;
     case SDLK_RETURN:
-        cmd = {.kind = game::CommandKind::EndTurn};
+        cmd.kind = game::CommandKind::EndTurn;
         break;
     default:
         return;
