@@ -176,7 +176,9 @@ TEST(NetLockstep, ASpectatorFollowsTheHostsStreamToTheSameEnd) {
                 ASSERT_EQ(watcher.receive(m), "");
         }
         for (const Message& m : host.takeSpectatorOutbox())
-            if (joined) ASSERT_EQ(watcher.receive(m), "");
+            if (joined) {
+                ASSERT_EQ(watcher.receive(m), "");
+            }
         watcher.step();
         watcher.step();
     }
