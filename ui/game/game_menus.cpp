@@ -128,6 +128,8 @@ std::vector<ReplayEntry> listReplays(const std::string& folder) {
 MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettings& settings) {
     MenuChoice choice;
     beginMenuWindow("Choose a level", "ARTILLERY", "a physics playground: every level shows one idea");
+    ImGui::SameLine(ImGui::GetWindowWidth() - 120);
+    if (ImGui::SmallButton("Network duel")) choice.networkDuel = true; // ui/net/net_screen.cpp
     if (levels.empty()) ImGui::TextWrapped("No level files found (looked for levels/*.json).");
     if (ImGui::BeginTable("levels", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH)) {
         ImGui::TableSetupColumn("level", ImGuiTableColumnFlags_WidthFixed, 190.0f);

@@ -48,6 +48,7 @@ struct MenuChoice {
     std::optional<std::string> openLevel; ///< a level file to play
     std::optional<std::string> openReplay; ///< a replay file to watch
     bool replays = false;                  ///< show the recorded replays
+    bool networkDuel = false;              ///< leave for the network duel screen (ui/net)
     bool resume = false;
     bool restart = false;
     bool levelSelect = false;

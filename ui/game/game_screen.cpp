@@ -517,6 +517,7 @@ void GameScreen::drawPanels() {
     if (choice.levelSelect) overlay_ = Overlay::LevelSelect;
     if (choice.help) helpOpen_ = true;
     if (choice.quit) running_ = false;
+    if (choice.networkDuel) networkDuel_ = true, running_ = false;
     if (choice.settingsChanged) persist();
 }
 

@@ -71,6 +71,8 @@ class GameScreen final : public Screen {
     void frame(double wallSeconds) override;
     bool handleEvent(const SDL_Event& event) override;
     bool running() const override { return running_; }
+    /// The player chose Network duel: the window closes and the network duel screen opens.
+    bool networkDuelRequested() const { return networkDuel_; }
     std::string saveScreenshot(const std::string& path) override;
     bool takeScreenshotRequest() override;
     void setMeasuredFrameMs(double ms) override;
@@ -162,6 +164,7 @@ class GameScreen final : public Screen {
     Overlay overlay_ = Overlay::None;
     bool helpOpen_ = false;
     bool running_ = true;
+    bool networkDuel_ = false;
     bool screenshotRequested_ = false;
     FrameStats stats_;
     int framesMeasured_ = 0;

@@ -1,5 +1,7 @@
 #include "ui/play/play_verb.h"
 
+#include "ui/net/net_screen.h"
+
 #include "game/files/json_reader.h"
 #include "game/replay.h"
 #include "ui/game/game_screen.h"
@@ -134,6 +136,7 @@ struct RunReport {
     double maxFrameMs = 0.0;
     std::string context;
     std::string screenshot; ///< absolute path, "" when none
+    bool networkDuel = false; ///< the player chose Network duel in the menu
 };
 
 void parseSize(const Args& args, PlayOptions& o) {
@@ -347,6 +350,8 @@ int runWindow(const PlayOptions& o, RunReport& report) {
         screen.setMeasuredFrameMs(ms);
         accumulate(report, ms);
     }
+    if (const auto* game = dynamic_cast<const GameScreen*>(&screen))
+        report.networkDuel = game->networkDuelRequested();
     return game::cli::kOk;
 }
 
@@ -398,6 +403,7 @@ int play(PlayOptions o, std::ostream& out) {
     int code = -1;
     try {
         if (!o.headless && displayAvailable()) code = runWindow(o, report);
+        if (report.networkDuel) return net::runNetWindow({}, out); // its own window (ui/net)
         if (code < 0) {
             if (!o.headless && !displayAvailable())
                 std::cerr << "artillery play: no display (DISPLAY is not set); drawing headless\n";
