@@ -66,7 +66,9 @@ std::unique_ptr<Link> Link::connect(const std::string& address, std::uint16_t po
         return nullptr;
     }
     to.port = port;
-    if (!enet_host_connect(host, &to, 1, 0)) {
+    ENetPeer* peer = enet_host_connect(host, &to, 1, 0);
+    if (peer) enet_peer_timeout(peer, 0, 5000, 5000); // an unanswered attempt fails after 5 s
+    if (!peer) {
         enet_host_destroy(host);
         why = "cannot start a connection to " + address;
         return nullptr;
