@@ -36,6 +36,10 @@ LEVEL is a duel level (default levels/10_duel.json).
                     --screenshot F.png (last frame), --frames N, --close-when-over
   --json            {"result":"over|desync|abandoned|refused|failed","message":..,
                      "ticks":n,"final_hash":"hex","winner":i}
+  --limit S         stop after S seconds of wall time whatever happens (default 3600)
+Test hooks (both verbs): --tamper-at-tick N nudges the first shell in flight from tick N
+on (a tampered client), --drop-at-tick N cuts the connection once and reconnects,
+--quit-at-tick N vanishes without a goodbye.
 Exit: 0 the match was played to the end, 1 it was not (desync, abandoned, refused),
 2 bad input. See docs/network.md.
 )";
@@ -56,7 +60,7 @@ Joins a duel hosted with `artillery host` and plays cannon 1, or watches it with
   --levels DIR      where to look for the host's level (default levels)
   --timeout S       how long to keep trying to reconnect after a drop (default 60 s)
   --window          in a window, as for host (--screenshot, --frames, --close-when-over)
-  --json            as for host
+  --json            as for host (also --limit and the test hooks)
 Exit: 0 the match was played to the end, 1 it was not, 2 bad input.
 )";
 
