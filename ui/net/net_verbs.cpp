@@ -38,7 +38,7 @@ LEVEL is a duel level (default levels/10_duel.json).
                      "ticks":n,"final_hash":"hex","winner":i}
   --limit S         stop after S seconds of wall time whatever happens (default 3600)
 Test hooks (both verbs): --tamper-at-tick N nudges the first shell in flight from tick N
-on (a tampered client), --drop-at-tick N cuts the connection once and reconnects,
+on (a tampered client), --drop-at-tick N (join) cuts the connection once and reconnects,
 --quit-at-tick N vanishes without a goodbye.
 Exit: 0 the match was played to the end, 1 it was not (desync, abandoned, refused),
 2 bad input. See docs/network.md.
