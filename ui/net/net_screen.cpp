@@ -137,12 +137,11 @@ void drawStatus(const NetDuel& duel, const std::deque<std::string>& log,
         ImGui::Text("%s (cannon 0) vs %s (cannon 1)%s", duel.playerName(0).c_str(),
                     duel.playerName(1).c_str(), me < 0 ? "   watching" : "");
         ImGui::Text("tick %llu   %s", static_cast<unsigned long long>(ls->match().tick()),
-                    ls->over() ? "match over"
-                    : ls->localTurn()
-                        ? "your turn: Left/Right aim, Up/Down power, Tab shell, Space fire"
-                    : duel.paused() ? "connection lost: paused"
-                    : ls->canStep() ? "their turn"
-                                    : "waiting for the other side");
+                    ls->over()        ? "match over"
+                    : ls->localTurn() ? "your turn (arrows aim, Tab shell, Space fire)"
+                    : duel.paused()   ? "connection lost: paused"
+                    : ls->canStep()   ? "their turn"
+                                      : "waiting for the other side");
     }
     for (const std::string& line : log)
         ImGui::TextUnformatted(line.c_str());
