@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <string>
+#include <unistd.h>
 
 namespace {
 
@@ -18,7 +20,9 @@ const std::filesystem::path kRoot =
 /// Opens the castle with a settings file holding `settingsJson`, runs a few frames and
 /// returns the match's assisted() and how many assist commands the session recorded.
 std::pair<int, int> assistsFor(const std::string& settingsJson) {
-    const auto dir = std::filesystem::temp_directory_path() / "artillery-assist-screen-test";
+    // One folder per process: CTest runs these tests side by side.
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("artillery-assist-screen-test-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     game::writeFileAtomically((dir / "settings.json").string(), settingsJson);
