@@ -1,8 +1,11 @@
 #include "game/ammo.h"
 
+#include "game/weapons.h"
+
 namespace game {
 
 std::optional<Ammo> ammoFromName(const std::string& name) {
+    if (const Weapon* w = weaponFromName(name)) return ammoOf(*w);
     auto preset = phys::projectileFromName(name);
     if (!preset) return std::nullopt;
     Ammo a;
@@ -12,6 +15,7 @@ std::optional<Ammo> ammoFromName(const std::string& name) {
         a.blastRadius = 3.0;
         a.blastImpulse = 150.0;
         a.craterRadius = 2.0;
+        a.behaviour.onImpact = OnImpact::Burst;
     }
     return a;
 }

@@ -1,6 +1,7 @@
 #include "game/level.h"
 
 #include "game/files/json_reader.h"
+#include "game/weapons.h"
 #include "physics/forces.h"
 
 #include <algorithm>
@@ -112,10 +113,16 @@ Cannon readCannon(const Node& n) {
     c.speedMps = n.number("speed_mps", std::min(c.speedMps, c.maxSpeedMps), 0.0, c.maxSpeedMps,
                           "m/s (at most max_speed_mps)");
     c.player = n.has("player") ? n.at("player").choice({"1", "2", "cpu"}) : "1";
-    if (auto list = n.find("projectiles"))
-        for (const Node& p : list->elements(16, 1)) c.projectiles.push_back(p.string(64));
-    else
+    if (auto list = n.find("projectiles")) {
+        for (const Node& p : list->elements(16, 1)) {
+            const auto [name, count] = readProjectileEntry(p);
+            c.projectiles.push_back(name);
+            c.projectileCounts.push_back(count);
+        }
+    } else {
         c.projectiles = {"cannonball"};
+        c.projectileCounts = {-1};
+    }
     n.finish();
     return c;
 }

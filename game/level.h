@@ -51,7 +51,9 @@ struct Cannon {
     double speedMps = 30.0;      ///< initial muzzle speed
     double maxSpeedMps = 60.0;   ///< power at full charge
     std::string player = "1";    ///< who fires it: "1", "2" (duel) or "cpu"
-    std::vector<std::string> projectiles; ///< preset names offered; first is selected
+    std::vector<std::string> projectiles; ///< preset or weapon names offered; first is selected
+    /// Shots of each entry of `projectiles` ({"name", "count"}); -1 = unlimited (a bare name).
+    std::vector<int> projectileCounts;
 };
 
 struct Target {

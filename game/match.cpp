@@ -1,5 +1,6 @@
 #include "game/match.h"
 
+#include "game/weapons.h"
 #include "physics/ballistics.h"
 #include "physics/projectiles.h"
 
@@ -144,6 +145,8 @@ void Match::buildWorld() {
         s.speedMps = c.speedMps;
         s.hitPoints = kCannonHitPoints;
         s.shotsLeft = level_.shots;
+        s.ammoLeft = c.projectileCounts;
+        s.ammoLeft.resize(c.projectiles.size(), -1);
         cannons_.push_back(s);
     }
     for (const Target& t : level_.targets) targets_.push_back({t, t.position, false});
@@ -296,6 +299,8 @@ std::string Match::apply(const Command& cmd) {
         if (over_) return refuse("the match is over");
         if (shell_ != kNoParticle) return refuse("a shell is still in flight");
         if (c.shotsLeft <= 0 && !sandbox()) return refuse("no shots left");
+        if (c.projectile < c.ammoLeft.size() && c.ammoLeft[c.projectile] == 0 && !sandbox())
+            return refuse("no " + c.def.projectiles[c.projectile] + " left");
         fire();
         return "";
     case CommandKind::EndTurn:
@@ -359,20 +364,26 @@ void Match::fire() {
     const double a = c.angleDeg * kDegToRad;
     const Vec2 v{c.speedMps * std::cos(a), c.speedMps * std::sin(a)};
     ParticleDef pd = particleDef(shellAmmo_.preset, muzzle(c.angleDeg), v);
-    pd.material = projectileMaterial(world_.materials, shellAmmo_.preset);
+    pd.material = shellAmmo_.weapon ? weaponMaterial(world_.materials, shellAmmo_)
+                                    : projectileMaterial(world_.materials, shellAmmo_.preset);
     pd.flags |= kProjectile;
     shell_ = world_.particles.add(pd);
     shellFiredTick_ = tick();
     closestMiss_ = INFINITY;
+    flight_ = ShellFlight{};
+    flight_.lastVelocity = v;
     if (!sandbox()) --c.shotsLeft;
+    if (!sandbox() && c.projectile < c.ammoLeft.size() && c.ammoLeft[c.projectile] > 0)
+        --c.ammoLeft[c.projectile];
     ++shotsFired_;
     emit(EventKind::Fired, current_, pd.position, c.speedMps, shellAmmo_.preset.name);
 }
 
-void Match::burst(Vec2 at, int spared) {
+void Match::burst(Vec2 at, int spared, ParticleId piece) {
     emit(EventKind::Burst, current_, at, shellAmmo_.blastRadius);
     const Blast blast{at, shellAmmo_.blastImpulse, shellAmmo_.blastRadius};
-    world_.particles.remove(shell_); // the shell itself is gone
+    const ParticleId gone = piece == kNoParticle ? shell_ : piece;
+    if (world_.particles.alive(gone)) world_.particles.remove(gone); // the shell itself is gone
     applyBlast(world_.particles, blast);
     rigid_->applyBlast(blast);
     if (level_.terrain.destructible && shellAmmo_.craterRadius > 0.0 &&
@@ -411,6 +422,7 @@ void Match::scorePasses(bool shotEnding) {
 }
 
 void Match::endShot(double closestMiss) {
+    if (promoteFragment()) return; // the cluster's other fragments fly on
     scorePasses(true);
     if (world_.particles.alive(shell_)) world_.particles.remove(shell_);
     shell_ = kNoParticle;
@@ -548,6 +560,7 @@ void Match::step() {
         }
     }
 
+    stepFragments();
     if (shell_ == kNoParticle) {
         if (!over_ && level_.mode == Mode::Practice) {
             bool allDown = true;
@@ -589,28 +602,27 @@ void Match::step() {
             }
         }
     // Impacts: a shell bursts on its first; a ball bounces.
-    bool touched = false;
+    bool touched = false, impact = false;
     for (const ContactEvent& e : world_.contacts())
         if (e.a == shell_ || e.b == shell_) {
             touched = true;
-            if (shellAmmo_.blastRadius <= 0.0 && e.closingSpeed > 1.0)
+            impact = impact || e.closingSpeed > 1.0;
+            if (shellAmmo_.behaviour.onImpact == OnImpact::Bounce && e.closingSpeed > 1.0)
                 emit(EventKind::Bounce, current_, e.position, e.closingSpeed);
         }
     // A body it struck has already taken the shell's impulse (the coupling ran first).
     for (const BodyContactEvent& e : coupling_.events())
         if (e.particle == shell_) {
             touched = true;
-            if (shellAmmo_.blastRadius <= 0.0 && e.closingSpeed > 1.0)
+            impact = impact || e.closingSpeed > 1.0;
+            if (shellAmmo_.behaviour.onImpact == OnImpact::Bounce && e.closingSpeed > 1.0)
                 emit(EventKind::Bounce, current_, e.point, e.closingSpeed);
         }
-    if (touched && shellAmmo_.blastRadius > 0.0) {
-        burst(p);
-        return endShot(closestMiss_);
-    }
+    if (stepWeapon(p, touched, impact)) return;
     const double flight = static_cast<double>(tick() - shellFiredTick_) * world_.def().tickSeconds;
     const bool outside = p.x < level_.worldMin.x || p.x > level_.worldMax.x || p.y < level_.worldMin.y;
-    const bool resting = (world_.particles.flags[shell_] & kSleeping) ||
-                         (flight > 1.0 && length(world_.particles.velocity(shell_)) < 0.05);
+    const bool resting = !shellHeld() && ((world_.particles.flags[shell_] & kSleeping) ||
+                         (flight > 1.0 && length(world_.particles.velocity(shell_)) < 0.05));
     if (outside || resting || flight > kMaxFlightSeconds || !std::isfinite(p.x) || !std::isfinite(p.y))
         endShot(closestMiss_);
 }
@@ -655,6 +667,10 @@ std::uint64_t Match::gameHash() const {
         h = hashBytes(h, v, sizeof v);
         h = hashBytes(h, k, sizeof k);
     }
+    // Counted weapons only: a level without counts hashes as it always has.
+    for (const auto& c : cannons_)
+        for (const int left : c.ammoLeft)
+            if (left >= 0) h = hashBytes(h, &left, sizeof left);
     for (const auto& t : targets_) h = hashBytes(h, &t.hit, sizeof t.hit);
     for (const auto& b : blocks_) h = hashBytes(h, &b.toppled, sizeof b.toppled);
     for (const auto& b : blobs_) h = hashBytes(h, &b.toppled, sizeof b.toppled);

@@ -16,6 +16,7 @@
 #include "game/ammo.h"
 #include "game/command.h"
 #include "game/level.h"
+#include "game/shell_flight.h"
 #include "game/terrain.h"
 #include "physics/coupling.h"
 #include "physics/guard.h"
@@ -63,6 +64,7 @@ struct CannonState {
     double angleDeg = 45.0;
     double speedMps = 30.0;
     std::size_t projectile = 0; ///< index into def.projectiles
+    std::vector<int> ammoLeft;  ///< shots left of each projectile; -1 = unlimited
     int hitPoints = 3;
     int shotsLeft = 0;
     int score = 0;
@@ -138,6 +140,10 @@ class Match {
     double wind() const { return world_.def().forces.wind.x; }
     /// The shell in flight, if any.
     std::optional<phys::ParticleId> shell() const;
+    /// What the shell in flight is doing (its weapon's state: fragments, impacts, tunnel).
+    const ShellFlight& flight() const { return flight_; }
+    /// The ammunition of the shell in flight (or of the last one).
+    const Ammo& shellAmmo() const { return shellAmmo_; }
     bool over() const { return over_; }
     /// Winner of a finished duel (cannon index), -1 for a draw or not over.
     int winner() const { return winner_; }
@@ -213,7 +219,17 @@ class Match {
     /// Scores targets the shell has passed through and is now leaving (or all, at the end).
     void scorePasses(bool shotEnding);
     /// An explosive shell bursts at `at`; `spared` (a cannon index) was already hit directly.
-    void burst(phys::Vec2 at, int spared = -1);
+    /// `piece` is the particle that bursts (default: the shell).
+    void burst(phys::Vec2 at, int spared = -1, phys::ParticleId piece = phys::kNoParticle);
+    // Weapon behaviours (match_weapons.cpp): fuse, bounce count, airburst, apex split,
+    // tunnel, stick. True when the shell's shot has ended.
+    bool stepWeapon(phys::Vec2 p, bool touched, bool impact);
+    /// Whether the shell must not be ended for resting (a fuse or a stuck charge waits).
+    bool shellHeld() const;
+    void splitShell();
+    void stepFragments();
+    /// The shell has ended; a fragment still flying takes its place. True if one did.
+    bool promoteFragment();
     double drawWind();
 
     Level level_;
@@ -237,6 +253,7 @@ class Match {
     std::uint64_t shellFiredTick_ = 0;
     double closestMiss_ = 0.0;
     Ammo shellAmmo_;
+    ShellFlight flight_;
     GrabState grab_;
     int assisted_ = 0;
 };
