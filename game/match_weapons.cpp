@@ -23,7 +23,10 @@ std::uint64_t ticksOf(double seconds, double dt) {
 
 bool Match::shellHeld() const {
     const Behaviour& b = shellAmmo_.behaviour;
-    return flight_.stuckTick.has_value() || flight_.digging || b.fuseSeconds > 0.0;
+    // A weapon rests only on something: at the top of a vertical throw it is slow, not
+    // resting.
+    return flight_.stuckTick.has_value() || flight_.digging || b.fuseSeconds > 0.0 ||
+           (shellAmmo_.weapon && !flight_.inContact);
 }
 
 bool Match::stepWeapon(Vec2 p, bool touched, bool impact) {
@@ -38,6 +41,7 @@ bool Match::stepWeapon(Vec2 p, bool touched, bool impact) {
     };
     const bool newImpact = impact && !flight_.touching;
     flight_.touching = impact;
+    flight_.inContact = touched;
 
     if (flight_.digging) {
         // The tunnel: the tip moves on at its impact speed along its incoming direction,
@@ -100,7 +104,7 @@ bool Match::stepWeapon(Vec2 p, bool touched, bool impact) {
     }
     if (b.burstAtRest) {
         const bool resting = (world_.particles.flags[shell_] & kSleeping) ||
-                             (static_cast<double>(flown) * dt > 1.0 && length(v) < 0.05);
+                             (touched && static_cast<double>(flown) * dt > 1.0 && length(v) < 0.05);
         if (resting) return burstAt(p);
     }
     flight_.lastVelocity = v;

@@ -13,7 +13,8 @@ namespace game {
 
 struct ShellFlight {
     int impacts = 0;                 ///< ticks on which a new impact began
-    bool touching = false;           ///< in contact on the last tick
+    bool touching = false;           ///< an impact (closing faster than 1 m/s) on the last tick
+    bool inContact = false;          ///< touching anything on the last tick
     phys::Vec2 lastVelocity;         ///< the shell's velocity on the previous tick, m/s
     bool split = false;              ///< the cluster has split
     double apexMass = 0.0;           ///< the shell's mass when it split, kg

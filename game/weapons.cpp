@@ -20,6 +20,7 @@ Behaviour bouncer() {
     Behaviour b;
     b.restitution = 0.9;
     b.burstAfterBounces = 3;
+    b.burstAtRest = true; // should it come to rest first
     return b;
 }
 Behaviour roller() {
