@@ -292,6 +292,8 @@ std::string Match::apply(const Command& cmd) {
             for (const auto& n : list) names += (names.empty() ? "" : ", ") + n;
             return refuse("this cannon fires " + names + ", not \"" + cmd.text + "\"");
         }
+        // A name the level lists but no preset or weapon has would fire a shell of nothing.
+        if (!knownProjectile(cmd.text)) return refuse("\"" + cmd.text + "\" is not a projectile or weapon");
         c.projectile = static_cast<std::size_t>(it - list.begin());
         return "";
     }

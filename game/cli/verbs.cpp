@@ -183,6 +183,24 @@ the level has changed since the recording.
 )",
      {},
      runReplayVerify},
+    {"solve-level", "the best game the solver finds on a level: stars, score, shots, commands",
+     R"(usage: artillery solve-level LEVEL.json [--json] [--record FILE] [--require-stars N]
+
+Searches aims, powers, weapons and the order of shots through the same simulation
+as the game, shot by shot: candidates from the firing solution (both arcs, at speeds
+from the least that reaches up) and the computer's trial-shot aim, a coarse grid of
+angles and speeds when none scores, then a pattern search that halves its steps.
+Prints the best result (stars, score, shots) and the shots that achieve it.
+A duel or a sandbox has no stars to earn: it says so and exits 0.
+
+  --json             {"stars":s,"score":n,"max_score":m,"shots":k,"commands":[...]}
+  --record FILE      save the solved game as a replay (replay verify accepts it)
+  --require-stars N  exit 1 when a practice level reaches fewer than N stars
+
+Exit code: 0 ok, 1 fewer stars than --require-stars, 2 bad input.
+)",
+     {},
+     runSolveLevel},
 };
 
 } // namespace

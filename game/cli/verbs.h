@@ -36,6 +36,7 @@ int runDrop(const Args& args, std::ostream& out);
 int runCheck(const Args& args, std::ostream& out);
 int runReplayVerify(const Args& args, std::ostream& out);
 int runRun(const Args& args, std::ostream& out);
+int runSolveLevel(const Args& args, std::ostream& out);
 
 } // namespace game::cli
 

@@ -1,0 +1,71 @@
+// artillery solve-level: the best game the solver finds on a level, as commands.
+#include "game/cli/verbs.h"
+
+#include "game/files/json_reader.h"
+#include "game/solver.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <ostream>
+
+namespace game::cli {
+
+namespace {
+
+std::string describeShot(const std::vector<Command>& c, std::size_t i) {
+    // A shot is select, aim, power, fire at one tick.
+    char line[200];
+    std::snprintf(line, sizeof line, "  tick %6llu  %-10s  aim %8.3f deg  power %7.3f m/s  fire\n",
+                  static_cast<unsigned long long>(c[i].tick), c[i].text.c_str(), c[i + 1].number,
+                  c[i + 2].number);
+    return line;
+}
+
+} // namespace
+
+int runSolveLevel(const Args& args, std::ostream& out) {
+    args.text("<positional>");
+    const bool json = args.flag("json");
+    const auto record = args.text("record");
+    const long long require = args.integer("require-stars", 0, 0, 3);
+    args.rejectUnknown();
+    if (args.positionals().size() != 1) args.fail("name one level file, e.g. artillery solve-level levels/01_earth_basics.json");
+    const std::string file = args.positionals()[0];
+    Level level;
+    try {
+        level = loadLevel(file);
+    } catch (const LoadError& e) {
+        throw UsageError(e.what());
+    }
+    const SolveResult r = solveLevel(level);
+    if (record && r.practice) saveReplay(*record, replayOf(level, r));
+    if (json) {
+        nlohmann::json j{{"stars", r.stars},
+                         {"score", r.score},
+                         {"max_score", r.maxScore},
+                         {"shots", r.shots},
+                         {"commands", nlohmann::json::parse(commandsToJson(r.commands))}};
+        if (!r.practice) j["note"] = std::string("a ") + modeName(level.mode) + " has no stars to earn";
+        out << j.dump() << "\n";
+    } else if (!r.practice) {
+        out << file << ": a " << modeName(level.mode) << " has no stars to earn; nothing to solve\n";
+    } else {
+        char line[240];
+        std::snprintf(line, sizeof line, "%s: %d star%s, score %d of %d, %d shot%s (%ld trial games)\n",
+                      file.c_str(), r.stars, r.stars == 1 ? "" : "s", r.score, r.maxScore, r.shots,
+                      r.shots == 1 ? "" : "s", r.evaluations);
+        out << line;
+        for (std::size_t i = 0; i + 3 < r.commands.size(); i += 4) out << describeShot(r.commands, i);
+        if (record) out << "replay written to " << *record << "\n";
+    }
+    if (r.practice && r.stars < require) {
+        if (!json)
+            out << file << ": the solver reached " << r.stars << " star(s), fewer than the " << require
+                << " required\n";
+        return kCheckFailed;
+    }
+    return kOk;
+}
+
+} // namespace game::cli

@@ -1,0 +1,24 @@
+# solve-level: every shipped level must reach three stars (a level the solver cannot win
+# fails here); the JSON form; a recorded solution that replay verify accepts; a level
+# that cannot be won fails; bad usage.
+file(GLOB SHIPPED_LEVELS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/levels/*.json)
+foreach(level ${SHIPPED_LEVELS})
+  get_filename_component(name ${level} NAME_WE)
+  add_test(NAME solve_level.${name}
+           COMMAND artillery solve-level ${level} --require-stars 3
+           WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(solve_level.${name} PROPERTIES TIMEOUT 170)
+endforeach()
+cli_test(solve_level_json 0 "^\\{\"commands\":\\[\\{.*\"cmd\":\"fire\".*\"max_score\":300,.*\"shots\":1,\"stars\":3\\}"
+         "solve-level;--json;${PROJECT_SOURCE_DIR}/levels/09_tunnelling.json")
+cli_test(solve_level_unwinnable 1 "0 stars, score 0 of 150.*fewer than the 3 required"
+         "solve-level;${PROJECT_SOURCE_DIR}/tests/data/levels_unwinnable/boxed_target.json;--require-stars;3")
+cli_test(solve_level_duel 0 "a duel has no stars to earn" "solve-level;${PROJECT_SOURCE_DIR}/levels/10_duel.json")
+cli_test(solve_level_no_level 2 "name one level file" "solve-level")
+cli_test(solve_level_bad_level 2 "wrong_version.json: \\$\\.format"
+         "solve-level;${PROJECT_SOURCE_DIR}/tests/data/bad_levels/wrong_version.json")
+add_test(NAME cli.solve_level_record_verifies
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:artillery>
+                 -DLEVEL=${PROJECT_SOURCE_DIR}/levels/04_bank_shots.json
+                 -DOUT=${CMAKE_CURRENT_BINARY_DIR}/solve_level_04.replay.json
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/solve_record.cmake)

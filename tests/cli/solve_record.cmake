@@ -1,0 +1,10 @@
+# solve-level --record FILE, then replay verify FILE: the solved game re-simulates bit for bit.
+file(REMOVE ${OUT})
+execute_process(COMMAND ${EXE} solve-level ${LEVEL} --record ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "3 stars")
+  message(FATAL_ERROR "solve-level exited ${rc}:\n${out}")
+endif()
+execute_process(COMMAND ${EXE} replay verify ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "re-simulates bit for bit")
+  message(FATAL_ERROR "replay verify exited ${rc}:\n${out}")
+endif()
