@@ -39,6 +39,7 @@ bool Match::stepWeapon(Vec2 p, bool touched, bool impact) {
         endShot(closestMiss_);
         return true;
     };
+    flight_.flown = static_cast<double>(flown) * dt;
     const bool newImpact = impact && !flight_.touching;
     flight_.touching = impact;
     flight_.inContact = touched;

@@ -12,6 +12,7 @@
 namespace game {
 
 struct ShellFlight {
+    double flown = 0.0;              ///< seconds since firing
     int impacts = 0;                 ///< ticks on which a new impact began
     bool touching = false;           ///< an impact (closing faster than 1 m/s) on the last tick
     bool inContact = false;          ///< touching anything on the last tick

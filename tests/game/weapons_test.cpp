@@ -4,6 +4,7 @@
 // vacuum range; counted weapons refused when spent; bad entries named.
 #include "game/files/json_reader.h"
 #include "game/match.h"
+#include "game/weapon_text.h"
 #include "game/weapons.h"
 
 #include <gtest/gtest.h>
@@ -275,4 +276,17 @@ TEST(Weapons, BadProjectileEntriesAreNamed) {
     } catch (const LoadError& e) {
         EXPECT_NE(std::string(e.what()).find("$.cannons[0].projectiles[0].count"), std::string::npos) << e.what();
     }
+}
+
+TEST(Weapons, PickerLabelsShowShotsLeftAndDescribeThePhysics) {
+    Match m(arenaLevel({10, 2}, false, R"("cannonball", {"name": "grenade", "count": 1})"));
+    EXPECT_EQ(projectileLabel(m.cannon(), 0), "1  cannonball");
+    EXPECT_EQ(projectileLabel(m.cannon(), 1), "2  grenade  (1 left)");
+    aimAndFire(m, 45.0, 10.0, "grenade");
+    EXPECT_EQ(projectileLabel(m.cannon(), 1), "2  grenade  (none left)");
+    EXPECT_EQ(projectileDescription("grenade"),
+              "bounces (e = 0.5) until its 3 s fuse burns down, then bursts\n"
+              "bursts at t = 3 s after firing, to the tick");
+    EXPECT_EQ(projectileDescription("golf-ball"),
+              "golf-ball: a ball, 0.0459 kg, 43 mm, Cd 0.25; bounces by its material's restitution");
 }

@@ -1,4 +1,5 @@
 #include "ui/game/game_menus.h"
+#include "ui/game/weapon_look.h"
 
 #include "game/files/json_reader.h"
 #include "game/level.h"
@@ -336,15 +337,7 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
     const game::CannonState& c = m.cannon();
     ImGui::BeginDisabled(!humanTurn);
     ImGui::PushItemWidth(150);
-    const std::string current = c.def.projectiles[c.projectile];
-    if (ImGui::BeginCombo("projectile", current.c_str())) {
-        for (std::size_t i = 0; i < c.def.projectiles.size(); ++i) {
-            const std::string label = std::to_string(i + 1) + "  " + c.def.projectiles[i];
-            if (ImGui::Selectable(label.c_str(), i == c.projectile) && i != c.projectile)
-                req.projectile = i;
-        }
-        ImGui::EndCombo();
-    }
+    if (const auto chosen = projectilePicker(c)) req.projectile = *chosen;
     ImGui::PopItemWidth();
     const bool canFire = !m.shell() && !m.over() && c.shotsLeft > 0;
     ImGui::BeginDisabled(!canFire);

@@ -6,6 +6,7 @@
 //   effects      trails, preview, hint (the rest: ui/game/effects_view.cpp)
 //   HUD          panels in pixel space, wind arrow, power bar, stars, results card
 #include "ui/game/match_view.h"
+#include "ui/game/weapon_look.h"
 
 #include "game/ai.h"
 #include "ui/game/effects_view.h"
@@ -529,10 +530,13 @@ void drawHud(Renderer2D& r, const Match& m, const MatchViewOptions& o, const Pen
     const double shown = o.charge ? *o.charge * cs.def.maxSpeedMps : aim.speedMps;
     drawPowerBar(s, 24, y0 + 60, 294, shown / cs.def.maxSpeedMps, team(cur), o.charge);
     const game::Ammo ammo = m.selectedAmmo();
-    std::snprintf(line, sizeof line, "%zu/%zu  %s  %.3g kg  %.0f mm", cs.projectile + 1,
+    const int left = cs.projectile < cs.ammoLeft.size() ? cs.ammoLeft[cs.projectile] : -1;
+    std::snprintf(line, sizeof line, "%zu/%zu  %s  %.3g kg  %.0f mm%s", cs.projectile + 1,
                   cs.def.projectiles.size(), ammo.preset.name ? ammo.preset.name : "?",
-                  ammo.preset.mass, ammo.preset.diameter * 1000.0);
+                  ammo.preset.mass, ammo.preset.diameter * 1000.0,
+                  left >= 0 ? ("  x" + std::to_string(left)).c_str() : "");
     s.text(24, y0 + 80, line, kTextDim, 0.85f);
+    if (ammo.weapon) s.text(24, y0 + 96, weaponHudLine(ammo), kTextDim, 0.75f);
 
     // Bottom right: the physics the shot is under (what the level teaches).
     const phys::WorldDef& d = m.world().def();
@@ -763,6 +767,7 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
         r.fillCircle(p, rad * 1.6, Color::hex(0xffffff, 0.35f));
         r.fillCircle(p, rad, kShell);
         r.fillCircle(p + Vec2{-0.3, 0.3} * rad, rad * 0.35, Color::hex(0x8a9099));
+        drawWeaponShell(r, m, rad);
     }
     drawWater(r, m);
     if (o.effects) {
