@@ -1,5 +1,7 @@
 #include "game/ai.h"
 
+#include "game/ai_weapons.h"
+
 #include "physics/ballistics.h"
 
 #include <algorithm>
@@ -177,6 +179,13 @@ std::vector<Command> ComputerPlayer::takeTurn(const Match& match, std::uint64_t 
     const AimSolution aim = aimAt(match, *target);
     const AimError err = aimError(difficulty_);
     const CannonState& c = match.cannon();
+    if (const auto weapon = chooseWeapon(match, *target)) {
+        Command sel;
+        sel.tick = tick;
+        sel.kind = CommandKind::Select;
+        sel.text = *weapon;
+        out.push_back(sel);
+    }
     Command a;
     a.tick = tick;
     a.kind = CommandKind::Aim;
@@ -188,7 +197,7 @@ std::vector<Command> ComputerPlayer::takeTurn(const Match& match, std::uint64_t 
     Command f;
     f.tick = tick;
     f.kind = CommandKind::Fire;
-    out = {a, p, f};
+    out.insert(out.end(), {a, p, f});
     return out;
 }
 

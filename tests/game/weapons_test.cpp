@@ -4,6 +4,7 @@
 // vacuum range; counted weapons refused when spent; bad entries named.
 #include "game/files/json_reader.h"
 #include "game/match.h"
+#include "game/ai_weapons.h"
 #include "game/weapon_text.h"
 #include "game/weapons.h"
 
@@ -289,4 +290,22 @@ TEST(Weapons, PickerLabelsShowShotsLeftAndDescribeThePhysics) {
               "bursts at t = 3 s after firing, to the tick");
     EXPECT_EQ(projectileDescription("golf-ball"),
               "golf-ball: a ball, 0.0459 kg, 43 mm, Cd 0.25; bounces by its material's restitution");
+}
+
+TEST(Weapons, TheComputerPicksTheWeaponWhosePhysicsSuitsItsAim) {
+    // A disc in the air: only a passing shell scores, so the least drag among the
+    // weapons that burst on impact: the mortar (k = 8.2e-5 /m against 0.0104 /m).
+    Match m(arenaLevel({10, 2}, true, R"("cannonball", "airburst", "mortar", "sticky")"));
+    EXPECT_EQ(chooseWeapon(m, m.targets()[0].position), std::optional<std::string>("mortar"));
+    // Spent: the next best.
+    Match spent(arenaLevel({10, 2}, true, R"("cannonball", "airburst", {"name": "mortar", "count": 1})"));
+    aimAndFire(spent, 45.0, 10.0, "mortar");
+    untilShotOver(spent);
+    EXPECT_EQ(chooseWeapon(spent, spent.targets()[0].position), std::optional<std::string>("airburst"));
+    // The rope bridge's crate (a structure): the most momentum, m v + blast impulse.
+    Match bridge(loadLevel(std::string(ARTILLERY_SOURCE_DIR) + "/levels/06_rope_bridge.json"));
+    EXPECT_EQ(chooseWeapon(bridge, bridge.blocks()[1].def.position), std::optional<std::string>("mortar"));
+    // Levels without weapons keep the player's pick (the golden replays depend on it).
+    Match plain(arenaLevel({10, 2}, true, R"("cannonball", "golf-ball")"));
+    EXPECT_EQ(chooseWeapon(plain, plain.targets()[0].position), std::nullopt);
 }
