@@ -24,9 +24,12 @@ double worth(const Weapon& w, Aim aim, double speed) {
     const double area = 0.25 * std::numbers::pi * w.body.diameter * w.body.diameter;
     const double k = 1.225 * w.body.dragCoefficient * area / (2.0 * w.body.mass);
     switch (aim) {
-    case Aim::Cannon: return w.blastRadius;
-    case Aim::Structure: return w.body.mass * speed + w.blastImpulse;
-    case Aim::Disc: return -k;
+    case Aim::Cannon:
+        return w.blastRadius;
+    case Aim::Structure:
+        return w.body.mass * speed + w.blastImpulse;
+    case Aim::Disc:
+        return -k;
     }
     return 0.0;
 }

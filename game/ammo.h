@@ -42,7 +42,7 @@ struct Ammo {
     double blastImpulse = 0.0; ///< N s at the centre (linear falloff)
     double craterRadius = 0.0; ///< m
     Behaviour behaviour;
-    bool weapon = false;       ///< from the weapons table (its own material, its behaviour)
+    bool weapon = false; ///< from the weapons table (its own material, its behaviour)
 };
 
 /// A projectile preset or a weapon by name.

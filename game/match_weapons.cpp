@@ -78,7 +78,8 @@ bool Match::stepWeapon(Vec2 p, bool touched, bool impact) {
     case OnImpact::Bounce:
         if (newImpact) {
             ++flight_.impacts;
-            if (b.burstAfterBounces > 0 && flight_.impacts >= b.burstAfterBounces) return burstAt(p);
+            if (b.burstAfterBounces > 0 && flight_.impacts >= b.burstAfterBounces)
+                return burstAt(p);
         }
         break;
     case OnImpact::Stick:
@@ -164,18 +165,22 @@ void Match::stepFragments() {
             if (d > t.def.radius + r) continue;
             t.hit = true;
             const double closeness = 1.0 - d / (t.def.radius + r);
-            const int points = static_cast<int>(std::lround(t.def.points * (0.5 + 0.5 * closeness)));
+            const int points =
+                static_cast<int>(std::lround(t.def.points * (0.5 + 0.5 * closeness)));
             shooter.score += points;
             emit(EventKind::TargetHit, current_, t.position, points);
         }
         bool touched = false;
-        for (const ContactEvent& e : world_.contacts()) touched = touched || e.a == f || e.b == f;
-        for (const BodyContactEvent& e : coupling_.events()) touched = touched || e.particle == f;
+        for (const ContactEvent& e : world_.contacts())
+            touched = touched || e.a == f || e.b == f;
+        for (const BodyContactEvent& e : coupling_.events())
+            touched = touched || e.particle == f;
         if (touched) {
             burst(p, -1, f);
             continue;
         }
-        const bool outside = p.x < level_.worldMin.x || p.x > level_.worldMax.x || p.y < level_.worldMin.y;
+        const bool outside =
+            p.x < level_.worldMin.x || p.x > level_.worldMax.x || p.y < level_.worldMin.y;
         if (outside || flight > kMaxFlightSeconds || !std::isfinite(p.x) || !std::isfinite(p.y)) {
             set.remove(f);
             continue;

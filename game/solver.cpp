@@ -33,7 +33,7 @@ struct Outcome {
     int stars = 0;
     double miss = INFINITY; ///< the last shot's closest miss (m), 0 on a hit
     std::uint64_t endTick = 0;
-    bool fired = false;     ///< the last shot was accepted
+    bool fired = false; ///< the last shot was accepted
 };
 
 bool hasStructures(const Level& l) {
@@ -53,7 +53,8 @@ std::vector<Command> shotCommands(const Shot& s, std::uint64_t tick) {
     out[2].kind = CommandKind::Power;
     out[2].number = s.speedMps;
     out[3].kind = CommandKind::Fire;
-    for (auto& c : out) c.tick = tick;
+    for (auto& c : out)
+        c.tick = tick;
     return out;
 }
 
@@ -126,7 +127,8 @@ class Search {
             auto consider = [&](const Shot& s) {
                 if (bestOutcome.over && bestOutcome.stars == 3) return;
                 std::vector<Command> trial = commands_;
-                for (const Command& c : shotCommands(s, at)) trial.push_back(c);
+                for (const Command& c : shotCommands(s, at))
+                    trial.push_back(c);
                 const Outcome o = play(level_, trial, evaluations_);
                 if (!o.fired) return;
                 const Worth w{o.score - state.score, o.over, o.miss};
@@ -136,14 +138,17 @@ class Search {
                     bestOutcome = o;
                 }
             };
-            for (const Shot& s : seeds(at)) consider(s);
+            for (const Shot& s : seeds(at))
+                consider(s);
             if (bestWorth.gain <= 0)
-                for (const Shot& s : grid(at)) consider(s);
+                for (const Shot& s : grid(at))
+                    consider(s);
             if (bestWorth.gain < 0) break; // nothing can be fired
             // A shot that scores is polished for points; a miss gets a short look around.
             refine(best, bestWorth, bestOutcome, consider, bestWorth.gain > 0 ? 6 : 2);
             if (bestWorth.gain <= 0 && !bestWorth.over) break; // no shot scores: stop here
-            for (const Command& c : shotCommands(best, at)) commands_.push_back(c);
+            for (const Command& c : shotCommands(best, at))
+                commands_.push_back(c);
             state = bestOutcome;
             ++r.shots;
         }
@@ -170,7 +175,8 @@ class Search {
         std::vector<std::string> out;
         const CannonState& c = m.cannon();
         for (std::size_t i = 0; i < c.def.projectiles.size(); ++i)
-            if ((i >= c.ammoLeft.size() || c.ammoLeft[i] != 0) && knownProjectile(c.def.projectiles[i]))
+            if ((i >= c.ammoLeft.size() || c.ammoLeft[i] != 0) &&
+                knownProjectile(c.def.projectiles[i]))
                 out.push_back(c.def.projectiles[i]);
         return out;
     }
@@ -217,12 +223,14 @@ class Search {
             for (std::size_t i = first; i < out.size(); ++i) {
                 double miss = INFINITY;
                 for (const Vec2 q : m->previewTrajectory(out[i].angleDeg, out[i].speedMps, 12.0))
-                    for (const Vec2 p : aimPoints(*m)) miss = std::min(miss, length(q - p));
+                    for (const Vec2 p : aimPoints(*m))
+                        miss = std::min(miss, length(q - p));
                 ranked.push_back({miss, out[i]});
             }
             std::stable_sort(ranked.begin(), ranked.end(),
                              [](const auto& x, const auto& y) { return x.first < y.first; });
-            for (std::size_t i = 0; i < ranked.size(); ++i) out[first + i] = ranked[i].second;
+            for (std::size_t i = 0; i < ranked.size(); ++i)
+                out[first + i] = ranked[i].second;
         }
         return out;
     }
@@ -244,17 +252,20 @@ class Search {
                 for (const double f : {0.3, 0.45, 0.6, 0.75, 0.9, 1.0}) {
                     double miss = INFINITY;
                     for (const Vec2 q : m->previewTrajectory(a, f * vmax, 12.0))
-                        for (const Vec2 p : points) miss = std::min(miss, length(q - p));
+                        for (const Vec2 p : points)
+                            miss = std::min(miss, length(q - p));
                     ranked.push_back({miss, Shot{w, a, f * vmax}});
                 }
         }
         std::stable_sort(ranked.begin(), ranked.end(),
                          [](const auto& x, const auto& y) { return x.first < y.first; });
         std::vector<Shot> out;
-        for (std::size_t i = 0; i < ranked.size() && i < kGridPlayed; ++i) out.push_back(ranked[i].second);
+        for (std::size_t i = 0; i < ranked.size() && i < kGridPlayed; ++i)
+            out.push_back(ranked[i].second);
         // Bank shots: the preview ends at the first wall, so also play an even spread of the
         // rest, every weapon and direction.
-        for (std::size_t i = kGridPlayed; i < ranked.size(); i += 6) out.push_back(ranked[i].second);
+        for (std::size_t i = kGridPlayed; i < ranked.size(); i += 6)
+            out.push_back(ranked[i].second);
         return out;
     }
 
@@ -289,7 +300,9 @@ class Search {
 
 } // namespace
 
-SolveResult solveLevel(const Level& level) { return Search(level).run(); }
+SolveResult solveLevel(const Level& level) {
+    return Search(level).run();
+}
 
 Replay replayOf(const Level& level, const SolveResult& result) {
     Replay r;
@@ -300,7 +313,8 @@ Replay replayOf(const Level& level, const SolveResult& result) {
     Match m(level);
     std::size_t next = 0;
     while (m.tick() < result.ticks) {
-        while (next < r.commands.size() && r.commands[next].tick <= m.tick()) m.apply(r.commands[next++]);
+        while (next < r.commands.size() && r.commands[next].tick <= m.tick())
+            m.apply(r.commands[next++]);
         m.step();
         if (m.tick() % r.checkpointEvery == 0) r.checkpoints.push_back(checkpointOf(m));
     }

@@ -18,14 +18,14 @@
 namespace game {
 
 struct SolveResult {
-    bool practice = true;       ///< false for duels and sandboxes: nothing to score
+    bool practice = true; ///< false for duels and sandboxes: nothing to score
     int stars = 0;
     int score = 0;
     int maxScore = 0;
     int shots = 0;
     std::vector<Command> commands;
-    std::uint64_t ticks = 0;    ///< length of the game the commands play
-    long evaluations = 0;       ///< candidate shots simulated
+    std::uint64_t ticks = 0; ///< length of the game the commands play
+    long evaluations = 0;    ///< candidate shots simulated
 };
 
 SolveResult solveLevel(const Level& level);

@@ -9,7 +9,8 @@ namespace game {
 std::string projectileLabel(const CannonState& c, std::size_t i) {
     std::string out = std::to_string(i + 1) + "  " + c.def.projectiles[i];
     if (i < c.ammoLeft.size() && c.ammoLeft[i] >= 0)
-        out += "  (" + (c.ammoLeft[i] == 0 ? std::string("none") : std::to_string(c.ammoLeft[i])) + " left)";
+        out += "  (" + (c.ammoLeft[i] == 0 ? std::string("none") : std::to_string(c.ammoLeft[i])) +
+               " left)";
     return out;
 }
 
@@ -20,7 +21,8 @@ std::string projectileDescription(const std::string& name) {
     char line[160];
     std::snprintf(line, sizeof line, "%s: a ball, %.3g kg, %.0f mm, Cd %.2f; %s", p->name, p->mass,
                   p->diameter * 1000.0, p->dragCoefficient,
-                  name == "cannonball" ? "bursts on impact" : "bounces by its material's restitution");
+                  name == "cannonball" ? "bursts on impact"
+                                       : "bounces by its material's restitution");
     return line;
 }
 

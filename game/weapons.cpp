@@ -71,7 +71,8 @@ const Weapon kWeapons[] = {
      ProjectilePreset{"cluster", mat::kSteelBearing, 6.0, 0.12, 0.47}, 2.5, 90.0, 1.5, cluster()},
     {"bouncer", "a rubber-skinned charge: bounces (e = 0.9) and bursts on its 3rd impact",
      "v_n' = -e v_n with e = 0.9; bursts at impact 3",
-     ProjectilePreset{"bouncer", mat::kRubberBandBall, 0.5, 0.09, 0.47}, 3.0, 120.0, 2.0, bouncer()},
+     ProjectilePreset{"bouncer", mat::kRubberBandBall, 0.5, 0.09, 0.47}, 3.0, 120.0, 2.0,
+     bouncer()},
     {"roller", "lands softly (e = 0.05) and rolls along the ground; bursts when it stops",
      "a = -mu_r g cos(theta) - g sin(theta) along the ground, mu_r = 0.05",
      ProjectilePreset{"roller", mat::kSteelBearing, 3.0, 0.15, 0.47}, 3.0, 150.0, 2.0, roller()},
@@ -89,12 +90,15 @@ const Weapon kWeapons[] = {
      ProjectilePreset{"digger", mat::kSteelBearing, 8.0, 0.1, 0.3}, 3.0, 150.0, 2.0, digger()},
     {"sticky", "a sticky charge (e = 0): stops where it touches, bursts 1.5 s later",
      "e = 0 and no slip: v' = 0 at contact; bursts 1.5 s after",
-     ProjectilePreset{"sticky", mat::kHollowHardPlastic, 1.5, 0.1, 0.47}, 3.0, 150.0, 2.0, sticky()},
+     ProjectilePreset{"sticky", mat::kHollowHardPlastic, 1.5, 0.1, 0.47}, 3.0, 150.0, 2.0,
+     sticky()},
 };
 
 } // namespace
 
-std::span<const Weapon> weapons() { return kWeapons; }
+std::span<const Weapon> weapons() {
+    return kWeapons;
+}
 
 const Weapon* weaponFromName(std::string_view name) {
     for (const Weapon& w : kWeapons)
@@ -104,7 +108,8 @@ const Weapon* weaponFromName(std::string_view name) {
 
 std::string weaponNameList() {
     std::string out;
-    for (const Weapon& w : kWeapons) out += (out.empty() ? "" : ", ") + std::string(w.name);
+    for (const Weapon& w : kWeapons)
+        out += (out.empty() ? "" : ", ") + std::string(w.name);
     return out;
 }
 

@@ -30,7 +30,8 @@ int runSolveLevel(const Args& args, std::ostream& out) {
     const auto record = args.text("record");
     const long long require = args.integer("require-stars", 0, 0, 3);
     args.rejectUnknown();
-    if (args.positionals().size() != 1) args.fail("name one level file, e.g. artillery solve-level levels/01_earth_basics.json");
+    if (args.positionals().size() != 1)
+        args.fail("name one level file, e.g. artillery solve-level levels/01_earth_basics.json");
     const std::string file = args.positionals()[0];
     Level level;
     try {
@@ -46,23 +47,27 @@ int runSolveLevel(const Args& args, std::ostream& out) {
                          {"max_score", r.maxScore},
                          {"shots", r.shots},
                          {"commands", nlohmann::json::parse(commandsToJson(r.commands))}};
-        if (!r.practice) j["note"] = std::string("a ") + modeName(level.mode) + " has no stars to earn";
+        if (!r.practice)
+            j["note"] = std::string("a ") + modeName(level.mode) + " has no stars to earn";
         out << j.dump() << "\n";
     } else if (!r.practice) {
-        out << file << ": a " << modeName(level.mode) << " has no stars to earn; nothing to solve\n";
+        out << file << ": a " << modeName(level.mode)
+            << " has no stars to earn; nothing to solve\n";
     } else {
         char line[240];
-        std::snprintf(line, sizeof line, "%s: %d star%s, score %d of %d, %d shot%s (%ld trial games)\n",
-                      file.c_str(), r.stars, r.stars == 1 ? "" : "s", r.score, r.maxScore, r.shots,
+        std::snprintf(line, sizeof line,
+                      "%s: %d star%s, score %d of %d, %d shot%s (%ld trial games)\n", file.c_str(),
+                      r.stars, r.stars == 1 ? "" : "s", r.score, r.maxScore, r.shots,
                       r.shots == 1 ? "" : "s", r.evaluations);
         out << line;
-        for (std::size_t i = 0; i + 3 < r.commands.size(); i += 4) out << describeShot(r.commands, i);
+        for (std::size_t i = 0; i + 3 < r.commands.size(); i += 4)
+            out << describeShot(r.commands, i);
         if (record) out << "replay written to " << *record << "\n";
     }
     if (r.practice && r.stars < require) {
         if (!json)
-            out << file << ": the solver reached " << r.stars << " star(s), fewer than the " << require
-                << " required\n";
+            out << file << ": the solver reached " << r.stars << " star(s), fewer than the "
+                << require << " required\n";
         return kCheckFailed;
     }
     return kOk;

@@ -2,9 +2,9 @@
 // the fuse to the tick, the bounce count and e, the sticky charge's e = 0, the airburst
 // height, the tunnel's end point, the roller's stopping distance, the mortar's near-
 // vacuum range; counted weapons refused when spent; bad entries named.
+#include "game/ai_weapons.h"
 #include "game/files/json_reader.h"
 #include "game/match.h"
-#include "game/ai_weapons.h"
 #include "game/weapon_text.h"
 #include "game/weapons.h"
 
@@ -20,17 +20,21 @@ using phys::Vec2;
 namespace {
 
 // A flat floor (the rigid reference, e = 1) from x = 0 to 400, one cannon at `at`.
-std::string arena(Vec2 at, bool drag, const std::string& projectiles, const std::string& terrainMaterial = "floor") {
+std::string arena(Vec2 at, bool drag, const std::string& projectiles,
+                  const std::string& terrainMaterial = "floor") {
     return R"({"format": 1, "name": "arena", "world": {"min": [0, -20], "max": [400, 200]},
       "physics": {"gravity": 9.81, "drag": )" +
            std::string(drag ? "true" : "false") + R"(},
-      "terrain": {"points": [[0, 0], [400, 0]], "material": ")" + terrainMaterial + R"("},
-      "cannons": [{"position": [)" + std::to_string(at.x) + ", " + std::to_string(at.y) +
+      "terrain": {"points": [[0, 0], [400, 0]], "material": ")" +
+           terrainMaterial + R"("},
+      "cannons": [{"position": [)" +
+           std::to_string(at.x) + ", " + std::to_string(at.y) +
            R"(], "max_speed_mps": 100, "projectiles": [)" + projectiles + R"(]}],
       "targets": [{"position": [395, 190], "radius": 1}], "shots": 20})";
 }
 
-Level arenaLevel(Vec2 at, bool drag, const std::string& projectiles, const std::string& m = "floor") {
+Level arenaLevel(Vec2 at, bool drag, const std::string& projectiles,
+                 const std::string& m = "floor") {
     return parseLevel("arena.json", arena(at, drag, projectiles, m));
 }
 
@@ -57,12 +61,14 @@ const GameEvent* first(const Match& m, EventKind k) {
 
 int count(const Match& m, EventKind k) {
     int n = 0;
-    for (const auto& e : m.events()) n += e.kind == k;
+    for (const auto& e : m.events())
+        n += e.kind == k;
     return n;
 }
 
 void untilShotOver(Match& m) {
-    for (int i = 0; i < 120 * 40 && m.shell(); ++i) m.step();
+    for (int i = 0; i < 120 * 40 && m.shell(); ++i)
+        m.step();
 }
 
 constexpr double kG = 9.81;
@@ -97,7 +103,8 @@ TEST(Weapons, ClusterSplitsAtTheApexTickAndConservesMomentum) {
     const double angle = 60.0, speed = 40.0;
     aimAndFire(m, angle, speed, "cluster");
     const std::uint64_t fired = m.tick();
-    while (m.shell() && !m.flight().split) m.step();
+    while (m.shell() && !m.flight().split)
+        m.step();
     ASSERT_TRUE(m.flight().split);
     // Closed form without drag: v_y(t) = v_y0 - g t; the split is on the first tick where
     // v_y <= 0, i.e. k = ceil(v_y0 / (g dt)).
@@ -156,14 +163,15 @@ TEST(Weapons, GrenadeBurstsOnItsFuseToTheTickAndBouncesMeanwhile) {
     untilShotOver(m);
     const GameEvent* b = first(m, EventKind::Burst);
     ASSERT_NE(b, nullptr);
-    EXPECT_EQ(b->tick - fired, 360u); // 3 s at 120 ticks per second
+    EXPECT_EQ(b->tick - fired, 360u);          // 3 s at 120 ticks per second
     EXPECT_GE(count(m, EventKind::Bounce), 1); // it hit the floor before the fuse ran out
 }
 
 TEST(Weapons, StickyStopsDeadWhereItTouchesAndBurstsLater) {
     Match m(arenaLevel({10, 2}, false, R"("sticky")"));
     aimAndFire(m, 45.0, 20.0, "sticky");
-    while (m.shell() && !m.flight().stuckTick) m.step();
+    while (m.shell() && !m.flight().stuckTick)
+        m.step();
     ASSERT_TRUE(m.flight().stuckTick);
     const auto id = *m.shell();
     const Vec2 at = m.world().particles.position(id);
@@ -201,7 +209,8 @@ TEST(Weapons, AirburstBurstsAtItsHeightOnTheWayDown) {
 TEST(Weapons, DiggerTunnelsItsLengthAlongItsPathThenBursts) {
     Match m(arenaLevel({10, 30}, false, R"("digger")", "ground"));
     aimAndFire(m, -45.0, 20.0, "digger");
-    while (m.shell() && !m.flight().digging) m.step();
+    while (m.shell() && !m.flight().digging)
+        m.step();
     ASSERT_TRUE(m.flight().digging);
     const Vec2 origin = m.flight().digOrigin, dir = m.flight().digDirection;
     EXPECT_NEAR(length(dir), 1.0, 1e-12);
@@ -263,11 +272,14 @@ TEST(Weapons, CountedWeaponsAreRefusedWhenSpent) {
 
 TEST(Weapons, BadProjectileEntriesAreNamed) {
     try {
-        parseLevel("bad.json", arena({10, 2}, false, R"("cannonball", {"name": "nuke", "count": 2})"));
+        parseLevel("bad.json",
+                   arena({10, 2}, false, R"("cannonball", {"name": "nuke", "count": 2})"));
         FAIL() << "a weapon that does not exist was accepted";
     } catch (const LoadError& e) {
-        EXPECT_EQ(std::string(e.what()).rfind("bad.json: $.cannons[0].projectiles[1].name: expected a weapon (cluster, "
-                                              "bouncer, roller, grenade, mortar, airburst, digger, sticky)", 0),
+        EXPECT_EQ(std::string(e.what()).rfind(
+                      "bad.json: $.cannons[0].projectiles[1].name: expected a weapon (cluster, "
+                      "bouncer, roller, grenade, mortar, airburst, digger, sticky)",
+                      0),
                   0u)
             << e.what();
     }
@@ -275,7 +287,9 @@ TEST(Weapons, BadProjectileEntriesAreNamed) {
         parseLevel("bad.json", arena({10, 2}, false, R"({"name": "grenade", "count": 0})"));
         FAIL() << "a count of 0 was accepted";
     } catch (const LoadError& e) {
-        EXPECT_NE(std::string(e.what()).find("$.cannons[0].projectiles[0].count"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("$.cannons[0].projectiles[0].count"),
+                  std::string::npos)
+            << e.what();
     }
 }
 
@@ -288,8 +302,9 @@ TEST(Weapons, PickerLabelsShowShotsLeftAndDescribeThePhysics) {
     EXPECT_EQ(projectileDescription("grenade"),
               "bounces (e = 0.5) until its 3 s fuse burns down, then bursts\n"
               "bursts at t = 3 s after firing, to the tick");
-    EXPECT_EQ(projectileDescription("golf-ball"),
-              "golf-ball: a ball, 0.0459 kg, 43 mm, Cd 0.25; bounces by its material's restitution");
+    EXPECT_EQ(
+        projectileDescription("golf-ball"),
+        "golf-ball: a ball, 0.0459 kg, 43 mm, Cd 0.25; bounces by its material's restitution");
 }
 
 TEST(Weapons, TheComputerPicksTheWeaponWhosePhysicsSuitsItsAim) {
@@ -298,13 +313,16 @@ TEST(Weapons, TheComputerPicksTheWeaponWhosePhysicsSuitsItsAim) {
     Match m(arenaLevel({10, 2}, true, R"("cannonball", "airburst", "mortar", "sticky")"));
     EXPECT_EQ(chooseWeapon(m, m.targets()[0].position), std::optional<std::string>("mortar"));
     // Spent: the next best.
-    Match spent(arenaLevel({10, 2}, true, R"("cannonball", "airburst", {"name": "mortar", "count": 1})"));
+    Match spent(
+        arenaLevel({10, 2}, true, R"("cannonball", "airburst", {"name": "mortar", "count": 1})"));
     aimAndFire(spent, 45.0, 10.0, "mortar");
     untilShotOver(spent);
-    EXPECT_EQ(chooseWeapon(spent, spent.targets()[0].position), std::optional<std::string>("airburst"));
+    EXPECT_EQ(chooseWeapon(spent, spent.targets()[0].position),
+              std::optional<std::string>("airburst"));
     // The rope bridge's crate (a structure): the most momentum, m v + blast impulse.
     Match bridge(loadLevel(std::string(ARTILLERY_SOURCE_DIR) + "/levels/06_rope_bridge.json"));
-    EXPECT_EQ(chooseWeapon(bridge, bridge.blocks()[1].def.position), std::optional<std::string>("mortar"));
+    EXPECT_EQ(chooseWeapon(bridge, bridge.blocks()[1].def.position),
+              std::optional<std::string>("mortar"));
     // Levels without weapons keep the player's pick (the golden replays depend on it).
     Match plain(arenaLevel({10, 2}, true, R"("cannonball", "golf-ball")"));
     EXPECT_EQ(chooseWeapon(plain, plain.targets()[0].position), std::nullopt);

@@ -27,10 +27,10 @@ struct Look {
 
 // One row per weapon of game/weapons.cpp.
 const Look kLooks[] = {
-    {"cluster", Color::hex(0x8f4fd0), Mark::Dots},   {"bouncer", Color::hex(0xe0483a), Mark::Ring},
-    {"roller", Color::hex(0x4a6a8a), Mark::Band},    {"grenade", Color::hex(0x4f6b2f), Mark::Fuse},
-    {"mortar", Color::hex(0x22262c), Mark::Fins},    {"airburst", Color::hex(0xe8c23a), Mark::Skirt},
-    {"digger", Color::hex(0x9a6a3a), Mark::Tip},     {"sticky", Color::hex(0x3fbf6a), Mark::Glue},
+    {"cluster", Color::hex(0x8f4fd0), Mark::Dots}, {"bouncer", Color::hex(0xe0483a), Mark::Ring},
+    {"roller", Color::hex(0x4a6a8a), Mark::Band},  {"grenade", Color::hex(0x4f6b2f), Mark::Fuse},
+    {"mortar", Color::hex(0x22262c), Mark::Fins},  {"airburst", Color::hex(0xe8c23a), Mark::Skirt},
+    {"digger", Color::hex(0x9a6a3a), Mark::Tip},   {"sticky", Color::hex(0x3fbf6a), Mark::Glue},
 };
 
 const Look* lookOf(const char* name) {
@@ -49,11 +49,16 @@ void drawMark(Renderer2D& r, const game::Match& m, const Look& look, Vec2 p, Vec
     case Mark::Dots: // the bomblets inside
         for (int k = 0; k < 4; ++k) {
             const double a = std::numbers::pi * (0.25 + 0.5 * k);
-            r.fillCircle(p + Vec2{std::cos(a), std::sin(a)} * (0.45 * rad), 0.22 * rad, Color::hex(0xf2e6ff));
+            r.fillCircle(p + Vec2{std::cos(a), std::sin(a)} * (0.45 * rad), 0.22 * rad,
+                         Color::hex(0xf2e6ff));
         }
         break;
-    case Mark::Ring: r.strokeCircle(p, rad * 1.25, Color::hex(0xffb0a0), 3.0f); break;
-    case Mark::Band: r.line(p - side * rad, p + side * rad, Color::hex(0xd8e0e8), 3.0f); break;
+    case Mark::Ring:
+        r.strokeCircle(p, rad * 1.25, Color::hex(0xffb0a0), 3.0f);
+        break;
+    case Mark::Band:
+        r.line(p - side * rad, p + side * rad, Color::hex(0xd8e0e8), 3.0f);
+        break;
     case Mark::Fuse: { // a ring that shrinks as the fuse burns down
         const double fuse = ammo.behaviour.fuseSeconds;
         const double left = fuse > 0.0 ? std::clamp(1.0 - m.flight().flown / fuse, 0.0, 1.0) : 1.0;
@@ -66,7 +71,8 @@ void drawMark(Renderer2D& r, const game::Match& m, const Look& look, Vec2 p, Vec
         r.line(p - dir * rad, p - dir * (2.0 * rad) - side * rad, Color::hex(0x8a9099), 3.0f);
         break;
     case Mark::Skirt: // the drag skirt, and the height it bursts at above the ground
-        r.line(p - dir * rad + side * (1.4 * rad), p - dir * rad - side * (1.4 * rad), Color::hex(0xfff3b0), 3.0f);
+        r.line(p - dir * rad + side * (1.4 * rad), p - dir * rad - side * (1.4 * rad),
+               Color::hex(0xfff3b0), 3.0f);
         if (ammo.behaviour.airburstHeight > 0.0) {
             const double ground = m.terrain().heightAt(p.x);
             const Vec2 a{p.x, ground + ammo.behaviour.airburstHeight};
@@ -108,7 +114,8 @@ std::optional<std::size_t> projectilePicker(const game::CannonState& c) {
         for (std::size_t i = 0; i < c.def.projectiles.size(); ++i) {
             const bool spent = i < c.ammoLeft.size() && c.ammoLeft[i] == 0;
             ImGui::BeginDisabled(spent);
-            if (ImGui::Selectable(game::projectileLabel(c, i).c_str(), i == c.projectile) && i != c.projectile)
+            if (ImGui::Selectable(game::projectileLabel(c, i).c_str(), i == c.projectile) &&
+                i != c.projectile)
                 chosen = i;
             ImGui::EndDisabled();
             if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
@@ -117,7 +124,8 @@ std::optional<std::size_t> projectilePicker(const game::CannonState& c) {
         ImGui::EndCombo();
     }
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("%s", game::projectileDescription(c.def.projectiles[c.projectile]).c_str());
+        ImGui::SetTooltip("%s",
+                          game::projectileDescription(c.def.projectiles[c.projectile]).c_str());
     return chosen;
 }
 
