@@ -44,6 +44,20 @@ bool hasStructures(const Level& l) {
     return false;
 }
 
+/// Nothing that could still fall over is moving: every block and target blob at rest
+/// (below 5 cm/s and 0.05 rad/s).
+bool still(const Match& m) {
+    for (const auto& b : m.blocks()) {
+        if (!m.rigid().alive(b.body)) continue;
+        const phys::RigidBodyState s = m.rigid().state(b.body);
+        if (length(s.linearVelocity) > 0.05 || std::abs(s.angularVelocity) > 0.05) return false;
+    }
+    for (const auto& b : m.blobs())
+        if (b.def.target && !b.toppled && length(m.world().particles.velocity(b.center)) > 0.05)
+            return false;
+    return true;
+}
+
 std::vector<Command> shotCommands(const Shot& s, std::uint64_t tick) {
     std::vector<Command> out(4);
     out[0].kind = CommandKind::Select;
@@ -78,7 +92,7 @@ Outcome play(const Level& level, const std::vector<Command>& commands, long& eva
             if (!m.shell()) {
                 if (commands.empty()) break; // the first shot goes at once
                 if (quietSince == 0) quietSince = m.tick();
-                if (!settle || m.tick() >= quietSince + kSettleTicks) break;
+                if (!settle || m.tick() >= quietSince + kSettleTicks || still(m)) break;
             } else {
                 quietSince = 0;
             }
@@ -195,6 +209,7 @@ class Search {
 
     std::vector<Shot> seeds(std::uint64_t at) {
         std::vector<Shot> out;
+        std::vector<std::pair<std::size_t, std::size_t>> perWeapon; // [begin, end) in out
         auto m = matchAt(at);
         const double g = -m->world().def().forces.gravity.y;
         const double vmax = m->cannon().def.maxSpeedMps;
@@ -231,8 +246,15 @@ class Search {
                              [](const auto& x, const auto& y) { return x.first < y.first; });
             for (std::size_t i = 0; i < ranked.size(); ++i)
                 out[first + i] = ranked[i].second;
+            perWeapon.push_back({first, out.size()});
         }
-        return out;
+        // Each weapon's best first, then each one's second, ...: the weapon a level needs
+        // (the mortar for a heavy crate) is tried early.
+        std::vector<Shot> interleaved;
+        for (std::size_t rank = 0; interleaved.size() < out.size(); ++rank)
+            for (const auto& [begin, end] : perWeapon)
+                if (begin + rank < end) interleaved.push_back(out[begin + rank]);
+        return interleaved;
     }
 
     /// The coarse grid, screened by the preview (the shell alone, up to its first contact
