@@ -18,6 +18,11 @@ namespace {
 /// takes a while to fall over).
 constexpr std::uint64_t kSettleTicks = 240;
 constexpr std::uint64_t kMaxGameTicks = 120ull * 60 * 10;
+/// Trial games in all: a level with hundreds of targets and shots still ends in minutes,
+/// with the best game found so far.
+constexpr long kMaxEvaluations = 3000;
+/// Things to hit that seed candidates, nearest the cannon first.
+constexpr std::size_t kMaxAimPoints = 6;
 /// Grid candidates played in full after the preview's screening.
 constexpr std::size_t kGridPlayed = 16;
 
@@ -140,6 +145,7 @@ class Search {
             // A shot that ends the game with three stars cannot be bettered by more search.
             auto consider = [&](const Shot& s) {
                 if (bestOutcome.over && bestOutcome.stars == 3) return;
+                if (evaluations_ >= kMaxEvaluations) return; // a bound on any level's search
                 std::vector<Command> trial = commands_;
                 for (const Command& c : shotCommands(s, at))
                     trial.push_back(c);
@@ -204,6 +210,10 @@ class Search {
             if (b.def.target && !b.toppled) out.push_back(m.rigid().state(b.body).position);
         for (const auto& b : m.blobs())
             if (b.def.target && !b.toppled) out.push_back(m.world().particles.position(b.center));
+        const Vec2 from = m.cannon().def.position;
+        std::stable_sort(out.begin(), out.end(),
+                         [&](Vec2 a, Vec2 b) { return length(a - from) < length(b - from); });
+        if (out.size() > kMaxAimPoints) out.resize(kMaxAimPoints);
         return out;
     }
 

@@ -52,7 +52,8 @@ int runSolveLevel(const Args& args, std::ostream& out) {
         out << j.dump() << "\n";
     } else if (!r.practice) {
         out << file << ": a " << modeName(level.mode)
-            << " has no stars to earn; nothing to solve\n";
+            << " has no stars to earn; nothing to solve" << (record ? " (no replay written)" : "")
+            << "\n";
     } else {
         char line[240];
         std::snprintf(line, sizeof line,
