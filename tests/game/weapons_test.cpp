@@ -149,11 +149,11 @@ TEST(Weapons, BouncerKeepsItsRestitutionAndBurstsOnTheThirdImpact) {
     EXPECT_EQ(first(m, EventKind::Burst)->tick, lastBounce);
     // Against the rigid floor (e = 1) the pair's e is the bouncer's 0.9 (e_A e_B), and
     // without drag each impact speed is e times the one before.
-    EXPECT_NEAR(speeds[1] / speeds[0], 0.9, 1e-3);
-    EXPECT_NEAR(speeds[2] / speeds[1], 0.9, 1e-3);
+    EXPECT_NEAR(speeds[1] / speeds[0], 0.9, 1e-9);
+    EXPECT_NEAR(speeds[2] / speeds[1], 0.9, 1e-9);
     // The first impact: a fall from 18.5 m minus the radius, v = sqrt(2 g h).
     const double h = 20.0 - 1.5 - 0.045;
-    EXPECT_NEAR(speeds[0], std::sqrt(2.0 * kG * h), 0.05);
+    EXPECT_NEAR(speeds[0], std::sqrt(2.0 * kG * h), 1e-9);
 }
 
 TEST(Weapons, GrenadeBurstsOnItsFuseToTheTickAndBouncesMeanwhile) {
