@@ -29,7 +29,7 @@ struct Look {
 const Look kLooks[] = {
     {"cluster", Color::hex(0x8f4fd0), Mark::Dots}, {"bouncer", Color::hex(0xe0483a), Mark::Ring},
     {"roller", Color::hex(0x4a6a8a), Mark::Band},  {"grenade", Color::hex(0x4f6b2f), Mark::Fuse},
-    {"mortar", Color::hex(0x22262c), Mark::Fins},  {"airburst", Color::hex(0xe8c23a), Mark::Skirt},
+    {"mortar", Color::hex(0x8c2f39), Mark::Fins},  {"airburst", Color::hex(0xe8c23a), Mark::Skirt},
     {"digger", Color::hex(0x9a6a3a), Mark::Tip},   {"sticky", Color::hex(0x3fbf6a), Mark::Glue},
 };
 
