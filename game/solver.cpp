@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace game {
 
@@ -39,6 +40,9 @@ struct Outcome {
     double miss = INFINITY; ///< the last shot's closest miss (m), 0 on a hit
     std::uint64_t endTick = 0;
     bool fired = false; ///< the last shot was accepted
+    int damage = 0;     ///< duel: hit points the last shooter's enemies have lost
+    /// What a shot is worth: points, and in a duel 100 for each hit point taken.
+    int points() const { return score + 100 * damage; }
 };
 
 bool hasStructures(const Level& l) {
@@ -84,11 +88,13 @@ Outcome play(const Level& level, const std::vector<Command>& commands, long& eva
     Match m(level);
     Outcome out;
     std::size_t next = 0;
+    int shooter = 0;
     const bool settle = hasStructures(level);
     std::uint64_t quietSince = 0;
     while (m.tick() < kMaxGameTicks) {
         while (next < commands.size() && commands[next].tick <= m.tick()) {
             const Command& c = commands[next++];
+            if (c.kind == CommandKind::Fire) shooter = m.currentPlayer();
             const std::string why = m.apply(c);
             if (c.kind == CommandKind::Fire) out.fired = why.empty();
         }
@@ -105,6 +111,10 @@ Outcome play(const Level& level, const std::vector<Command>& commands, long& eva
         m.step();
     }
     out.score = m.score();
+    if (level.mode == Mode::Duel)
+        for (std::size_t i = 0; i < m.cannons().size(); ++i)
+            if (static_cast<int>(i) != shooter)
+                out.damage += kCannonHitPoints - m.cannons()[i].hitPoints;
     out.over = m.over();
     out.stars = m.stars();
     out.endTick = m.tick();
@@ -138,38 +148,12 @@ class Search {
         if (!r.practice) return r;
         Outcome state = play(level_, commands_, evaluations_);
         for (int shot = 0; shot < level_.shots && !state.over; ++shot) {
-            const std::uint64_t at = state.endTick;
-            Shot best;
-            Worth bestWorth;
-            Outcome bestOutcome;
-            // A shot that ends the game with three stars cannot be bettered by more search.
-            auto consider = [&](const Shot& s) {
-                if (bestOutcome.over && bestOutcome.stars == 3) return;
-                if (evaluations_ >= kMaxEvaluations) return; // a bound on any level's search
-                std::vector<Command> trial = commands_;
-                for (const Command& c : shotCommands(s, at))
-                    trial.push_back(c);
-                const Outcome o = play(level_, trial, evaluations_);
-                if (!o.fired) return;
-                const Worth w{o.score - state.score, o.over, o.miss};
-                if (bestWorth < w) {
-                    bestWorth = w;
-                    best = s;
-                    bestOutcome = o;
-                }
-            };
-            for (const Shot& s : seeds(at))
-                consider(s);
-            if (bestWorth.gain <= 0)
-                for (const Shot& s : grid(at))
-                    consider(s);
-            if (bestWorth.gain < 0) break; // nothing can be fired
-            // A shot that scores is polished for points; a miss gets a short look around.
-            refine(best, bestWorth, bestOutcome, consider, bestWorth.gain > 0 ? 6 : 2);
-            if (bestWorth.gain <= 0 && !bestWorth.over) break; // no shot scores: stop here
-            for (const Command& c : shotCommands(best, at))
+            Outcome next;
+            const auto best = searchShot(state, state.endTick, next);
+            if (!best) break; // no shot scores: stop here
+            for (const Command& c : shotCommands(*best, state.endTick))
                 commands_.push_back(c);
-            state = bestOutcome;
+            state = next;
             ++r.shots;
         }
         const Outcome final = play(level_, commands_, evaluations_);
@@ -182,6 +166,46 @@ class Search {
         r.evaluations = evaluations_;
         return r;
     }
+
+    /// The best shot fired at tick `at` after the commands so far (whose game stands at
+    /// `state`), and the game it makes; nullopt when none gains anything.
+    std::optional<Shot> searchShot(const Outcome& state, std::uint64_t at, Outcome& result) {
+        const bool duel = level_.mode == Mode::Duel;
+        Shot best;
+        Worth bestWorth;
+        Outcome bestOutcome;
+        // A shot that ends the game with three stars cannot be bettered by more search;
+        // in a duel the first hit is taken.
+        auto consider = [&](const Shot& s) {
+            if (bestOutcome.over && bestOutcome.stars == 3) return;
+            if (duel && bestWorth.gain > 0) return;
+            if (evaluations_ >= kMaxEvaluations) return; // a bound on any level's search
+            std::vector<Command> trial = commands_;
+            for (const Command& c : shotCommands(s, at))
+                trial.push_back(c);
+            const Outcome o = play(level_, trial, evaluations_);
+            if (!o.fired) return;
+            const Worth w{o.points() - state.points(), o.over, o.miss};
+            if (bestWorth < w) {
+                bestWorth = w;
+                best = s;
+                bestOutcome = o;
+            }
+        };
+        for (const Shot& s : seeds(at))
+            consider(s);
+        if (bestWorth.gain <= 0)
+            for (const Shot& s : grid(at))
+                consider(s);
+        if (bestWorth.gain < 0) return std::nullopt; // nothing can be fired
+        // A shot that scores is polished for points; a miss gets a short look around.
+        refine(best, bestWorth, bestOutcome, consider, bestWorth.gain > 0 ? 6 : 2);
+        if (bestWorth.gain <= 0 && !bestWorth.over && !duel) return std::nullopt;
+        result = bestOutcome;
+        return best;
+    }
+
+    std::vector<Command> commands_;
 
   private:
     /// The match as it stands before the next shot (re-played from the level).
@@ -210,6 +234,10 @@ class Search {
             if (b.def.target && !b.toppled) out.push_back(m.rigid().state(b.body).position);
         for (const auto& b : m.blobs())
             if (b.def.target && !b.toppled) out.push_back(m.world().particles.position(b.center));
+        if (m.level().mode == Mode::Duel)
+            for (std::size_t i = 0; i < m.cannons().size(); ++i)
+                if (static_cast<int>(i) != m.currentPlayer() && m.cannons()[i].hitPoints > 0)
+                    out.push_back(m.cannons()[i].def.position);
         const Vec2 from = m.cannon().def.position;
         std::stable_sort(out.begin(), out.end(),
                          [&](Vec2 a, Vec2 b) { return length(a - from) < length(b - from); });
@@ -326,7 +354,6 @@ class Search {
     }
 
     const Level& level_;
-    std::vector<Command> commands_;
     long evaluations_ = 0;
 };
 
@@ -334,6 +361,18 @@ class Search {
 
 SolveResult solveLevel(const Level& level) {
     return Search(level).run();
+}
+
+std::vector<Command> solverTurn(const Level& level, const std::vector<Command>& history,
+                                std::uint64_t tick) {
+    Search search(level);
+    search.commands_ = history;
+    long evaluations = 0;
+    const Outcome state = play(level, history, evaluations);
+    Outcome next;
+    const auto best = search.searchShot(state, tick, next);
+    if (!best) return {};
+    return shotCommands(*best, tick);
 }
 
 Replay replayOf(const Level& level, const SolveResult& result) {

@@ -30,6 +30,14 @@ struct SolveResult {
 
 SolveResult solveLevel(const Level& level);
 
+/// The solver as a player: the shot (select, aim, power, fire at `tick`) for the cannon
+/// whose turn it is after `history` (the game's commands so far, all before `tick`),
+/// the one that gains most: points, and in a duel 100 for each hit point it takes from
+/// the other cannons (it sees the turn's wind, as the simulation does). Empty when
+/// nothing can be fired.
+std::vector<Command> solverTurn(const Level& level, const std::vector<Command>& history,
+                                std::uint64_t tick);
+
 /// The solved game as a replay (checkpoints every 120 ticks, final hash).
 Replay replayOf(const Level& level, const SolveResult& result);
 

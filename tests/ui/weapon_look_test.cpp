@@ -23,14 +23,15 @@ namespace {
 
 using phys::Vec2;
 
-const char* kNames[] = {"cannonball", "cluster", "bouncer", "roller", "grenade",
-                        "mortar",     "airburst", "digger", "sticky"};
+const char* kNames[] = {"cannonball", "cluster",  "bouncer", "roller", "grenade",
+                        "mortar",     "airburst", "digger",  "sticky"};
 
 game::Level arena(const std::string& weapon) {
     return game::parseLevel("arena.json", R"({"format": 1, "name": "arena",
       "world": {"min": [0, -10], "max": [100, 60]}, "physics": {"drag": false},
       "terrain": {"points": [[0, 0], [100, 0]]},
-      "cannons": [{"position": [10, 2], "projectiles": [")" + weapon + R"("]}],
+      "cannons": [{"position": [10, 2], "projectiles": [")" +
+                                              weapon + R"("]}],
       "targets": [{"position": [95, 50], "radius": 1}]})");
 }
 
@@ -53,7 +54,8 @@ TEST(WeaponLook, EveryWeaponHasACentreColourOfItsOwn) {
         ASSERT_EQ(m.apply(c), "");
         c.kind = game::CommandKind::Fire;
         ASSERT_EQ(m.apply(c), "");
-        for (int i = 0; i < 40; ++i) m.step(); // rising, 1/3 s in: before any apex or contact
+        for (int i = 0; i < 40; ++i)
+            m.step(); // rising, 1/3 s in: before any apex or contact
         ASSERT_TRUE(m.shell()) << name;
         ui::MatchView view;
         ui::MatchViewOptions o;
@@ -75,7 +77,8 @@ TEST(WeaponLook, EveryWeaponHasACentreColourOfItsOwn) {
     for (std::size_t i = 0; i < centres.size(); ++i)
         for (std::size_t j = i + 1; j < centres.size(); ++j) {
             int d = 0;
-            for (int k = 0; k < 3; ++k) d = std::max(d, std::abs(centres[i][k] - centres[j][k]));
+            for (int k = 0; k < 3; ++k)
+                d = std::max(d, std::abs(centres[i][k] - centres[j][k]));
             EXPECT_GT(d, 24) << kNames[i] << " and " << kNames[j] << " look alike at their centre";
         }
 }
