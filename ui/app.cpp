@@ -8,6 +8,7 @@
 
 #include <string_view>
 
+#include <algorithm>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -32,9 +33,12 @@ void printOverview(std::ostream& out) {
     out << "artillery: a 2D physics playground and artillery game\n\n"
            "usage: artillery VERB [options]    (artillery VERB --help for each verb)\n\n"
            "verbs:\n";
+    // The summaries line up two spaces after the longest verb name (12 columns at least).
+    std::size_t width = 12;
+    for (const auto& v : allVerbs()) width = std::max(width, std::string(v.name).size() + 2);
     for (const auto& v : allVerbs()) {
         std::string name = v.name;
-        name.resize(12, ' ');
+        name.resize(width, ' ');
         out << "  " << name << v.summary << "\n";
     }
     out << "\nEvery verb takes --json for machine-readable output. Exit codes: 0 ok,\n"
