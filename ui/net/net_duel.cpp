@@ -105,14 +105,18 @@ void NetDuel::finish(NetResult r, std::string message) {
     flushOutboxes();
     save();
     if (link_) {
-        if (player_) link_->close(player_);
-        if (server_) link_->close(server_);
+        // disconnect_later sends what is queued first; a spectator far behind (a busy
+        // machine) may still be receiving the stream, so wait for every peer's
+        // disconnection, at most kGoodbyeSeconds, before the socket closes.
+        std::size_t open = 0;
+        for (PeerId p : {player_, server_})
+            if (p) link_->close(p), ++open;
         for (PeerId s : spectators_)
-            link_->close(s);
-        // Let the goodbyes leave before the socket closes.
-        for (int i = 0; i < 20; ++i) {
+            link_->close(s), ++open;
+        const auto closing = Clock::now();
+        while (open > 0 && since(closing) < kGoodbyeSeconds) {
             const LinkEvent e = link_->poll(10);
-            if (e.kind == LinkEvent::Kind::None && i > 5) break;
+            if (e.kind == LinkEvent::Kind::Disconnected) --open;
         }
     }
 }
@@ -440,7 +444,8 @@ bool NetDuel::pump(std::uint32_t waitMs, std::uint64_t maxTicks) {
         onEvent(e);
     if (result_ != NetResult::Running) return false;
     const bool connected = o_.host ? player_ != nullptr : (server_ != nullptr && welcomed_);
-    if (lockstep_ && connected && !paused_) stepMatch(maxTicks);
+    // After the peer's goodbye the stream is complete: play it out, connected or not.
+    if (lockstep_ && (connected || peerBye_) && !paused_) stepMatch(maxTicks);
     if (result_ != NetResult::Running) return false;
     flushOutboxes();
     if (!lockstep_ || (!o_.host && !welcomed_ && !paused_)) {
@@ -475,6 +480,11 @@ bool NetDuel::pump(std::uint32_t waitMs, std::uint64_t maxTicks) {
             overAt_ = Clock::now();
             const Message bye = reasonMessage(MessageType::Bye, "match over");
             if (o_.host && player_) link_->send(player_, bye);
+            // Spectators too: behind the stream on a busy machine, they learn that it is
+            // complete and play the rest of it after the host has gone.
+            if (o_.host)
+                for (PeerId s : spectators_)
+                    link_->send(s, bye);
             if (!o_.host && server_) link_->send(server_, bye);
             link_->flush();
         }
