@@ -54,6 +54,10 @@ const std::vector<std::string>& assistKinds();
 
 /// Largest tick a script may name (a day at 1000 Hz); keeps absurd files bounded.
 inline constexpr std::uint64_t kMaxCommandTick = 86'400'000;
+/// Upper bound on the length of a run and of a replay (a day of simulated time at
+/// 120 Hz would be absurd for a match; an hour is plenty). `run` stops there and
+/// `replay verify` refuses a replay that claims more.
+inline constexpr std::uint64_t kMaxRunTicks = 120ull * 3600;
 inline constexpr std::size_t kMaxCommands = 1'000'000;
 
 class Node;

@@ -44,9 +44,6 @@ struct HeadlessSummary {
     Replay recording;
 };
 
-/// Upper bound on the length of a run (a day of simulated time at 120 Hz would be
-/// absurd for a match; an hour is plenty).
-inline constexpr std::uint64_t kMaxRunTicks = 120ull * 3600;
 
 HeadlessSummary runHeadless(const Level& level, const HeadlessOptions& options);
 

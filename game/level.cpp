@@ -1,6 +1,10 @@
 #include "game/level.h"
 
 #include "game/files/json_reader.h"
+#include "game/material_names.h"
+#include "game/settings.h"
+#include "game/shape_rules.h"
+#include "game/terrain.h"
 #include "game/weapons.h"
 #include "physics/forces.h"
 
@@ -30,6 +34,28 @@ constexpr std::size_t kMaxTargets = 200;
 constexpr std::size_t kMaxBlocks = 2000;
 constexpr std::size_t kMaxRopes = 100;
 constexpr std::size_t kMaxBlobs = 100;
+constexpr std::size_t kMaxObstaclePoints = 20000; // all obstacles together
+constexpr double kMinTerrainStep = 1e-3;          // m between terrain points
+constexpr double kBlockOverlapSlack = 0.02;       // m two blocks may share
+
+/// The surface materials the match knows: its table holds the built-in materials and
+/// one per projectile preset (Match's constructor builds the same).
+const phys::MaterialTable& surfaceTable() {
+    static const phys::MaterialTable table = [] {
+        phys::MaterialTable t;
+        for (const auto& p : phys::projectilePresets()) projectileMaterial(t, p);
+        return t;
+    }();
+    return table;
+}
+
+std::string surfaceMaterial(const Node& n) {
+    const std::string name = n.string(64);
+    if (!surfaceMaterialFromName(surfaceTable(), name))
+        n.fail("expected a surface material (one of " + surfaceMaterialNames(surfaceTable()) +
+               "), got " + nlohmann::json(name).dump());
+    return name;
+}
 
 std::vector<Vec2> points(const Node& n, std::size_t minCount, std::size_t maxCount) {
     std::vector<Vec2> out;
@@ -47,6 +73,8 @@ double signedArea2(const std::vector<Vec2>& poly) {
 
 void requireConvex(const Node& n, std::vector<Vec2>& poly) {
     if (signedArea2(poly) < 0.0) std::reverse(poly.begin(), poly.end());
+    if (const std::string why = polygonProblem(poly); !why.empty())
+        n.fail("expected a simple convex polygon, but " + why);
     if (!(signedArea2(poly) > 1e-12)) n.fail("expected a polygon with non-zero area");
     for (std::size_t i = 0; i < poly.size(); ++i) {
         const Vec2 a = poly[i], b = poly[(i + 1) % poly.size()], c = poly[(i + 2) % poly.size()];
@@ -87,14 +115,17 @@ LevelPhysics readPhysics(const Node& n) {
 Obstacle readObstacle(const Node& n) {
     Obstacle o;
     const std::string shape = n.at("shape").choice({"polyline", "polygon", "circle"});
-    o.material = n.string("material", o.material);
+    if (auto m = n.find("material")) o.material = surfaceMaterial(*m);
     if (shape == "circle") {
         o.shape = Obstacle::Shape::Circle;
         o.center = n.at("center").vec2(kMaxCoordinate);
         o.radius = n.number("radius", 1e-3, 1e4, "m");
     } else if (shape == "polyline") {
         o.shape = Obstacle::Shape::Polyline;
-        o.points = points(n.at("points"), 2, 1000);
+        const Node pts = n.at("points");
+        o.points = points(pts, 2, 1000);
+        if (const std::string why = polylineProblem(o.points); !why.empty())
+            pts.fail("expected a polyline that can be simulated, but " + why);
     } else {
         o.shape = Obstacle::Shape::Polygon;
         const Node pts = n.at("points");
@@ -116,6 +147,11 @@ Cannon readCannon(const Node& n) {
     if (auto list = n.find("projectiles")) {
         for (const Node& p : list->elements(16, 1)) {
             const auto [name, count] = readProjectileEntry(p);
+            // The same lookup the match fires with, so every weapon it knows passes; an
+            // unknown or empty name used to pass here and crash on the first shot.
+            if (!knownProjectile(name))
+                p.fail("expected a weapon (" + weaponNameList() + ") or a projectile preset (" +
+                       phys::projectileNameList() + "), got " + nlohmann::json(name).dump());
             c.projectiles.push_back(name);
             c.projectileCounts.push_back(count);
         }
@@ -146,8 +182,14 @@ Block readBlock(const Node& n) {
     const Node size = n.at("size");
     b.size = size.vec2(1000.0);
     if (!(b.size.x > 0.0 && b.size.y > 0.0)) size.fail("expected a width and height > 0 m");
+    if (const std::string why = blockSizeProblem(b.size); !why.empty()) size.fail(why);
     b.angleDeg = n.number("angle_deg", b.angleDeg, -360.0, 360.0, "degrees");
-    b.material = n.string("material", b.material);
+    if (auto m = n.find("material")) {
+        b.material = m->string(64);
+        if (!blockMaterialFromName(b.material))
+            m->fail("expected a block material (one of " + blockMaterialNames() + "), got " +
+                    nlohmann::json(b.material).dump());
+    }
     b.density = n.number("density", b.density, 1.0, 30000.0, "kg/m^3");
     b.target = n.boolean("target", b.target);
     n.finish();
@@ -241,27 +283,74 @@ Level parseLevel(const std::string& file, const std::string& text) {
         if (!(l.terrain.points[i].x > l.terrain.points[i - 1].x))
             tp.elements(kMaxTerrainPoints)[i].fail(
                 "expected x to increase from point to point (a heightfield), but it does not");
+        else if (l.terrain.points[i].x - l.terrain.points[i - 1].x < kMinTerrainStep)
+            tp.elements(kMaxTerrainPoints)[i].fail(
+                "expected x to increase by at least 1 mm from the previous point");
     l.terrain.destructible = terrain.boolean("destructible", l.terrain.destructible);
-    l.terrain.material = terrain.string("material", l.terrain.material);
+    if (auto m = terrain.find("material")) l.terrain.material = surfaceMaterial(*m);
     terrain.finish();
 
-    if (auto list = root.find("obstacles"))
-        for (const Node& n : list->elements(kMaxObstacles)) l.obstacles.push_back(readObstacle(n));
+    if (auto list = root.find("obstacles")) {
+        std::size_t total = 0;
+        for (const Node& n : list->elements(kMaxObstacles)) {
+            l.obstacles.push_back(readObstacle(n));
+            total += l.obstacles.back().points.size();
+            if (total > kMaxObstaclePoints)
+                n.fail("expected at most " + std::to_string(kMaxObstaclePoints) +
+                       " points in all obstacles together");
+        }
+    }
     const Node cannons = root.at("cannons");
     const auto cannonNodes = cannons.elements(kMaxCannons, 1);
-    for (const Node& n : cannonNodes) {
-        l.cannons.push_back(readCannon(n));
-        if (!inside(l, l.cannons.back().position))
-            n.at("position").fail("expected a point inside the world bounds");
-    }
+    for (const Node& n : cannonNodes) l.cannons.push_back(readCannon(n));
+    // Placement: everything that moves or is hit starts inside the world and above the
+    // ground (a cannon below it fires into rock; a target below it cannot be reached).
+    const Heightfield ground(l.terrain.points);
+    const auto placed = [&](const Node& n, Vec2 p, const char* what) {
+        if (!inside(l, p)) n.fail("expected a point inside the world bounds");
+        if (p.y < ground.heightAt(p.x) - 1e-6)
+            n.fail(std::string("expected ") + what + " above the ground, but the ground there is at y = " +
+                   std::to_string(ground.heightAt(p.x)).substr(0, 8) + " m");
+    };
+    for (std::size_t i = 0; i < l.cannons.size(); ++i)
+        placed(cannonNodes[i].at("position"), l.cannons[i].position, "the cannon");
     if (auto list = root.find("targets"))
-        for (const Node& n : list->elements(kMaxTargets)) l.targets.push_back(readTarget(n));
-    if (auto list = root.find("blocks"))
-        for (const Node& n : list->elements(kMaxBlocks)) l.blocks.push_back(readBlock(n));
+        for (const Node& n : list->elements(kMaxTargets)) {
+            l.targets.push_back(readTarget(n));
+            placed(n.at("position"), l.targets.back().position, "the target's centre");
+            if (auto path = n.find("path")) {
+                const auto nodes = path->elements(64);
+                for (std::size_t i = 0; i < nodes.size(); ++i)
+                    placed(nodes[i], l.targets.back().path[i], "the target's path");
+            }
+        }
+    if (auto list = root.find("blocks")) {
+        const auto nodes = list->elements(kMaxBlocks);
+        std::vector<Box> boxes;
+        for (const Node& n : nodes) {
+            l.blocks.push_back(readBlock(n));
+            const Block& b = l.blocks.back();
+            placed(n.at("position"), b.position, "the block's centre");
+            boxes.push_back({b.position, b.size, b.angleDeg});
+        }
+        // Overlapping blocks are pushed apart by Box2D at up to its maximum correction
+        // every step; many at one point make every step a dense n^2 contact solve.
+        if (const auto [i, j] = firstOverlap(boxes, kBlockOverlapSlack); i >= 0)
+            nodes[static_cast<std::size_t>(j)].fail(
+                "expected blocks not to overlap, but this one overlaps block " +
+                std::to_string(i) + " by more than 2 cm");
+    }
     if (auto list = root.find("ropes"))
-        for (const Node& n : list->elements(kMaxRopes)) l.ropes.push_back(readRope(n, l.blocks));
+        for (const Node& n : list->elements(kMaxRopes)) {
+            l.ropes.push_back(readRope(n, l.blocks));
+            placed(n.at("from"), l.ropes.back().from, "the rope's end");
+            placed(n.at("to"), l.ropes.back().to, "the rope's end");
+        }
     if (auto list = root.find("blobs"))
-        for (const Node& n : list->elements(kMaxBlobs)) l.blobs.push_back(readBlob(n));
+        for (const Node& n : list->elements(kMaxBlobs)) {
+            l.blobs.push_back(readBlob(n));
+            placed(n.at("center"), l.blobs.back().center, "the blob's centre");
+        }
     l.shots = static_cast<int>(root.integer("shots", l.shots, 1, 100));
     l.seed = static_cast<std::uint64_t>(root.integer("seed", 1, 0, 0x7fffffffffffffffll));
 

@@ -1,5 +1,6 @@
 #include "game/match.h"
 
+#include "game/material_names.h"
 #include "game/weapons.h"
 #include "physics/ballistics.h"
 #include "physics/projectiles.h"
@@ -39,20 +40,11 @@ constexpr int kTargetBlockPoints = 100; // knocking a target block off its place
 constexpr int kTargetBlobPoints = 150;
 constexpr int kShotBonus = 50;          // per shot left when every target is down
 
-/// Rigid materials for blocks by name (friction, restitution); density comes from the level.
+/// A block's rigid material by name (the level check refused unknown names); density
+/// comes from the level.
 RigidMaterial blockMaterial(const Block& b) {
-    RigidMaterial m;
+    RigidMaterial m = blockMaterialFromName(b.material).value_or(RigidMaterial{});
     m.density = b.density;
-    if (b.material == "stone") {
-        m.friction = 0.7;
-        m.restitution = 0.1;
-    } else if (b.material == "steel") {
-        m.friction = 0.4;
-        m.restitution = 0.5;
-    } else { // wood
-        m.friction = 0.6;
-        m.restitution = 0.3;
-    }
     return m;
 }
 
@@ -98,10 +90,10 @@ double Match::drawWind() {
 
 void Match::rebuildStaticShapes() {
     world_.shapes.clear();
-    const MaterialId ground = world_.materials.find(level_.terrain.material).value_or(material::kEarth);
+    const MaterialId ground = surfaceMaterialFromName(world_.materials, level_.terrain.material).value_or(material::kEarth);
     world_.shapes.addPolyline(terrain_.points(), ground);
     for (const Obstacle& o : level_.obstacles) {
-        const MaterialId m = world_.materials.find(o.material).value_or(material::kFloor);
+        const MaterialId m = surfaceMaterialFromName(world_.materials, o.material).value_or(material::kFloor);
         switch (o.shape) {
         case Obstacle::Shape::Polyline: world_.shapes.addPolyline(o.points, m); break;
         case Obstacle::Shape::Polygon: world_.shapes.addPolygon(o.points, m); break;

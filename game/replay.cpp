@@ -73,7 +73,9 @@ Replay parseReplay(const std::string& file, const std::string& text) {
                                           : "normal";
     r.cpuSeed = static_cast<std::uint64_t>(root.integer("cpu_seed", 1, 0, 0x7fffffffffffffffll));
     r.checkpointEvery = static_cast<std::uint64_t>(root.integer("checkpoint_every", 120, 1, 1000000));
-    r.ticks = static_cast<std::uint64_t>(root.at("ticks").integer(0, kMaxCommandTick));
+    // The same cap as `run`: verifying a replay never simulates more than a run may.
+    r.ticks = static_cast<std::uint64_t>(
+        root.at("ticks").integer(0, static_cast<long long>(kMaxRunTicks)));
     // Commands use the commands-file reader, at the right path.
     const Node commands = root.at("commands");
     r.commands = readCommands(commands);

@@ -42,7 +42,7 @@ TEST(Levels, ParsesEveryField) {
       "obstacles": [{"shape": "polygon", "points": [[0, 0], [0, 1], [1, 1], [1, 0]]},
                     {"shape": "circle", "center": [5, 5], "radius": 2}],
       "cannons": [{"position": [1, 1], "player": "1", "projectiles": ["golf-ball"]},
-                  {"position": [90, 1], "player": "cpu", "angle_deg": 135}],
+                  {"position": [90, 2], "player": "cpu", "angle_deg": 135}],
       "targets": [{"position": [50, 3], "path": [[50, 3], [60, 3]], "speed_mps": 2}],
       "blocks": [{"position": [40, 1], "size": [2, 1], "target": true}],
       "ropes": [{"from": [10, 10], "to": [20, 10], "segments": 5, "sag": 0.1}],
