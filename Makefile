@@ -93,13 +93,14 @@ fuzz: deps
 	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARTILLERY_FUZZ=ON
 	cmake --build $(FUZZ_BUILD) -j $(JOBS)
 	@failed=""; \
-	for t in level replay commands settings message; do \
+	for t in level replay commands settings message sim_level sim_commands; do \
 	  case $$t in \
 	    level) seeds="levels tests/data/bad_levels" ;; \
 	    replay) seeds="tests/replays tests/data/bad_replays" ;; \
 	    commands) seeds="tests/data/bad_commands" ;; \
 	    settings) seeds="tests/data/bad_settings" ;; \
 	    message) seeds="tests/data/net_messages" ;; \
+	    sim_*) seeds="" ;; \
 	  esac; \
 	  corpus=$(FUZZ_BUILD)/corpus/$$t; artifacts=$(FUZZ_BUILD)/artifacts/$$t; \
 	  log=$(FUZZ_BUILD)/fuzz_$$t.log; mkdir -p $$corpus $$artifacts; \

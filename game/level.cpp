@@ -35,6 +35,10 @@ constexpr std::size_t kMaxBlocks = 2000;
 constexpr std::size_t kMaxRopes = 100;
 constexpr std::size_t kMaxBlobs = 100;
 constexpr std::size_t kMaxObstaclePoints = 20000; // all obstacles together
+// Rope segments in all ropes together: the rods of a rope are solved iteratively each
+// tick and cost ~4.6 ms per 1000 segments per tick (docs/robustness.md); 1000 keeps
+// 600 ticks of the fullest level within a few seconds.
+constexpr long long kMaxRopeSegments = 1000;
 constexpr double kMinTerrainStep = 1e-3;          // m between terrain points
 constexpr double kBlockOverlapSlack = 0.02;       // m two blocks may share
 
@@ -340,12 +344,19 @@ Level parseLevel(const std::string& file, const std::string& text) {
                 "expected blocks not to overlap, but this one overlaps block " +
                 std::to_string(i) + " by more than 2 cm");
     }
-    if (auto list = root.find("ropes"))
+    if (auto list = root.find("ropes")) {
+        long long segments = 0;
         for (const Node& n : list->elements(kMaxRopes)) {
             l.ropes.push_back(readRope(n, l.blocks));
+            segments += l.ropes.back().segments;
+            if (segments > kMaxRopeSegments)
+                n.at("segments").fail("expected at most " + std::to_string(kMaxRopeSegments) +
+                                      " segments in all ropes together (each costs simulation "
+                                      "time every tick), got " + std::to_string(segments));
             placed(n.at("from"), l.ropes.back().from, "the rope's end");
             placed(n.at("to"), l.ropes.back().to, "the rope's end");
         }
+    }
     if (auto list = root.find("blobs"))
         for (const Node& n : list->elements(kMaxBlobs)) {
             l.blobs.push_back(readBlob(n));
