@@ -49,11 +49,26 @@ inline void addSpringForce(const S& s, Vec2 anchor, const double* px, const doub
     const bool toAnchor = s.b == kNoParticle;
     const double bx = toAnchor ? anchor.x : px[s.b], by = toAnchor ? anchor.y : py[s.b];
     const double dx = px[s.a] - bx, dy = py[s.a] - by;
+    const double rvx = vx[s.a] - (toAnchor ? 0.0 : vx[s.b]);
+    const double rvy = vy[s.a] - (toAnchor ? 0.0 : vy[s.b]);
+    if (s.restLength == 0.0) {
+        // Zero rest length: the vector form F_a = -k d - c (v_a - v_b), d = p_a - p_b,
+        // defined everywhere, also where the spring passes through zero length and n is
+        // not. (k L n = k d; the damping acts on the whole relative velocity, which is
+        // the textbook m x'' = -k x - c x' in each coordinate.)
+        const double fxa = -s.stiffness * dx - s.damping * rvx;
+        const double fya = -s.stiffness * dy - s.damping * rvy;
+        fx[s.a] += fxa;
+        fy[s.a] += fya;
+        if (!toAnchor) {
+            fx[s.b] -= fxa;
+            fy[s.b] -= fya;
+        }
+        return;
+    }
     const double len = std::sqrt(dx * dx + dy * dy);
     if (len <= 0.0) return; // direction undefined; no force
     const double nx = dx / len, ny = dy / len;
-    const double rvx = vx[s.a] - (toAnchor ? 0.0 : vx[s.b]);
-    const double rvy = vy[s.a] - (toAnchor ? 0.0 : vy[s.b]);
     const double mag = s.stiffness * (len - s.restLength) + s.damping * (rvx * nx + rvy * ny);
     fx[s.a] -= mag * nx;
     fy[s.a] -= mag * ny;
@@ -82,7 +97,8 @@ void Dynamics::springForces(const double* px, const double* py, const double* vx
     alignas(16) double Fx[2], Fy[2];
     for (; k + 1 < m; k += 2) {
         const SpringTerms::Term &s0 = t[k], &s1 = t[k + 1];
-        if (s0.b == kNoParticle || s1.b == kNoParticle) {
+        if (s0.b == kNoParticle || s1.b == kNoParticle || s0.restLength == 0.0 ||
+            s1.restLength == 0.0) {
             one(k);
             one(k + 1);
             continue;
@@ -214,14 +230,26 @@ void Dynamics::forceJacobianProduct(const double* px, const double* py, const do
         const bool toAnchor = sp.b == kNoParticle;
         const double bx = toAnchor ? sp.anchor.x : px[sp.b], by = toAnchor ? sp.anchor.y : py[sp.b];
         const double dx = px[sp.a] - bx, dy = py[sp.a] - by;
-        const double len = std::sqrt(dx * dx + dy * dy);
-        if (len <= 0.0) continue;
-        const double nx = dx / len, ny = dy / len;
         // Relative direction vectors (a minus b).
         const double rwx = wx[sp.a] - (toAnchor ? 0.0 : wx[sp.b]);
         const double rwy = wy[sp.a] - (toAnchor ? 0.0 : wy[sp.b]);
         const double rux = ux[sp.a] - (toAnchor ? 0.0 : ux[sp.b]);
         const double ruy = uy[sp.a] - (toAnchor ? 0.0 : uy[sp.b]);
+        if (sp.restLength == 0.0) {
+            // Vector form: dF_a/dx_a = -k I, dF_a/dv_a = -c I, at every length.
+            const double jx = sp.stiffness * rwx + sp.damping * rux;
+            const double jy = sp.stiffness * rwy + sp.damping * ruy;
+            dfx[sp.a] -= jx;
+            dfy[sp.a] -= jy;
+            if (!toAnchor) {
+                dfx[sp.b] += jx;
+                dfy[sp.b] += jy;
+            }
+            continue;
+        }
+        const double len = std::sqrt(dx * dx + dy * dy);
+        if (len <= 0.0) continue;
+        const double nx = dx / len, ny = dy / len;
         // dF_a/dx_a = -k [n n^T + max(0, 1 - L0/L) (I - n n^T)]; dF_a/dv_a = -c n n^T.
         const double transverse = std::max(0.0, 1.0 - sp.restLength / len);
         const double wn = rwx * nx + rwy * ny;
