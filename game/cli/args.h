@@ -58,7 +58,6 @@ class Args {
     std::set<std::string> missingValue_; ///< options last on the line with no value
     std::set<std::string> flagNames_;
     std::vector<std::string> positionals_;
-    std::string missingValue_; ///< an option last on the line, with no value after it
     mutable std::set<std::string> asked_;
 };
 
