@@ -41,6 +41,7 @@ TEST(FileLimits, DevicesFifosAndDirectoriesAreRefusedBeforeReading) {
     EXPECT_EQ(refusal(fifo.string()),
               fifo.string() + ": $: expected a regular file, got a FIFO (named pipe)");
     std::filesystem::remove(fifo);
+    std::filesystem::remove_all(dir.parent_path());
 }
 
 TEST(FileLimits, AFileAboveTheLimitIsRefusedAndOneAtItIsRead) {
@@ -51,7 +52,7 @@ TEST(FileLimits, AFileAboveTheLimitIsRefusedAndOneAtItIsRead) {
                              "(16 MiB) are read");
     std::filesystem::resize_file(big, game::kMaxFileBytes);
     EXPECT_EQ(game::readFile(big.string()).size(), game::kMaxFileBytes);
-    std::filesystem::remove(big);
+    std::filesystem::remove_all(big.parent_path());
 }
 
 TEST(FileLimits, DepthIsBoundedBeforeParsing) {
