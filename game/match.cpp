@@ -698,11 +698,14 @@ std::vector<Vec2> Match::previewTrajectory(double angleDeg, double speedMps, dou
         w.step();
         const Vec2 p = w.particles.position(id);
         out.push_back(p);
+        // Without downward gravity nothing brings a shell back: past the top of the world,
+        // or past the target, it is gone (else a trial at g = 0 would fly all `seconds`).
+        const bool noFall = !(w.def().forces.gravity.y < 0.0);
         if (!w.contacts().empty() || p.x < level_.worldMin.x || p.x > level_.worldMax.x ||
-            p.y < level_.worldMin.y)
+            p.y < level_.worldMin.y || (noFall && p.y > level_.worldMax.y))
             break;
         const double away = pd.velocity.x >= 0.0 ? p.x - stopPastX : stopPastX - p.x;
-        if (std::isfinite(stopPastX) && away > 0.0 && w.particles.vy[id] < 0.0) break;
+        if (std::isfinite(stopPastX) && away > 0.0 && (w.particles.vy[id] < 0.0 || noFall)) break;
     }
     return out;
 }

@@ -7,7 +7,10 @@ namespace game {
 
 Heightfield::Heightfield(const std::vector<phys::Vec2>& src, double spacing) : spacing_(spacing) {
     const double x0 = src.front().x, x1 = src.back().x;
-    const int n = std::max(1, static_cast<int>(std::ceil((x1 - x0) / spacing)));
+    // At most kMaxSamples segments: every particle step and every trial shot of the
+    // computer indexes them, so a 20 km ground is sampled every 2.4 m, not every 0.5 m.
+    constexpr double kMaxSamples = 8192;
+    const int n = static_cast<int>(std::clamp(std::ceil((x1 - x0) / spacing), 1.0, kMaxSamples));
     points_.reserve(static_cast<std::size_t>(n) + 1);
     std::size_t seg = 0;
     for (int i = 0; i <= n; ++i) {

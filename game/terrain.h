@@ -10,7 +10,8 @@ namespace game {
 
 class Heightfield {
   public:
-    /// Resamples the level's polyline (x strictly increasing) every `spacing` metres.
+    /// Resamples the level's polyline (x strictly increasing) every `spacing` metres, or
+    /// in 8192 equal steps when that is coarser (grounds longer than 4 km).
     explicit Heightfield(const std::vector<phys::Vec2>& points, double spacing = 0.5);
 
     /// Ground height at x (linear between samples; clamped at the ends).

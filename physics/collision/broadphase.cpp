@@ -208,10 +208,12 @@ void StaticShapeIndex::update(const StaticShapes& shapes) {
         all.hi = {std::max(all.hi.x, b.hi.x), std::max(all.hi.y, b.hi.y)};
         extent += std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
     }
-    // Cells about twice the mean shape size, at most ~1M of them over the shapes' bounds.
+    // Cells about twice the mean shape size, at most ~64k of them over the shapes' bounds:
+    // a world is indexed afresh for every trial shot, so a 20 km level must not cost
+    // megabytes per index (a few shapes more per cell cost far less).
     const Vec2 size = all.hi - all.lo;
     cell_ = std::max({2.0 * extent / static_cast<double>(count_), 1e-3,
-                      std::sqrt(std::max(size.x * size.y, 1e-12) / 1e6)});
+                      std::sqrt(std::max(size.x * size.y, 1e-12) / 65536.0)});
     origin_ = all.lo;
     nx_ = static_cast<std::int64_t>(size.x / cell_) + 1;
     ny_ = static_cast<std::int64_t>(size.y / cell_) + 1;
