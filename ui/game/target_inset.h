@@ -21,7 +21,7 @@ class Match;
 namespace ui {
 
 struct TargetInsetDef {
-    double readablePx = 90.0;  ///< what is aimed at reads well from this tall on screen, px
+    double readablePx = 64.0;  ///< what is aimed at reads well from this tall on screen, px
     double widthFraction = 0.3; ///< the close-up's width, fraction of the screen's
     double topPx = 84.0;        ///< below the top panels, px
     double rightPx = 12.0;      ///< from the right edge, px
