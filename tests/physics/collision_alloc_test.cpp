@@ -34,6 +34,17 @@ void operator delete(void* p) noexcept {
 void operator delete(void* p, std::size_t) noexcept {
     std::free(p);
 }
+// The nothrow form too (std::stable_partition's temporary buffer uses it): left to the
+// sanitizer's own operator new, its block would come back through the free() above and
+// AddressSanitizer would report an alloc-dealloc mismatch in any test of this binary.
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+    if (counting.load(std::memory_order_relaxed))
+        allocations.fetch_add(1, std::memory_order_relaxed);
+    return std::malloc(n ? n : 1);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
 #pragma GCC diagnostic pop
 
 using namespace phys;
