@@ -33,7 +33,8 @@ std::string differingParts(const Checkpoint& got, const Checkpoint& want) {
 } // namespace
 
 ReplayPlayer::ReplayPlayer(const Level& level, Replay replay)
-    : replay_(std::move(replay)), session_(level, playbackOptions(replay_)) {
+    : replay_(std::move(replay)), session_(level, playbackOptions(replay_)),
+      restarts_(level, replay_) {
     for (const Command& c : replay_.commands)
         if (c.kind == CommandKind::Fire && c.tick < replay_.ticks) shots_.push_back(c.tick);
 }
@@ -69,7 +70,9 @@ void ReplayPlayer::compareCheckpoint() {
 void ReplayPlayer::seek(std::uint64_t target) {
     target = std::min(target, lastTick());
     if (target < tick()) {
-        session_.rewindTo(target);
+        std::unique_ptr<Match> start = restarts_.take(target);
+        lastSeekResimulated_ = target - (start ? start->tick() : 0);
+        session_.rewindTo(target, std::move(start));
         // The session kept the commands before `target`; the replay's own list says
         // where to go on (refused commands, if any, are not in the session's).
         const auto& commands = replay_.commands;
@@ -85,6 +88,10 @@ void ReplayPlayer::seek(std::uint64_t target) {
     }
     while (tick() < target)
         step();
+}
+
+bool ReplayPlayer::prepareRestartPoints(std::uint64_t tickBudget) {
+    return restarts_.build(tickBudget);
 }
 
 std::optional<std::uint64_t> ReplayPlayer::shotBefore(std::uint64_t t) const {

@@ -3,9 +3,11 @@
 // way and can be taken over: the session then plays on live, its recording holding the
 // commands up to that tick, a new replay branching from there.
 //
-// Seeking back re-simulates from the start (Session::rewindTo): Box2D worlds cannot be
-// copied, so the start is the only restart point, and a deterministic re-run gives the
-// very state the match had (a two-minute duel re-simulates in ~15 ms, bench_replay).
+// Seeking back re-simulates (Session::rewindTo): Box2D worlds cannot be copied, but a
+// deterministic re-run gives the very state the match had. It starts from the nearest
+// restart point at or before the target (game/replay_restarts.h: matches parked every
+// few seconds, built a slice at a time by prepareRestartPoints between frames), or from
+// the start while none is parked there.
 // Playing forward compares every stored checkpoint and the final hash, so a replay that
 // no longer re-simulates (another build, changed physics) is reported where it first
 // differs, not hidden.
@@ -13,6 +15,7 @@
 
 #include "game/level.h"
 #include "game/replay.h"
+#include "game/replay_restarts.h"
 #include "game/session.h"
 
 #include <cstdint>
@@ -40,6 +43,12 @@ class ReplayPlayer {
     /// Goes to `tick`, clamped to [0, lastTick()]: forward by stepping, back by
     /// re-simulation from the start.
     void seek(std::uint64_t tick);
+    /// Builds restart points for seeking back, re-simulating at most `tickBudget` ticks;
+    /// true when all are built. Call it between frames; seeking works without it.
+    bool prepareRestartPoints(std::uint64_t tickBudget);
+    const RestartPoints& restartPoints() const { return restarts_; }
+    /// Ticks the last seek back re-simulated (from its restart point or the start).
+    std::uint64_t lastSeekResimulated() const { return lastSeekResimulated_; }
 
     std::uint64_t tick() const { return session_.match().tick(); }
     /// Length of the recording (ticks).
@@ -73,6 +82,8 @@ class ReplayPlayer {
 
     Replay replay_;
     Session session_;
+    RestartPoints restarts_;
+    std::uint64_t lastSeekResimulated_ = 0;
     std::size_t nextCommand_ = 0;    ///< first replay command not yet submitted
     std::size_t nextCheckpoint_ = 0; ///< first stored checkpoint after the current tick
     std::size_t checkpointsChecked_ = 0;

@@ -1,5 +1,7 @@
 #include "game/session.h"
 
+#include <algorithm>
+
 namespace game {
 
 Session::Session(const Level& level, const SessionOptions& options)
@@ -52,9 +54,10 @@ Replay Session::finishedRecording() const {
 
 void Session::save(const std::string& file) const { saveReplay(file, finishedRecording()); }
 
-void Session::rewindTo(std::uint64_t tick) {
+void Session::rewindTo(std::uint64_t tick) { rewindTo(tick, nullptr); }
+
+void Session::rewindTo(std::uint64_t tick, std::unique_ptr<Match> start) {
     if (tick > match_->tick()) tick = match_->tick();
-    const Level level = match_->level();
     std::vector<Command> keep;
     for (const Command& c : replay_.commands)
         if (c.tick < tick) keep.push_back(c);
@@ -62,8 +65,13 @@ void Session::rewindTo(std::uint64_t tick) {
     // The computer's generator must be where it was: re-create it and replay its turns'
     // draws by re-running from the start with the recorded commands (the computer is not
     // consulted again; its commands are in the recording).
-    match_ = std::make_unique<Match>(level);
-    std::size_t next = 0;
+    if (!start || start->tick() > tick) start = std::make_unique<Match>(match_->level());
+    match_ = std::move(start);
+    // Commands before the start's tick are in it already.
+    std::size_t next = static_cast<std::size_t>(
+        std::lower_bound(keep.begin(), keep.end(), match_->tick(),
+                         [](const Command& c, std::uint64_t t) { return c.tick < t; }) -
+        keep.begin());
     while (match_->tick() < tick) {
         while (next < keep.size() && keep[next].tick <= match_->tick()) match_->apply(keep[next++]);
         match_->step();

@@ -52,6 +52,10 @@ class Session {
     /// be copied, but a deterministic re-run can). Commands after `tick` are dropped, so
     /// play continues from there as a new branch.
     void rewindTo(std::uint64_t tick);
+    /// The same, re-simulating from `start` instead of from the start: a match of this
+    /// session's level at a tick <= `tick` that got there through the same commands (a
+    /// replay's restart point, game/replay_restarts.h).
+    void rewindTo(std::uint64_t tick, std::unique_ptr<Match> start);
     /// Plays on from the current tick under other options: a replay taken over (the
     /// computer plays its cannons again unless `hotseat`; the branch is saved to
     /// `recordFile`). The recording so far is kept, and so is its checkpoint spacing.

@@ -37,7 +37,30 @@ std::vector<ReplayTiming> timeReplays(const std::string& folder, int repeats, st
                     .count());
         }
         std::sort(t.begin(), t.end());
+        // With restart points: build them all (timed), then seek to the tick before each
+        // point, the longest re-simulation from the point before it; each point used is
+        // rebuilt untimed before the next seek.
+        ReplayPlayer withPoints(level, replay);
+        const auto b0 = std::chrono::steady_clock::now();
+        withPoints.prepareRestartPoints(UINT64_MAX);
+        const double buildMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - b0).count();
+        const std::uint64_t spacing = withPoints.restartPoints().spacing();
+        double restartSeekMs = 0;
+        for (std::uint64_t at = spacing; at <= withPoints.lastTick(); at += spacing) {
+            withPoints.seek(withPoints.lastTick());
+            withPoints.prepareRestartPoints(UINT64_MAX);
+            const auto s0 = std::chrono::steady_clock::now();
+            withPoints.seek(std::min(at + spacing, withPoints.lastTick()) - 1);
+            restartSeekMs = std::max(
+                restartSeekMs,
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - s0)
+                    .count());
+        }
         ReplayTiming r;
+        r.restartSeekMs = restartSeekMs;
+        r.buildMs = buildMs;
+        r.restartPoints = withPoints.restartPoints().points();
         r.file = path.filename().string();
         r.ticks = player.lastTick();
         r.worstSeekMs = t[t.size() / 2];

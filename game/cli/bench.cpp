@@ -480,14 +480,19 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
     for (const auto& r : seeks) {
         if (!asJson) {
             std::snprintf(line, sizeof line,
-                          "replay %-28s %5llu ticks: slowest seek (re-simulates from the start) "
-                          "%.4g ms, %.3g ms/tick (target seek <= 100 ms: %s)",
+                          "replay %-28s %5llu ticks: slowest seek from the start %.4g ms "
+                          "(%.3g ms/tick); from %zu restart points %.4g ms (built in %.4g ms); "
+                          "target seek <= 100 ms: %s",
                           r.file.c_str(), static_cast<unsigned long long>(r.ticks), r.worstSeekMs,
-                          r.msPerTick(), verdict(r.worstSeekMs <= 100.0));
+                          r.msPerTick(), r.restartPoints, r.restartSeekMs, r.buildMs,
+                          verdict(r.restartSeekMs <= 100.0));
             out << line << loadNote(r.load) << "\n";
         }
         j["replays"].push_back({{"file", r.file}, {"ticks", r.ticks},
                                 {"worst_seek_ms", r.worstSeekMs}, {"ms_per_tick", r.msPerTick()},
+                                {"restart_points", r.restartPoints},
+                                {"restart_seek_ms", r.restartSeekMs},
+                                {"restart_build_ms", r.buildMs},
                                 {"load", jnum(r.load)}});
         if (r.file.starts_with("06_rope_bridge") && !asJson) {
             std::snprintf(line, sizeof line,

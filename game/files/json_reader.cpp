@@ -132,7 +132,7 @@ struct DuplicateKeys {
         if (event == E::object_start) open.emplace_back();
         else if (event == E::object_end) open.pop_back();
         else if (event == E::key && !open.empty() && !open.back().insert(parsed.get<std::string>()).second)
-            throw duplicate(parsed.get<std::string>());
+            throw duplicate{parsed.get<std::string>()};
         return true;
     }
     struct duplicate {

@@ -1,0 +1,89 @@
+// Restart points: a seek back that starts from a parked match gives the very state that
+// straight play had (every stored checkpoint's hash, and the final hash), and it
+// re-simulates at most one spacing of ticks.
+#include "game/replay_player.h"
+#include "game/replay_restarts.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace game;
+
+namespace {
+
+struct Golden {
+    Replay replay;
+    Level level;
+};
+
+Golden golden(const std::string& name) {
+    const std::string file = std::string(ARTILLERY_SOURCE_DIR) + "/tests/replays/" + name;
+    Replay r = loadReplay(file);
+    Level l = levelForReplay(file, r);
+    return {std::move(r), std::move(l)};
+}
+
+} // namespace
+
+TEST(RestartPoints, ParkMatchesEverySpacingUpToTheEnd) {
+    const Golden g = golden("06_rope_bridge.replay.json");
+    RestartPoints points(g.level, g.replay, {600, 32});
+    EXPECT_EQ(points.spacing(), 600u);
+    EXPECT_EQ(points.points(), (g.replay.ticks - 1) / 600);
+    EXPECT_EQ(points.parked(), 0u);
+    EXPECT_FALSE(points.build(599)); // the first point is 600 ticks away
+    EXPECT_EQ(points.parked(), 0u);
+    EXPECT_FALSE(points.build(1)); // it is parked; the next one starts from the start
+    EXPECT_EQ(points.parked(), 1u);
+    EXPECT_TRUE(points.build(UINT64_MAX));
+    EXPECT_EQ(points.parked(), points.points());
+    // A long replay spaces its points wider rather than keeping more than maxPoints.
+    RestartPoints few(g.level, g.replay, {10, 4});
+    EXPECT_EQ(few.spacing(), (g.replay.ticks + 3) / 4);
+    EXPECT_LE(few.points(), 4u);
+}
+
+TEST(RestartPoints, ASeekBackFromAPointGivesStraightPlaysHashes) {
+    for (const char* name : {"06_rope_bridge.replay.json", "05_castle.replay.json",
+                             "11_sandbox.replay.json", "10_duel.replay.json"}) {
+        SCOPED_TRACE(name);
+        const Golden g = golden(name);
+        ReplayPlayer player(g.level, g.replay);
+        EXPECT_TRUE(player.prepareRestartPoints(UINT64_MAX));
+        const std::uint64_t spacing = player.restartPoints().spacing();
+        ASSERT_GT(player.restartPoints().points(), 0u);
+        player.seek(player.lastTick());
+        ASSERT_FALSE(player.divergence().has_value());
+        // Back to every stored checkpoint, latest first: each is reached from the parked
+        // match at or before it (tick % spacing re-simulated), and its hash is the
+        // recorded one.
+        for (auto it = g.replay.checkpoints.rbegin(); it != g.replay.checkpoints.rend(); ++it) {
+            player.seek(it->tick);
+            ASSERT_EQ(player.tick(), it->tick);
+            EXPECT_EQ(checkpointOf(player.match()).hash, it->hash) << "tick " << it->tick;
+            EXPECT_EQ(player.lastSeekResimulated(), it->tick % spacing) << "tick " << it->tick;
+            player.prepareRestartPoints(UINT64_MAX); // rebuild the one handed out
+            player.seek(player.lastTick());
+            EXPECT_EQ(player.match().hash(), g.replay.finalHash);
+        }
+        EXPECT_FALSE(player.divergence().has_value());
+    }
+}
+
+TEST(RestartPoints, ASeekWithoutPointsStartsOver) {
+    const Golden g = golden("05_castle.replay.json");
+    ReplayPlayer player(g.level, g.replay);
+    player.seek(player.lastTick());
+    player.seek(1000);
+    EXPECT_EQ(player.lastSeekResimulated(), 1000u);
+    ASSERT_TRUE(player.prepareRestartPoints(UINT64_MAX));
+    player.seek(player.lastTick());
+    player.seek(1000);
+    EXPECT_EQ(player.lastSeekResimulated(), 1000u % player.restartPoints().spacing());
+    // The point handed out is gone until rebuilt; the one before it serves meanwhile.
+    player.seek(player.lastTick());
+    player.seek(1000);
+    EXPECT_EQ(player.lastSeekResimulated(),
+              1000u % player.restartPoints().spacing() + player.restartPoints().spacing());
+}
