@@ -2,6 +2,7 @@
 //   set-up    ReplayViewer()
 //   time      advance, warmUp: the clock's ticks, jumps
 //   controls  panel, key, banner
+//   video     exportVideo, the panel's line about it
 #include "ui/game/replay_view.h"
 
 #include <SDL.h>
@@ -191,9 +192,14 @@ ReplayRequests ReplayViewer::panel() {
         ImGui::SetTooltip("Play on from this moment: the commands so far are kept and a new replay "
                           "branches from here");
     ImGui::SameLine();
+    if (buttonWhen(video_.state() != VideoExport::State::Running, "Export video",
+                   "write the whole replay as an MP4 with sound, beside the replays"))
+        req.exportVideo = true;
+    ImGui::SameLine();
     if (ImGui::Button("Replays")) req.close = true;
     ImGui::SameLine();
     ImGui::TextColored(kDimText, "Space play/pause  . step  [ ] speed  PgUp/PgDn shots");
+    videoLine();
     ImGui::End();
     return req;
 }
@@ -247,6 +253,37 @@ ReplayRequests ReplayViewer::key(const SDL_Keysym& k, bool repeat, bool& handled
         break;
     }
     return req;
+}
+
+// ---- video ----------------------------------------------------------------------------
+void ReplayViewer::exportVideo(const std::string& folder) {
+    namespace fs = std::filesystem;
+    fs::path name = fs::path(file_).stem(); // "05_castle.replay.json" -> "05_castle"
+    if (name.extension() == ".replay") name = name.stem();
+    const fs::path dir = folder.empty() ? fs::path(file_).parent_path() : fs::path(folder);
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    const std::string out = (dir / name).string() + ".mp4";
+    // The same program, so the video is drawn by the same code as `run --video`.
+    video_.start("/proc/self/exe", match().level().file, file_, out);
+}
+
+void ReplayViewer::videoLine() {
+    switch (video_.poll()) {
+    case VideoExport::State::Idle:
+        break;
+    case VideoExport::State::Running:
+        ImGui::TextColored(kDimText, "exporting the video to %s ...", video_.file().c_str());
+        break;
+    case VideoExport::State::Done:
+        ImGui::TextColored(kGoodText, "video saved: %s", video_.file().c_str());
+        break;
+    case VideoExport::State::Failed:
+        ImGui::PushStyleColor(ImGuiCol_Text, kBadText);
+        ImGui::TextWrapped("video not written: %s", video_.message().c_str());
+        ImGui::PopStyleColor();
+        break;
+    }
 }
 
 std::string ReplayViewer::banner() const {
