@@ -1,5 +1,7 @@
 #include "ui/video/video_export.h"
 
+#include "ui/video/video_writer.h"
+
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
@@ -31,7 +33,9 @@ VideoExport::~VideoExport() {
     kill(child_, SIGTERM);
     int status = 0;
     waitpid(child_, &status, 0);
+    // Ended by the signal, the run could not remove its unfinished file itself.
     std::error_code ec;
+    std::filesystem::remove(partialVideoFile(out_), ec);
     std::filesystem::remove(log_, ec);
 }
 

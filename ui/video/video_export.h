@@ -6,8 +6,8 @@
 #pragma once
 
 #include <string>
-#include <vector>
 #include <sys/types.h>
+#include <vector>
 
 namespace ui {
 

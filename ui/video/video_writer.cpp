@@ -12,6 +12,7 @@ extern "C" {
 #include <libavutil/audio_fifo.h>
 #include <libavutil/channel_layout.h>
 #include <libavutil/log.h>
+#include <libavutil/opt.h>
 #include <libswresample/swresample.h>
 #include <libswscale/swscale.h>
 }
@@ -143,7 +144,7 @@ std::unique_ptr<VideoWriter> VideoWriter::open(const VideoDef& def, std::string&
               ", got " + std::to_string(def.width) + "x" + std::to_string(def.height);
         return nullptr;
     }
-    e->temp = def.file + ".part";
+    e->temp = partialVideoFile(def.file);
     const char* formatName = e->container == Container::Mp4 ? "mp4" : "gif";
     const int allocated =
         avformat_alloc_output_context2(&e->format, nullptr, formatName, e->temp.c_str());
@@ -209,8 +210,24 @@ std::string VideoWriter::Encoding::openPicture() {
     }
     if (std::string err = picture->open(options); !err.empty()) return err;
     picture->stream()->avg_frame_rate = c->framerate;
-    scaler = sws_getContext(def.width, def.height, AV_PIX_FMT_RGBA, def.width, def.height, pixels,
-                            SWS_BICUBIC, nullptr, nullptr, nullptr);
+    scaler = sws_alloc_context();
+    if (scaler) {
+        av_opt_set_int(scaler, "srcw", def.width, 0);
+        av_opt_set_int(scaler, "srch", def.height, 0);
+        av_opt_set_int(scaler, "src_format", AV_PIX_FMT_RGBA, 0);
+        av_opt_set_int(scaler, "dstw", def.width, 0);
+        av_opt_set_int(scaler, "dsth", def.height, 0);
+        av_opt_set_int(scaler, "dst_format", pixels, 0);
+        av_opt_set_int(scaler, "sws_flags", SWS_BICUBIC, 0);
+        // GIF: an ordered (Bayer) dither is the same wherever the picture is the same, so
+        // the encoder stores only what changed; error diffusion lets one change ripple
+        // over the whole frame (a 6 s clip: 4.4 MB against about 0.1 MB).
+        if (container == Container::Gif) av_opt_set(scaler, "sws_dither", "bayer", 0);
+        if (sws_init_context(scaler, nullptr, nullptr) < 0) {
+            sws_freeContext(scaler);
+            scaler = nullptr;
+        }
+    }
     pictureFrame.reset(av_frame_alloc());
     if (!scaler || !pictureFrame) return "out of memory for the picture converter";
     pictureFrame->format = pixels;

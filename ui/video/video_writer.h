@@ -69,6 +69,11 @@ class VideoWriter {
     std::unique_ptr<Encoding> enc_;
 };
 
+/// Where a video is written until it is complete: FILE.part beside FILE.
+inline std::string partialVideoFile(const std::string& file) {
+    return file + ".part";
+}
+
 /// The stereo frames that belong before video frame `frame` at `fps`: floor(frame *
 /// kVideoSampleRate / fps), exact in integers so the audio never drifts from the pictures.
 constexpr long long audioFramesBefore(long long frame, int fps) {
