@@ -23,6 +23,7 @@ extern "C" {
 #include <numbers>
 #include <string>
 #include <thread>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -33,12 +34,20 @@ std::string sourceDir() {
     return fs::path(__FILE__).parent_path().parent_path().parent_path().string();
 }
 
+/// A folder of this process's own for the videos, removed when the tests end.
+struct ScratchFolder {
+    fs::path dir = fs::temp_directory_path() /
+                   ("artillery_video_test_" + std::to_string(static_cast<long long>(getpid())));
+    ScratchFolder() { fs::create_directories(dir); }
+    ~ScratchFolder() {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+    }
+};
+
 std::string scratch(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / "artillery_video_test";
-    fs::create_directories(dir);
-    const fs::path p = dir / name;
-    fs::remove(p);
-    return p.string();
+    static const ScratchFolder folder;
+    return (folder.dir / name).string();
 }
 
 /// What a decoder finds in a file.

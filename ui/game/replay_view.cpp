@@ -198,8 +198,9 @@ ReplayRequests ReplayViewer::panel() {
     ImGui::SameLine();
     if (ImGui::Button("Replays")) req.close = true;
     ImGui::SameLine();
-    ImGui::TextColored(kDimText, "Space play/pause  . step  [ ] speed  PgUp/PgDn shots");
-    videoLine();
+    // The export's state takes the keys' place on this line (the panel keeps its height).
+    if (!videoLine())
+        ImGui::TextColored(kDimText, "Space play/pause  . step  [ ] speed  PgUp/PgDn shots");
     ImGui::End();
     return req;
 }
@@ -268,22 +269,26 @@ void ReplayViewer::exportVideo(const std::string& folder) {
     video_.start("/proc/self/exe", match().level().file, file_, out);
 }
 
-void ReplayViewer::videoLine() {
-    switch (video_.poll()) {
+bool ReplayViewer::videoLine() {
+    const VideoExport::State state = video_.poll();
+    std::string detail = video_.file();
+    switch (state) {
     case VideoExport::State::Idle:
-        break;
+        return false;
     case VideoExport::State::Running:
-        ImGui::TextColored(kDimText, "exporting the video to %s ...", video_.file().c_str());
+        ImGui::TextColored(kDimText, "exporting the video ...");
         break;
     case VideoExport::State::Done:
-        ImGui::TextColored(kGoodText, "video saved: %s", video_.file().c_str());
+        ImGui::TextColored(kGoodText, "video saved: %s",
+                           std::filesystem::path(video_.file()).filename().string().c_str());
         break;
     case VideoExport::State::Failed:
-        ImGui::PushStyleColor(ImGuiCol_Text, kBadText);
-        ImGui::TextWrapped("video not written: %s", video_.message().c_str());
-        ImGui::PopStyleColor();
+        ImGui::TextColored(kBadText, "video not written");
+        detail = video_.message();
         break;
     }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", detail.c_str());
+    return true;
 }
 
 std::string ReplayViewer::banner() const {

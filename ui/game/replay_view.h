@@ -69,8 +69,9 @@ class ReplayViewer {
     void togglePlay();
     void changeSpeed(int by);
     void jumpBy(double seconds);
-    /// The panel's line about "Export video": running, where it went, or why not.
-    void videoLine();
+    /// The panel's words about "Export video": running, where it went, or why not (in
+    /// the tooltip). False, and nothing drawn, before any export.
+    bool videoLine();
     /// The shot to go back to: within half a second of a shot's start, the one before
     /// it (so pressing again while playing keeps going back).
     std::optional<std::uint64_t> previousShot() const;
