@@ -65,7 +65,8 @@ int runReplayVerify(const Args& args, std::ostream& out) {
 
 int runRun(const Args& args, std::ostream& out) { return runHeadlessVerb(args, out, nullptr); }
 
-int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory* sinks) {
+int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory* sinks,
+                    const VideoSinkFactory* videos) {
     args.text("<positional>");
     const auto replayFile = args.text("replay");
     const auto commandsFile = args.text("commands");
@@ -73,6 +74,9 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
     const long long ticks = args.integer("ticks", 0, 1, static_cast<long long>(kMaxRunTicks));
     const auto png = args.text("png");
     const long long every = args.integer("every", 60, 1, 1000000);
+    const auto video = args.text("video");
+    const long long fps = args.integer("fps", 30, 1, 60);
+    const bool audio = !args.flag("no-audio");
     const std::string size = args.text("size", "1280x720");
     const auto record = args.text("record");
     const std::string difficulty = args.text("difficulty", "normal");
@@ -89,6 +93,11 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
         width > 8192 || height > 8192)
         args.fail("--size expects WxH between 16x16 and 8192x8192, got '" + size + "'");
     if (png && !sinks) args.fail("--png needs the renderer, which this build of the verb lacks");
+    if (png && video) args.fail("give --png or --video, not both");
+    if (!video && (args.has("fps") || !audio))
+        args.fail("--fps and --no-audio describe a video; add --video FILE");
+    if (video && !videos)
+        args.fail("--video needs the renderer, which this build of the verb lacks");
 
     HeadlessOptions o;
     o.session.difficulty = *difficultyFromName(difficulty);
@@ -123,19 +132,44 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
         o.sink = sink.get();
         o.every = static_cast<std::uint64_t>(every);
     }
+    std::unique_ptr<VideoSink> videoSink;
+    if (video) {
+        VideoRequest request;
+        request.file = *video;
+        request.width = width;
+        request.height = height;
+        request.fps = static_cast<int>(fps);
+        request.hud = hud;
+        request.audio = audio;
+        std::string why;
+        videoSink = (*videos)(request, why);
+        if (!videoSink) args.fail(why);
+        o.sink = videoSink.get();
+        o.every = 1; // the sink keeps the video's clock and draws when a frame is due
+    }
     const HeadlessSummary s = runHeadless(level, o);
+    if (videoSink)
+        if (const std::string why = videoSink->finish(); !why.empty()) throw UsageError(why);
     if (json) {
         nlohmann::json j{{"ticks", s.ticks},     {"final_hash", hex(s.finalHash)}, {"score", s.score},
                          {"shots", s.shots},     {"over", s.over},                 {"winner", s.winner},
                          {"events", eventsJson(s.events)}, {"sim_ms", s.simMs},   {"render_ms", s.renderMs}};
+        if (videoSink)
+            j["video"] = {{"file", *video},
+                          {"codec", videoSink->codec()},
+                          {"frames", videoSink->frames()},
+                          {"seconds", videoSink->seconds()}};
         out << j.dump() << "\n";
         return kOk;
     }
     char line[200];
-    std::snprintf(line, sizeof line, "%s: %llu ticks (%.1f s simulated) in %.1f ms%s\n",
-                  level.name.c_str(), static_cast<unsigned long long>(s.ticks),
-                  static_cast<double>(s.ticks) * (1.0 / 120.0), s.simMs,
-                  png ? (", rendering " + std::to_string(static_cast<int>(s.renderMs)) + " ms").c_str() : "");
+    std::snprintf(
+        line, sizeof line, "%s: %llu ticks (%.1f s simulated) in %.1f ms%s\n", level.name.c_str(),
+        static_cast<unsigned long long>(s.ticks), static_cast<double>(s.ticks) * (1.0 / 120.0),
+        s.simMs,
+        png || video
+            ? (", rendering " + std::to_string(static_cast<int>(s.renderMs)) + " ms").c_str()
+            : "");
     out << line;
     for (const auto& e : s.events) {
         if (e.kind == EventKind::Refused || e.kind == EventKind::Bounce) continue;
@@ -149,6 +183,11 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
     out << line;
     if (record) out << "recorded " << *record << "\n";
     if (png) out << "frames in " << *png << "\n";
+    if (videoSink) {
+        std::snprintf(line, sizeof line, "video in %s (%s, %lld frames, %.2f s)\n", video->c_str(),
+                      videoSink->codec(), videoSink->frames(), videoSink->seconds());
+        out << line;
+    }
     return kOk;
 }
 

@@ -14,7 +14,8 @@ namespace {
 /// initialisation).
 const std::string& runUsage() {
     static const std::string usage = std::string(R"(usage: artillery run LEVEL.json [--replay FILE | --commands FILE] [--ticks N]
-           [--png DIR --every K] [--size WxH] [--no-hud] [--record FILE]
+           [--png DIR --every K | --video FILE [--fps N] [--no-audio]]
+           [--size WxH] [--no-hud] [--record FILE]
            [--autoplay] [--difficulty easy|normal|hard] [--json]
 
 Plays LEVEL with no window: the commands of a replay or of a commands script are
@@ -28,11 +29,17 @@ events, the score and the final state hash.
                      the match is over, at most 60 s after the last command)
   --png DIR          write a PNG every K ticks (--every, default 60) into DIR, drawn
                      headlessly with the window's drawing code (OSMesa, or EGL)
-  --size WxH         frame size (default 1280x720); --no-hud leaves the HUD out
+  --video FILE       write the run as a video playing at real speed, drawn like --png:
+                     FILE.mp4 is H.264 (MPEG-4 part 2 where libavcodec lacks it) with
+                     AAC sound, stereo 48 kHz; FILE.gif has pictures only
+  --fps N            the video's frames per second, 1..60 (default 30)
+  --no-audio         an MP4 without a sound track
+  --size WxH         frame size (default 1280x720; even for MP4); --no-hud leaves the HUD out
   --record FILE      save this run as a replay
   --autoplay         the computer plays every cannon (at --difficulty)
   --json             {"ticks":n,"final_hash":"hex","score":..,"shots":n,"over":b,
-                      "winner":i,"events":[...],"sim_ms":..,"render_ms":..}
+                      "winner":i,"events":[...],"sim_ms":..,"render_ms":..}, with
+                     --video also "video":{"file":..,"codec":..,"frames":n,"seconds":..}
 )") +
         "\nSettings a commands file's {\"cmd\": \"set\", \"name\": .., \"value\": ..} takes:\n" +
         settingsHelp();
@@ -167,7 +174,7 @@ Exit code: 0 when every file is valid, 1 when any is not, 2 on bad usage.
      runCheck},
     {"run", "headless simulation of a level: replay or script in, events, hash, PNG frames out",
      runUsage().c_str(),
-     {"no-hud", "autoplay"},
+     {"no-hud", "autoplay", "no-audio"},
      runRun},
     {"replay", "replay verify FILE: re-simulate a replay and compare its checkpoints",
      R"(usage: artillery replay verify FILE [--json]

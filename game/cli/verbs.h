@@ -3,6 +3,7 @@
 #pragma once
 
 #include "game/cli/args.h"
+#include "game/cli/video_request.h"
 #include "physics/integrators.h"
 
 #include <functional>
@@ -50,7 +51,9 @@ namespace game::cli {
 /// height, draw the HUD, error out) -> sink or nullptr with the reason.
 using FrameSinkFactory = std::function<std::unique_ptr<FrameSink>(
     const std::string& folder, int width, int height, bool hud, std::string& why)>;
-/// `artillery run` with an optional renderer for --png.
-int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory* sinks);
+
+/// `artillery run` with an optional renderer for --png and video encoder for --video.
+int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory* sinks,
+                    const VideoSinkFactory* videos = nullptr);
 
 } // namespace game::cli

@@ -469,6 +469,8 @@ void GameScreen::drawPanels() {
             takeOverReplay();
         else if (req.close)
             showReplays();
+        else if (req.exportVideo)
+            viewer_->exportVideo(replaysFolder());
     }
     if (session_ && overlay_ == Overlay::None) {
         game::Match& m = session_->match();

@@ -1,10 +1,7 @@
 #include "ui/game/png_frames.h"
 
-#include "ui/game/match_frame.h"
-#include "ui/platform/imgui_layer.h"
-#include "ui/render/gl.h"
-#include "ui/render/renderer2d.h"
 #include "ui/render/screenshot.h"
+#include "ui/video/video_frames.h"
 
 #include <stb_image_write.h>
 
@@ -28,22 +25,9 @@ std::unique_ptr<PngFrameSink> PngFrameSink::create(const std::string& folder, in
         return nullptr;
     }
     std::unique_ptr<PngFrameSink> sink(new PngFrameSink());
-    sink->context_ = createHeadlessContext(width, height, backend, why);
-    if (!sink->context_) return nullptr;
-    if (const char* missing = gl::loadGL(sink->context_->procAddress()); *missing) {
-        why = std::string(sink->context_->name()) + ": OpenGL 3.3 core is needed; " + missing +
-              " is missing";
-        return nullptr;
-    }
-    try {
-        sink->imgui_ = std::make_unique<ImGuiLayer>(*sink->context_, nullptr);
-        sink->renderer_ = std::make_unique<Renderer2D>();
-    } catch (const std::exception& e) {
-        why = e.what();
-        return nullptr;
-    }
+    sink->canvas_ = OffscreenMatch::create(width, height, hud, backend, why);
+    if (!sink->canvas_) return nullptr;
     sink->folder_ = folder;
-    sink->hud_ = hud;
     // A run writes many frames: zlib level 2 instead of stb's 8 and one filter for
     // every row make encoding much faster for slightly larger files.
     stbi_write_png_compression_level = 2;
@@ -53,32 +37,22 @@ std::unique_ptr<PngFrameSink> PngFrameSink::create(const std::string& folder, in
 
 PngFrameSink::~PngFrameSink() {
     if (std::getenv("ARTILLERY_FRAME_TIMES") && written_ > 0)
-        std::fprintf(stderr, "png frames: %d, drawing %.1f ms/frame, reading back and encoding %.1f ms/frame\n",
-                     written_, drawMs_ / written_, writeMs_ / written_);
-    // ImGui and the renderer free GL objects: they go before the context.
-    renderer_.reset();
-    imgui_.reset();
+        std::fprintf(
+            stderr,
+            "png frames: %d, drawing %.1f ms/frame, reading back and encoding %.1f ms/frame\n",
+            written_, drawMs_ / written_, writeMs_ / written_);
 }
 
 void PngFrameSink::frame(const game::Match& match) {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
-    view_.observe(match);
-    const int w = context_->width(), h = context_->height();
-    MatchViewOptions o;
-    o.hud = hud_;
-    imgui_->newFrame(1.0 / 60.0);
-    gl::fn.BindFramebuffer(GL_FRAMEBUFFER, context_->framebuffer());
-    drawMatchFrame(*renderer_, view_, match, levelCamera(match, w, h), o);
-    imgui_->drawLabels(renderer_->labels());
-    imgui_->render();
-    context_->present(); // waits until the frame is drawn
+    canvas_->draw(match, 1.0 / 60.0);
     const auto t1 = Clock::now();
     char name[32];
     std::snprintf(name, sizeof name, "frame_%06llu.png",
                   static_cast<unsigned long long>(match.tick()));
     const std::string path = (std::filesystem::path(folder_) / name).string();
-    const std::string err = writePng(path, readFramebuffer(context_->framebuffer(), w, h));
+    const std::string err = writePng(path, canvas_->readBack());
     drawMs_ += std::chrono::duration<double, std::milli>(t1 - t0).count();
     writeMs_ += std::chrono::duration<double, std::milli>(Clock::now() - t1).count();
     if (err.empty())
@@ -98,7 +72,8 @@ namespace {
 
 int runWithRenderer(const game::cli::Args& args, std::ostream& out) {
     static const game::cli::FrameSinkFactory factory = pngFrameSinkFactory();
-    return game::cli::runHeadlessVerb(args, out, &factory);
+    static const game::cli::VideoSinkFactory videos = videoSinkFactory();
+    return game::cli::runHeadlessVerb(args, out, &factory, &videos);
 }
 
 } // namespace

@@ -1,22 +1,19 @@
 // The frame sink of `artillery run --png DIR`: each frame the headless runner
-// hands over is drawn with MatchView (the window's drawing code) into an OSMesa context
-// (EGL surfaceless as the fallback) and written as DIR/frame_TTTTTT.png, TTTTTT being the
+// hands over is drawn by OffscreenMatch (the window's drawing code, in an OSMesa context,
+// EGL surfaceless as the fallback) and written as DIR/frame_TTTTTT.png, TTTTTT being the
 // tick, so frames sort in time order and name the tick they show. With the environment
 // variable ARTILLERY_FRAME_TIMES set, the sink prints its drawing and encoding times.
 #pragma once
 
 #include "game/cli/verbs.h"
 #include "game/headless.h"
-#include "ui/game/match_view.h"
+#include "ui/game/offscreen_match.h"
 #include "ui/platform/gl_context.h"
 
 #include <memory>
 #include <string>
 
 namespace ui {
-
-class ImGuiLayer;
-class Renderer2D;
 
 class PngFrameSink final : public game::FrameSink {
   public:
@@ -32,12 +29,8 @@ class PngFrameSink final : public game::FrameSink {
 
   private:
     PngFrameSink() = default;
-    std::unique_ptr<GLContext> context_;
-    std::unique_ptr<ImGuiLayer> imgui_;
-    std::unique_ptr<Renderer2D> renderer_;
-    MatchView view_;
+    std::unique_ptr<OffscreenMatch> canvas_;
     std::string folder_;
-    bool hud_ = true;
     int written_ = 0;
     double drawMs_ = 0.0;  ///< wall time drawing (with the GL finish), for ARTILLERY_FRAME_TIMES
     double writeMs_ = 0.0; ///< reading back and PNG encoding

@@ -2,6 +2,7 @@
 //   set-up    ReplayViewer()
 //   time      advance, warmUp: the clock's ticks, jumps
 //   controls  panel, key, banner
+//   video     exportVideo, the panel's line about it
 #include "ui/game/replay_view.h"
 
 #include <SDL.h>
@@ -195,9 +196,15 @@ ReplayRequests ReplayViewer::panel() {
         ImGui::SetTooltip("Play on from this moment: the commands so far are kept and a new replay "
                           "branches from here");
     ImGui::SameLine();
+    if (buttonWhen(video_.state() != VideoExport::State::Running, "Export video",
+                   "write the whole replay as an MP4 with sound, beside the replays"))
+        req.exportVideo = true;
+    ImGui::SameLine();
     if (ImGui::Button("Replays")) req.close = true;
     ImGui::SameLine();
-    ImGui::TextColored(kDimText, "Space play/pause  . step  [ ] speed  PgUp/PgDn shots");
+    // The export's state takes the keys' place on this line (the panel keeps its height).
+    if (!videoLine())
+        ImGui::TextColored(kDimText, "Space play/pause  . step  [ ] speed  PgUp/PgDn shots");
     ImGui::End();
     return req;
 }
@@ -251,6 +258,41 @@ ReplayRequests ReplayViewer::key(const SDL_Keysym& k, bool repeat, bool& handled
         break;
     }
     return req;
+}
+
+// ---- video ----------------------------------------------------------------------------
+void ReplayViewer::exportVideo(const std::string& folder) {
+    namespace fs = std::filesystem;
+    fs::path name = fs::path(file_).stem(); // "05_castle.replay.json" -> "05_castle"
+    if (name.extension() == ".replay") name = name.stem();
+    const fs::path dir = folder.empty() ? fs::path(file_).parent_path() : fs::path(folder);
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    const std::string out = (dir / name).string() + ".mp4";
+    // The same program, so the video is drawn by the same code as `run --video`.
+    video_.start("/proc/self/exe", match().level().file, file_, out);
+}
+
+bool ReplayViewer::videoLine() {
+    const VideoExport::State state = video_.poll();
+    std::string detail = video_.file();
+    switch (state) {
+    case VideoExport::State::Idle:
+        return false;
+    case VideoExport::State::Running:
+        ImGui::TextColored(kDimText, "exporting the video ...");
+        break;
+    case VideoExport::State::Done:
+        ImGui::TextColored(kGoodText, "video saved: %s",
+                           std::filesystem::path(video_.file()).filename().string().c_str());
+        break;
+    case VideoExport::State::Failed:
+        ImGui::TextColored(kBadText, "video not written");
+        detail = video_.message();
+        break;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", detail.c_str());
+    return true;
 }
 
 std::string ReplayViewer::banner() const {

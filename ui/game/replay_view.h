@@ -1,9 +1,10 @@
 // The replay viewer's controls: a game::ReplayPlayer under its own
 // fixed-step clock, with play / pause, one tick either way, speed x1/8 .. x16, a scrub
 // slider over the whole recording (backwards too: a re-simulation from the start), the
-// previous / next shot, and "Take over", which the game screen answers by playing on
-// from that tick as a new branch. The game screen draws the match on its usual path
-// (MatchView, drawMatchFrame); this file holds only the controls and the clock.
+// previous / next shot, "Take over", which the game screen answers by playing on from
+// that tick as a new branch, and "Export video", which writes the replay as an MP4 beside
+// the replays (a child `artillery run --video`). The game screen draws the match on its
+// usual path (MatchView, drawMatchFrame); this file holds only the controls and the clock.
 //
 // Section index
 //   ReplayRequests   what the panel or a key asked the game screen for
@@ -13,6 +14,7 @@
 #include "game/replay_player.h"
 #include "physics/clock.h"
 #include "ui/game/match_view.h"
+#include "ui/video/video_export.h"
 
 #include <SDL_keyboard.h>
 
@@ -26,6 +28,7 @@ namespace ui {
 struct ReplayRequests {
     bool takeOver = false; ///< play on from here, recording a branch
     bool close = false;    ///< back to the list of replays
+    bool exportVideo = false; ///< write the replay as a video (exportVideo())
 };
 
 /// Replay speeds the [ and ] keys step through (simulated seconds per wall second).
@@ -56,6 +59,9 @@ class ReplayViewer {
     const game::Match& match() const { return player_->match(); }
     const game::ReplayPlayer& player() const { return *player_; }
     const std::string& file() const { return file_; }
+    /// Writes the whole replay as FOLDER/NAME.mp4 (the replay's own folder when `folder` is
+    /// ""), in the background; the panel says where it went or why it failed.
+    void exportVideo(const std::string& folder);
     /// The match as a live session from the current tick (the viewer is spent).
     game::Session takeOver(const game::SessionOptions& options);
 
@@ -63,6 +69,9 @@ class ReplayViewer {
     void togglePlay();
     void changeSpeed(int by);
     void jumpBy(double seconds);
+    /// The panel's words about "Export video": running, where it went, or why not (in
+    /// the tooltip). False, and nothing drawn, before any export.
+    bool videoLine();
     /// The shot to go back to: within half a second of a shot's start, the one before
     /// it (so pressing again while playing keeps going back).
     std::optional<std::uint64_t> previousShot() const;
@@ -75,6 +84,7 @@ class ReplayViewer {
     bool stepRequested_ = false;
     int speed_ = 3;                     ///< index into kReplaySpeeds (x1)
     std::optional<std::uint64_t> seek_; ///< a jump asked for, done at the next advance()
+    VideoExport video_;                 ///< "Export video", running or done
 };
 
 } // namespace ui
