@@ -19,7 +19,9 @@
 #include "game/level.h"
 #include "game/session.h"
 #include "physics/clock.h"
+#include "game/progress.h"
 #include "ui/game/aim_input.h"
+#include "ui/game/campaign_view.h"
 #include "ui/game/game_menus.h"
 #include "ui/game/match_view.h"
 #include "ui/game/pad_input.h"
@@ -120,6 +122,7 @@ class GameScreen final : public Screen {
     void drawPlaying();
     void drawPanels();
     void persist();
+    void loadProgress();
     phys::Vec2 pivotPixels() const;
     phys::Vec2 pointerPixels(int x, int y) const;
     bool keyDown(const SDL_Event& e);
@@ -136,6 +139,13 @@ class GameScreen final : public Screen {
     PlayerSettings settings_;
     std::string settingsFile_, iniFile_;
     std::vector<LevelEntry> levels_;
+    /// The levels in their chapters, and what the player has earned ("" file: not kept).
+    CampaignMenu campaign_;
+    game::Progress progress_;
+    std::string progressFile_;
+    /// The lesson on screen (Overlay::Lesson) and the level its Play button opens.
+    std::size_t lessonChapter_ = 0;
+    std::string lessonThenLevel_;
 
     game::Level level_;
     std::unique_ptr<game::Session> session_;
