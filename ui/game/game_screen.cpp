@@ -84,13 +84,13 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
             stats_.status = warning;
             settingsFile_.clear();
         }
-        loadProgress();
         std::error_code ec;
         if (std::filesystem::exists(iniFile_, ec)) {
             const std::string ini = game::readFile(iniFile_);
             ImGui::LoadIniSettingsFromMemory(ini.data(), ini.size());
         }
     }
+    if (!def_.settingsFolder.empty() || !def_.progressFile.empty()) loadProgress();
     view_ = openingView(def_.view, settings_.draw);
     matchView_.followGhosts(view_.draw.ghosts);
     if (def_.difficulty) settings_.difficulty = *def_.difficulty;
@@ -120,10 +120,22 @@ GameScreen::~GameScreen() {
 /// The progress file beside the settings. A damaged one is kept aside by the reader and
 /// the player is told once; results an older settings file kept move into a new one.
 void GameScreen::loadProgress() {
-    progressFile_ = (std::filesystem::path(def_.settingsFolder) / "progress.json").string();
+    progressFile_ = !def_.progressFile.empty()
+                        ? def_.progressFile
+                        : (std::filesystem::path(def_.settingsFolder) / "progress.json").string();
     std::error_code ec;
     const bool existed = std::filesystem::exists(progressFile_, ec);
     std::string warning;
+    if (def_.progressReadOnly) { // a check run: read, never move nor write
+        try {
+            if (existed) progress_ = game::parseProgress(progressFile_, game::readFile(progressFile_));
+        } catch (const std::exception& e) {
+            warning = e.what();
+        }
+        if (!warning.empty()) std::cerr << "artillery: " << warning << "\n";
+        progressFile_.clear();
+        return;
+    }
     progress_ = game::loadProgress(progressFile_, warning);
     if (!warning.empty()) {
         std::cerr << "artillery: " << warning << "\n";
@@ -482,7 +494,8 @@ void GameScreen::drawPlaying() {
 
 void GameScreen::drawPanels() {
     MenuChoice choice;
-    if (overlay_ == Overlay::LevelSelect) choice = levelSelectScreen(campaign_, progress_, settings_);
+    if (overlay_ == Overlay::LevelSelect)
+        choice = levelSelectScreen(campaign_, progress_, settings_);
     if (overlay_ == Overlay::Lesson)
         choice = lessonScreen(campaign_.campaign, lessonChapter_, lessonThenLevel_);
     if (overlay_ == Overlay::Replays) choice = replaysScreen(replays_, replaysFolder());

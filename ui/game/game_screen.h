@@ -17,17 +17,17 @@
 
 #include "game/effects/camera_rig.h"
 #include "game/level.h"
+#include "game/progress.h"
 #include "game/session.h"
 #include "physics/clock.h"
-#include "game/progress.h"
 #include "ui/game/aim_input.h"
 #include "ui/game/campaign_view.h"
 #include "ui/game/game_menus.h"
 #include "ui/game/match_view.h"
 #include "ui/game/pad_input.h"
 #include "ui/game/player_settings.h"
-#include "ui/game/sandbox_tools.h"
 #include "ui/game/replay_view.h"
+#include "ui/game/sandbox_tools.h"
 #include "ui/game/stats_panel.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
@@ -54,6 +54,9 @@ struct GameScreenDef {
     bool panel = true;               ///< the ImGui physics panel
     /// Where results, choices and the ImGui layout persist ("" = nowhere: tests, headless).
     std::string settingsFolder;
+    /// The campaign progress file ("" = progress.json in settingsFolder, if any).
+    std::string progressFile;
+    bool progressReadOnly = false; ///< read it, never write it (check runs)
     /// Choices when nothing is stored (the command line overrides stored ones).
     std::optional<game::Difficulty> difficulty;
     std::optional<bool> hotseat;

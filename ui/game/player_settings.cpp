@@ -109,7 +109,8 @@ std::string savePlayerSettings(const std::string& file, const PlayerSettings& s)
     j["screen_shake"] = s.screenShake;
     j["physics_panel"] = s.physicsPanel;
     DrawChoices draw = s.draw;
-    for (const auto& [name, flag] : drawFlags(draw)) j["draw"][name] = *flag;
+    for (const auto& [name, flag] : drawFlags(draw))
+        j["draw"][name] = *flag;
     try {
         std::filesystem::create_directories(std::filesystem::path(file).parent_path());
         game::writeFileAtomically(file, j.dump(2) + "\n");
