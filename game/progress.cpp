@@ -84,8 +84,10 @@ Progress loadProgress(const std::string& file, std::string& warning) {
         // player (and a bug report), and the game starts from no progress.
         const std::string aside = file + ".damaged";
         // Only a file is moved: a device or a folder given as the progress file stays put.
-        if (std::filesystem::is_regular_file(file, ec)) std::filesystem::rename(file, aside, ec);
-        else ec = std::make_error_code(std::errc::not_supported);
+        if (std::filesystem::is_regular_file(file, ec))
+            std::filesystem::rename(file, aside, ec);
+        else
+            ec = std::make_error_code(std::errc::not_supported);
         warning = std::string(e.what()) +
                   (ec ? " (starting with no progress; the file could not be moved aside: " +
                             ec.message() + ")"

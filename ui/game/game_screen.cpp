@@ -128,7 +128,8 @@ void GameScreen::loadProgress() {
     std::string warning;
     if (def_.progressReadOnly) { // a check run: read, never move nor write
         try {
-            if (existed) progress_ = game::parseProgress(progressFile_, game::readFile(progressFile_));
+            if (existed)
+                progress_ = game::parseProgress(progressFile_, game::readFile(progressFile_));
         } catch (const std::exception& e) {
             warning = e.what();
         }
