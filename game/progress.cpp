@@ -42,6 +42,13 @@ const LevelResult* Progress::result(const std::string& levelFile) const {
     return it == results.end() ? nullptr : &it->second;
 }
 
+bool adoptOlderResults(Progress& progress, const std::map<std::string, LevelResult>& older) {
+    bool taken = false;
+    for (const auto& [name, result] : older)
+        taken |= progress.results.emplace(key(name), result).second;
+    return taken;
+}
+
 Progress parseProgress(const std::string& file, const std::string& text) {
     const nlohmann::json doc = parseJson(file, text);
     const Node root(doc, file);

@@ -33,6 +33,10 @@ struct Progress {
     const LevelResult* result(const std::string& levelFile) const;
 };
 
+/// Takes the results `older` holds (an older settings file's, by level file name) for
+/// the levels `progress` has none of; returns whether any were taken.
+bool adoptOlderResults(Progress& progress, const std::map<std::string, LevelResult>& older);
+
 /// Parses a progress file strictly; throws LoadError naming the file, the JSON path and
 /// what was expected.
 Progress parseProgress(const std::string& file, const std::string& text);

@@ -128,3 +128,19 @@ TEST(Progress, StrictReader) {
               std::string::npos);
     EXPECT_NE(message(R"({"format": 2})").find("$.format"), std::string::npos);
 }
+
+// Results an older settings file kept move into the progress for the levels it has none
+// of; a level played since keeps its own result.
+TEST(Progress, AdoptsOlderResults) {
+    Progress p;
+    p.record("02_moon.json", 500, 3, false);
+    std::map<std::string, LevelResult> older;
+    older["02_moon.json"].stars = 1;
+    older["05_castle.json"].stars = 2;
+    older["05_castle.json"].bestScore = 320;
+    EXPECT_TRUE(adoptOlderResults(p, older));
+    EXPECT_EQ(p.result("02_moon.json")->stars, 3);
+    EXPECT_EQ(p.result("05_castle.json")->stars, 2);
+    EXPECT_EQ(p.result("05_castle.json")->bestScore, 320);
+    EXPECT_FALSE(adoptOlderResults(p, older)) << "taken once";
+}

@@ -118,7 +118,8 @@ GameScreen::~GameScreen() {
 }
 
 /// The progress file beside the settings. A damaged one is kept aside by the reader and
-/// the player is told once; results an older settings file kept move into a new one.
+/// the player is told once; results an older settings file kept move into it (saved
+/// before the settings, which no longer write them, are saved without them).
 void GameScreen::loadProgress() {
     progressFile_ = !def_.progressFile.empty()
                         ? def_.progressFile
@@ -141,8 +142,7 @@ void GameScreen::loadProgress() {
     if (!warning.empty()) {
         std::cerr << "artillery: " << warning << "\n";
         stats_.status = warning;
-    } else if (!existed && !settings_.results.empty()) {
-        progress_.results = settings_.results;
+    } else if (game::adoptOlderResults(progress_, settings_.results)) {
         if (const std::string err = game::saveProgress(progressFile_, progress_); !err.empty())
             std::cerr << "artillery: progress not saved: " << err << "\n";
     }
