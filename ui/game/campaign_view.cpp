@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 
@@ -138,6 +139,14 @@ CampaignMenu campaignMenu(const std::string& folder, const std::vector<LevelEntr
 
 void campaignTable(const CampaignMenu& menu, const game::Progress& progress, MenuChoice& choice) {
     if (!menu.error.empty()) ImGui::TextColored(kError, "%s", menu.error.c_str());
+    // When the screen opens, the list scrolls to the first open level not yet cleared:
+    // where the player left off. Twice: on the first frame the list has no height yet.
+    ImGuiStorage* storage = ImGui::GetStateStorage();
+    const ImGuiID scrollKey = ImGui::GetID("scroll to the next level");
+    if (ImGui::IsWindowAppearing()) storage->SetInt(scrollKey, 2);
+    const int scrollFrames = storage->GetInt(scrollKey, 0);
+    bool scrollToNext = scrollFrames > 0;
+    storage->SetInt(scrollKey, std::max(0, scrollFrames - 1));
     if (!ImGui::BeginTable("campaign", 4,
                            ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH |
                                ImGuiTableFlags_ScrollY,
@@ -147,7 +156,7 @@ void campaignTable(const CampaignMenu& menu, const game::Progress& progress, Men
     ImGui::TableSetupColumn("level", ImGuiTableColumnFlags_WidthFixed, 200.0f);
     ImGui::TableSetupColumn("mode", ImGuiTableColumnFlags_WidthFixed, 70.0f);
     ImGui::TableSetupColumn("lesson", ImGuiTableColumnFlags_WidthStretch);
-    ImGui::TableSetupColumn("best", ImGuiTableColumnFlags_WidthFixed, 130.0f);
+    ImGui::TableSetupColumn("best", ImGuiTableColumnFlags_WidthFixed, 150.0f);
     ImGui::TableHeadersRow();
     const game::Campaign& campaign = menu.campaign;
     for (std::size_t c = 0; c < campaign.chapters.size(); ++c) {
@@ -162,6 +171,10 @@ void campaignTable(const CampaignMenu& menu, const game::Progress& progress, Men
             bool clicked = false;
             levelRow(std::to_string(c + 1) + "." + std::to_string(l + 1), levels[l], lock, progress,
                      clicked);
+            if (scrollToNext && lock.open && !game::cleared(progress, levels[l].file)) {
+                ImGui::SetScrollHereY(0.3f);
+                scrollToNext = false;
+            }
             if (!clicked) continue;
             // The chapter's lesson comes first, once, before the level it opens with.
             if (!progress.lessonsSeen.count(ch.id)) {
