@@ -139,6 +139,23 @@ std::vector<std::string> campaignProblems(const Campaign& campaign,
     return problems;
 }
 
+std::optional<LevelPlace> findLevel(const Campaign& campaign, const std::string& levelFile) {
+    const std::string name = std::filesystem::path(levelFile).filename().string();
+    for (std::size_t c = 0; c < campaign.chapters.size(); ++c)
+        for (std::size_t l = 0; l < campaign.chapters[c].levels.size(); ++l)
+            if (campaign.chapters[c].levels[l] == name) return LevelPlace{c, l};
+    return std::nullopt;
+}
+
+std::optional<LevelPlace> nextLevel(const Campaign& campaign, const std::string& levelFile) {
+    const auto at = findLevel(campaign, levelFile);
+    if (!at) return std::nullopt;
+    if (at->level + 1 < campaign.chapters[at->chapter].levels.size())
+        return LevelPlace{at->chapter, at->level + 1};
+    if (at->chapter + 1 < campaign.chapters.size()) return LevelPlace{at->chapter + 1, 0};
+    return std::nullopt;
+}
+
 bool cleared(const Progress& progress, const std::string& levelFile) {
     const LevelResult* r = progress.result(levelFile);
     return r && (r->stars >= 1 || r->won);

@@ -11,6 +11,7 @@
 #include "game/progress.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,17 @@ Campaign loadCampaign(const std::string& file);
 /// One message per problem, each naming the file and the JSON path; empty when sound.
 std::vector<std::string> campaignProblems(const Campaign& campaign,
                                           const std::string& levelsFolder);
+
+/// Where a level is in the campaign: chapter and level index.
+struct LevelPlace {
+    std::size_t chapter = 0, level = 0;
+    bool operator==(const LevelPlace&) const = default;
+};
+/// The level file's place (matched by file name), if it is in a chapter.
+std::optional<LevelPlace> findLevel(const Campaign& campaign, const std::string& levelFile);
+/// The level after it in play order (the next chapter's first after a chapter's last);
+/// none after the last level or for a level outside the chapters.
+std::optional<LevelPlace> nextLevel(const Campaign& campaign, const std::string& levelFile);
 
 /// Stars earned in a chapter (duels earn none).
 int chapterStars(const Chapter& chapter, const Progress& progress);

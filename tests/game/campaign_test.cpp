@@ -148,3 +148,14 @@ TEST(Campaign, LevelsOpenOneAfterAnotherAndChaptersByStars) {
     p.record("3.json", 0, 0, true); // a duel won clears its level
     EXPECT_TRUE(levelLock(c, 1, 1, p).open);
 }
+
+TEST(Campaign, NextLevelGoesOnAcrossChapters) {
+    const Campaign c = twoChapters();
+    EXPECT_EQ(findLevel(c, "levels/2.json"), (LevelPlace{0, 1}));
+    EXPECT_EQ(nextLevel(c, "1.json"), (LevelPlace{0, 1}));
+    EXPECT_EQ(nextLevel(c, "some/folder/2.json"), (LevelPlace{1, 0})) << "into the next chapter";
+    EXPECT_EQ(nextLevel(c, "3.json"), (LevelPlace{1, 1}));
+    EXPECT_FALSE(nextLevel(c, "4.json")) << "the last level";
+    EXPECT_FALSE(nextLevel(c, "sandbox.json")) << "outside the chapters";
+    EXPECT_FALSE(findLevel(c, "5.json"));
+}

@@ -202,6 +202,41 @@ void campaignTable(const CampaignMenu& menu, const game::Progress& progress, Men
     ImGui::EndTable();
 }
 
+MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progress,
+                         const std::string& levelFile) {
+    MenuChoice choice;
+    const auto next = game::nextLevel(menu.campaign, levelFile);
+    if (!next) return choice;
+    const LevelEntry& e = menu.chapters[next->chapter][next->level];
+    const game::Chapter& ch = menu.campaign.chapters[next->chapter];
+    const game::Lock lock = game::levelLock(menu.campaign, next->chapter, next->level, progress);
+    // Just below the results card in the middle of the screen (ui/game/match_view.cpp).
+    const ImVec2 d = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(d.x * 0.5f, d.y * 0.5f + 86.0f), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.0f));
+    ImGui::Begin("Next level", nullptr,
+                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoTitleBar);
+    const std::string label = "Next: " + std::to_string(next->chapter + 1) + "." +
+                              std::to_string(next->level + 1) + "  " + e.name;
+    ImGui::BeginDisabled(!lock.open || !e.error.empty());
+    if (ImGui::Button(label.c_str())) {
+        if (!progress.lessonsSeen.count(ch.id)) {
+            choice.showLesson = next->chapter;
+            choice.lessonThenLevel = e.file;
+        } else {
+            choice.openLevel = e.file;
+        }
+    }
+    ImGui::EndDisabled();
+    if (!lock.open) ImGui::TextColored(kLocked, "locked: %s", lock.why.c_str());
+    ImGui::SameLine();
+    if (ImGui::Button("Levels (L)")) choice.levelSelect = true;
+    ImGui::End();
+    return choice;
+}
+
 MenuChoice lessonScreen(const game::Campaign& campaign, std::size_t chapter,
                         const std::string& thenLevel) {
     MenuChoice choice;

@@ -31,6 +31,12 @@ CampaignMenu campaignMenu(const std::string& folder, const std::vector<LevelEntr
 /// button is written into `choice` (openLevel, or showLesson with lessonThenLevel).
 void campaignTable(const CampaignMenu& menu, const game::Progress& progress, MenuChoice& choice);
 
+/// When a match of `levelFile` is over: a small card with the campaign's next level, its
+/// button (the lesson first when its chapter starts and was not read) or why it is locked.
+/// Draws nothing for a level outside the chapters or the last one.
+MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progress,
+                         const std::string& levelFile);
+
 /// One chapter's lesson and formula on a screen of its own. `thenLevel` is the level the
 /// player picked ("" when the lesson was opened on its own): the button plays it.
 MenuChoice lessonScreen(const game::Campaign& campaign, std::size_t chapter,

@@ -535,6 +535,8 @@ void GameScreen::drawPanels() {
             if (scene.fire && humanTurn()) submit(aim_.fire(m.cannon()));
             if (scene.reset) restart();
         }
+        if (m.over() && resultRecorded_ && !choice.openLevel)
+            choice = nextLevelCard(campaign_, progress_, level_.file);
         // Last: a rewind replaces the match `m` refers to.
         if (req.rewindTo && session_) rewindLive(*req.rewindTo);
     }
