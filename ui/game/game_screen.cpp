@@ -142,7 +142,8 @@ void GameScreen::loadProgress() {
     if (!warning.empty()) {
         std::cerr << "artillery: " << warning << "\n";
         stats_.status = warning;
-    } else if (game::adoptOlderResults(progress_, settings_.results)) {
+    }
+    if (game::adoptOlderResults(progress_, settings_.results)) {
         if (const std::string err = game::saveProgress(progressFile_, progress_); !err.empty())
             std::cerr << "artillery: progress not saved: " << err << "\n";
     }
