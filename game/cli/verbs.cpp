@@ -164,7 +164,10 @@ Exit codes: 0 ok, 2 bad input.
 Loads each level file and reports whether it is valid. An invalid file gets one
 message naming the file, the JSON path and what was expected, e.g.
   levels/bad.json: $.cannons[0].speed_mps: expected a number in [0, 60] m/s ...
-The level format is documented in levels/README.md.
+The level format is documented in levels/README.md. A file named campaign.json is
+the campaign (levels/campaign.json): its chapters are checked against the levels
+folder beside it (every level loads, every level file is in one chapter or outside),
+so `artillery check levels/*.json` checks the whole folder.
 
 Exit code: 0 when every file is valid, 1 when any is not, 2 on bad usage.
   --json   {"levels":[{"file":..,"ok":true,"name":..,"mode":..,"content_hash":..}

@@ -20,7 +20,9 @@ const fs::path kSource = ARTILLERY_SOURCE_DIR;
 TEST(Levels, EveryShippedLevelLoads) {
     int count = 0;
     for (const auto& entry : fs::directory_iterator(kSource / "levels")) {
-        if (entry.path().extension() != ".json") continue;
+        // campaign.json orders the levels into chapters (campaign_test.cpp); it is no level.
+        if (entry.path().extension() != ".json" || entry.path().filename() == "campaign.json")
+            continue;
         ++count;
         EXPECT_NO_THROW({
             const Level l = loadLevel(entry.path().string());

@@ -78,9 +78,10 @@ TEST(PlayerSettingsFiles, DrawTogglesRoundTripAndAreReadStrictly) {
     std::filesystem::remove_all(dir);
 }
 
-// The camera, shake and preview choices persist; a level's best result remembers whether
-// it was assisted (the level select says so), and an unassisted result as good clears it.
-TEST(PlayerSettingsFiles, CameraShakePreviewAndAssistedResultsRoundTrip) {
+// The camera, shake and preview choices persist. Level results moved to the progress
+// file (game/progress.h): an older file's are still read, to migrate them, but never
+// written back.
+TEST(PlayerSettingsFiles, CameraShakePreviewRoundTripAndOldResultsAreReadOnly) {
     const auto dir = std::filesystem::temp_directory_path() / "artillery-fx-settings-test";
     std::filesystem::remove_all(dir);
     const std::string file = (dir / "settings.json").string();
@@ -91,11 +92,7 @@ TEST(PlayerSettingsFiles, CameraShakePreviewAndAssistedResultsRoundTrip) {
     s.cameraFollow = false;
     s.screenShake = false;
     s.fullPreview = true;
-    EXPECT_TRUE(s.record("levels/05_castle.json", 300, 2, true, true));
-    EXPECT_TRUE(s.result("05_castle.json")->assisted);
-    EXPECT_TRUE(s.record("levels/01_earth_basics.json", 100, 1, true, true));
-    EXPECT_TRUE(s.record("levels/01_earth_basics.json", 90, 1, true, false));
-    EXPECT_FALSE(s.result("01_earth_basics.json")->assisted) << "as many stars without help";
+    s.results["05_castle.json"].stars = 2;
     ASSERT_EQ(ui::savePlayerSettings(file, s), "");
     std::string warning;
     const ui::PlayerSettings back = ui::loadPlayerSettings(file, warning);
@@ -103,13 +100,14 @@ TEST(PlayerSettingsFiles, CameraShakePreviewAndAssistedResultsRoundTrip) {
     EXPECT_FALSE(back.cameraFollow);
     EXPECT_FALSE(back.screenShake);
     EXPECT_TRUE(back.fullPreview);
-    ASSERT_NE(back.result("05_castle.json"), nullptr);
-    EXPECT_TRUE(back.result("05_castle.json")->assisted);
-    EXPECT_FALSE(back.result("01_earth_basics.json")->assisted);
-    // Three stars without help after two with it: no longer marked.
-    ui::PlayerSettings again = back;
-    again.record("levels/05_castle.json", 350, 3, true, false);
-    EXPECT_FALSE(again.result("05_castle.json")->assisted);
+    EXPECT_TRUE(back.results.empty()) << "results live in progress.json now";
+    const ui::PlayerSettings old = ui::parsePlayerSettings(
+        "old.json", R"({"format": 1, "levels": {"05_castle.json": {"best_score": 350,
+                       "stars": 3, "plays": 4, "won": true, "assisted": false}}})");
+    ASSERT_EQ(old.results.count("05_castle.json"), 1u);
+    EXPECT_EQ(old.results.at("05_castle.json").bestScore, 350);
+    EXPECT_EQ(old.results.at("05_castle.json").stars, 3);
+    EXPECT_EQ(old.results.at("05_castle.json").plays, 4);
     try {
         ui::parsePlayerSettings("s.json", R"({"format": 1, "camera_follow": "yes"})");
         ADD_FAILURE() << "accepted a string for a boolean";

@@ -1,4 +1,5 @@
 #include "ui/game/game_menus.h"
+#include "ui/game/campaign_view.h"
 #include "ui/game/weapon_look.h"
 
 #include "game/files/json_reader.h"
@@ -44,12 +45,6 @@ bool difficultyCombo(PlayerSettings& s) {
     return changed;
 }
 
-std::string starsText(int stars) {
-    std::string s;
-    for (int k = 0; k < 3; ++k) s += k < stars ? "*" : ".";
-    return s;
-}
-
 /// A full-screen menu: a fixed window in the middle with a gold heading and a dim line.
 void beginMenuWindow(const char* title, const char* heading, const char* subtitle) {
     centreNextWindow(760.0f);
@@ -68,7 +63,8 @@ std::vector<LevelEntry> listLevels(const std::string& folder) {
     std::vector<LevelEntry> out;
     std::error_code ec;
     for (const auto& f : std::filesystem::directory_iterator(folder, ec)) {
-        if (f.path().extension() != ".json") continue;
+        // The campaign (chapters of these levels) sits beside them; it is no level.
+        if (f.path().extension() != ".json" || f.path().filename() == "campaign.json") continue;
         LevelEntry e;
         e.file = f.path().string();
         try {
@@ -126,47 +122,15 @@ std::vector<ReplayEntry> listReplays(const std::string& folder) {
     return out;
 }
 
-MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettings& settings) {
+MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress& progress,
+                             PlayerSettings& settings) {
     MenuChoice choice;
     beginMenuWindow("Choose a level", "ARTILLERY", "a physics playground: every level shows one idea");
     ImGui::SameLine(ImGui::GetWindowWidth() - 120);
     if (ImGui::SmallButton("Network duel")) choice.networkDuel = true; // ui/net/net_screen.cpp
-    if (levels.empty()) ImGui::TextWrapped("No level files found (looked for levels/*.json).");
-    if (ImGui::BeginTable("levels", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH)) {
-        ImGui::TableSetupColumn("level", ImGuiTableColumnFlags_WidthFixed, 190.0f);
-        ImGui::TableSetupColumn("mode", ImGuiTableColumnFlags_WidthFixed, 70.0f);
-        ImGui::TableSetupColumn("lesson", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("best", ImGuiTableColumnFlags_WidthFixed, 150.0f);
-        ImGui::TableHeadersRow();
-        for (const LevelEntry& e : levels) {
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            ImGui::PushID(e.file.c_str());
-            ImGui::BeginDisabled(!e.error.empty());
-            if (ImGui::Selectable(e.name.c_str(), false, ImGuiSelectableFlags_SpanAllColumns))
-                choice.openLevel = e.file;
-            ImGui::EndDisabled();
-            ImGui::PopID();
-            ImGui::TableNextColumn();
-            ImGui::TextColored(kDimText, "%s", e.mode.c_str());
-            ImGui::TableNextColumn();
-            if (e.error.empty())
-                ImGui::TextWrapped("%s", e.lesson.c_str());
-            else
-                ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", e.error.c_str());
-            ImGui::TableNextColumn();
-            if (const LevelResult* r = settings.result(e.file)) {
-                if (e.mode == "duel")
-                    ImGui::TextColored(kGoldText, "%s", r->won ? "won" : "played");
-                else
-                    ImGui::TextColored(kGoldText, "%s %d%s", starsText(r->stars).c_str(), r->bestScore,
-                                       r->assisted ? " (assisted)" : "");
-            } else {
-                ImGui::TextColored(kDimText, "-");
-            }
-        }
-        ImGui::EndTable();
-    }
+    if (campaign.chapters.empty() && campaign.outside.empty())
+        ImGui::TextWrapped("No level files found (looked for levels/*.json).");
+    campaignTable(campaign, progress, choice);
     ImGui::Separator();
     ImGui::PushItemWidth(120);
     choice.settingsChanged |= difficultyCombo(settings);

@@ -1,10 +1,11 @@
-// The game's ImGui screens and overlays: level select, the recorded replays, pause menu,
-// help, and the side panel with the match controls (rewind included). Each is a function that draws
-// one frame of it and reports what the player chose (STYLE.md, "Dear ImGui"); the game screen acts
-// on it.
+// The game's ImGui screens and overlays: level select (the campaign's chapters, drawn by
+// ui/game/campaign_view.*), the recorded replays, pause menu, help, and the side panel with the
+// match controls (rewind included). Each is a function that draws one frame of it and reports what
+// the player chose (STYLE.md, "Dear ImGui"); the game screen acts on it.
 #pragma once
 
 #include "game/match.h"
+#include "game/progress.h"
 #include "ui/game/player_settings.h"
 #include "ui/play/physics_panel.h"
 
@@ -41,7 +42,7 @@ struct ReplayEntry {
 /// with its level to check it can be watched.
 std::vector<ReplayEntry> listReplays(const std::string& folder);
 
-enum class Overlay { None, LevelSelect, Replays, Pause };
+enum class Overlay { None, LevelSelect, Replays, Pause, Lesson };
 
 /// What the player picked in a menu this frame.
 struct MenuChoice {
@@ -55,9 +56,17 @@ struct MenuChoice {
     bool help = false;
     bool quit = false;
     bool settingsChanged = false; ///< difficulty, hotseat or toggles (persist them)
+    std::optional<std::size_t> showLesson; ///< a chapter's lesson screen (campaign index)
+    std::string lessonThenLevel;           ///< the level its Play button opens ("" = none)
+    std::optional<std::string> lessonSeen; ///< a chapter id whose lesson was read
 };
 
-MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettings& settings);
+struct CampaignMenu; // ui/game/campaign_view.h
+
+/// The level select screen: the campaign's chapters and the levels outside them, with the
+/// progress that unlocks them, and the buttons to the other screens.
+MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress& progress,
+                             PlayerSettings& settings);
 /// The replays in `folder` ("" when this run keeps none: check runs, headless).
 MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::string& folder);
 MenuChoice pauseMenu(PlayerSettings& settings);

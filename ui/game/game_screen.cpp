@@ -90,12 +90,14 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
             ImGui::LoadIniSettingsFromMemory(ini.data(), ini.size());
         }
     }
+    if (!def_.settingsFolder.empty() || !def_.progressFile.empty()) loadProgress();
     view_ = openingView(def_.view, settings_.draw);
     matchView_.followGhosts(view_.draw.ghosts);
     if (def_.difficulty) settings_.difficulty = *def_.difficulty;
     if (def_.hotseat) settings_.hotseat = *def_.hotseat;
     if (!def_.panel) settings_.physicsPanel = false;
     levels_ = listLevels(def_.levelsFolder);
+    campaign_ = campaignMenu(def_.levelsFolder, levels_);
     if (window_ && SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER) == 0) pad_.openFirst();
     if (!def_.replayFile.empty()) {
         openReplay(def_.replayFile); // throws with the loader's message
@@ -115,7 +117,42 @@ GameScreen::~GameScreen() {
     persist();
 }
 
+/// The progress file beside the settings. A damaged one is kept aside by the reader and
+/// the player is told once; results an older settings file kept move into it (saved
+/// before the settings, which no longer write them, are saved without them).
+void GameScreen::loadProgress() {
+    progressFile_ = !def_.progressFile.empty()
+                        ? def_.progressFile
+                        : (std::filesystem::path(def_.settingsFolder) / "progress.json").string();
+    std::error_code ec;
+    const bool existed = std::filesystem::exists(progressFile_, ec);
+    std::string warning;
+    if (def_.progressReadOnly) { // a check run: read, never move nor write
+        try {
+            if (existed)
+                progress_ = game::parseProgress(progressFile_, game::readFile(progressFile_));
+        } catch (const std::exception& e) {
+            warning = e.what();
+        }
+        if (!warning.empty()) std::cerr << "artillery: " << warning << "\n";
+        progressFile_.clear();
+        return;
+    }
+    progress_ = game::loadProgress(progressFile_, warning);
+    if (!warning.empty()) {
+        std::cerr << "artillery: " << warning << "\n";
+        stats_.status = warning;
+    }
+    if (game::adoptOlderResults(progress_, settings_.results)) {
+        if (const std::string err = game::saveProgress(progressFile_, progress_); !err.empty())
+            std::cerr << "artillery: progress not saved: " << err << "\n";
+    }
+}
+
 void GameScreen::persist() {
+    if (!progressFile_.empty())
+        if (const std::string err = game::saveProgress(progressFile_, progress_); !err.empty())
+            std::cerr << "artillery: progress not saved: " << err << "\n";
     if (settingsFile_.empty()) return;
     settings_.draw = drawChoices(view_);
     if (const std::string err = savePlayerSettings(settingsFile_, settings_); !err.empty())
@@ -265,7 +302,7 @@ void GameScreen::recordResultOnce() {
     resultRecorded_ = true;
     const bool humanWon = m.winner() >= 0 &&
                           m.cannons()[static_cast<std::size_t>(m.winner())].def.player != "cpu";
-    newBest_ = settings_.record(level_.file, m.score(), m.stars(), humanWon, m.assisted() != 0);
+    newBest_ = progress_.record(level_.file, m.score(), m.stars(), humanWon, m.assisted() != 0);
     persist();
 }
 
@@ -459,7 +496,10 @@ void GameScreen::drawPlaying() {
 
 void GameScreen::drawPanels() {
     MenuChoice choice;
-    if (overlay_ == Overlay::LevelSelect) choice = levelSelectScreen(levels_, settings_);
+    if (overlay_ == Overlay::LevelSelect)
+        choice = levelSelectScreen(campaign_, progress_, settings_);
+    if (overlay_ == Overlay::Lesson)
+        choice = lessonScreen(campaign_.campaign, lessonChapter_, lessonThenLevel_);
     if (overlay_ == Overlay::Replays) choice = replaysScreen(replays_, replaysFolder());
     if (overlay_ == Overlay::Pause) choice = pauseMenu(settings_);
     if (helpOpen_) helpOverlay(helpOpen_);
@@ -498,8 +538,16 @@ void GameScreen::drawPanels() {
             if (scene.fire && humanTurn()) submit(aim_.fire(m.cannon()));
             if (scene.reset) restart();
         }
+        if (m.over() && resultRecorded_ && !choice.openLevel)
+            choice = nextLevelCard(campaign_, progress_, level_.file);
         // Last: a rewind replaces the match `m` refers to.
         if (req.rewindTo && session_) rewindLive(*req.rewindTo);
+    }
+    if (choice.lessonSeen && progress_.lessonsSeen.insert(*choice.lessonSeen).second) persist();
+    if (choice.showLesson) {
+        lessonChapter_ = *choice.showLesson;
+        lessonThenLevel_ = choice.lessonThenLevel;
+        overlay_ = Overlay::Lesson;
     }
     if (choice.openLevel) openLevel(*choice.openLevel);
     if (choice.openReplay) {
@@ -604,7 +652,7 @@ bool GameScreen::keyDown(const SDL_Event& e) {
             helpOpen_ = false;
         else if (aim_.charging())
             aim_.cancelCharge();
-        else if (overlay_ == Overlay::Replays)
+        else if (overlay_ == Overlay::Replays || overlay_ == Overlay::Lesson)
             overlay_ = Overlay::LevelSelect;
         else if (overlay_ == Overlay::Pause || (overlay_ == Overlay::LevelSelect && shownMatch()))
             overlay_ = Overlay::None;

@@ -17,15 +17,17 @@
 
 #include "game/effects/camera_rig.h"
 #include "game/level.h"
+#include "game/progress.h"
 #include "game/session.h"
 #include "physics/clock.h"
 #include "ui/game/aim_input.h"
+#include "ui/game/campaign_view.h"
 #include "ui/game/game_menus.h"
 #include "ui/game/match_view.h"
 #include "ui/game/pad_input.h"
 #include "ui/game/player_settings.h"
-#include "ui/game/sandbox_tools.h"
 #include "ui/game/replay_view.h"
+#include "ui/game/sandbox_tools.h"
 #include "ui/game/stats_panel.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
@@ -52,6 +54,9 @@ struct GameScreenDef {
     bool panel = true;               ///< the ImGui physics panel
     /// Where results, choices and the ImGui layout persist ("" = nowhere: tests, headless).
     std::string settingsFolder;
+    /// The campaign progress file ("" = progress.json in settingsFolder, if any).
+    std::string progressFile;
+    bool progressReadOnly = false; ///< read it, never write it (check runs)
     /// Choices when nothing is stored (the command line overrides stored ones).
     std::optional<game::Difficulty> difficulty;
     std::optional<bool> hotseat;
@@ -120,6 +125,7 @@ class GameScreen final : public Screen {
     void drawPlaying();
     void drawPanels();
     void persist();
+    void loadProgress();
     phys::Vec2 pivotPixels() const;
     phys::Vec2 pointerPixels(int x, int y) const;
     bool keyDown(const SDL_Event& e);
@@ -136,6 +142,13 @@ class GameScreen final : public Screen {
     PlayerSettings settings_;
     std::string settingsFile_, iniFile_;
     std::vector<LevelEntry> levels_;
+    /// The levels in their chapters, and what the player has earned ("" file: not kept).
+    CampaignMenu campaign_;
+    game::Progress progress_;
+    std::string progressFile_;
+    /// The lesson on screen (Overlay::Lesson) and the level its Play button opens.
+    std::size_t lessonChapter_ = 0;
+    std::string lessonThenLevel_;
 
     game::Level level_;
     std::unique_ptr<game::Session> session_;

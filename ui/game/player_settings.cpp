@@ -18,33 +18,6 @@ namespace {
 /// More results than any levels folder holds: a hostile file cannot grow the map.
 constexpr std::size_t kMaxLevelResults = 10'000;
 
-
-std::string key(const std::string& levelFile) {
-    return std::filesystem::path(levelFile).filename().string();
-}
-
-} // namespace
-
-bool PlayerSettings::record(const std::string& levelFile, int score, int stars, bool won, bool assisted) {
-    LevelResult& r = results[key(levelFile)];
-    const bool better = r.plays == 0 || score > r.bestScore || stars > r.stars || (won && !r.won) ||
-                        (stars == r.stars && r.assisted && !assisted);
-    // Assisted while every result at the best star count so far was.
-    if (r.plays == 0 || stars > r.stars) r.assisted = assisted;
-    else if (stars == r.stars) r.assisted = r.assisted && assisted;
-    ++r.plays;
-    r.bestScore = std::max(r.bestScore, score);
-    r.stars = std::max(r.stars, stars);
-    r.won = r.won || won;
-    return better;
-}
-
-const LevelResult* PlayerSettings::result(const std::string& levelFile) const {
-    const auto it = results.find(key(levelFile));
-    return it == results.end() ? nullptr : &it->second;
-}
-
-namespace {
 /// The draw toggles by their names in the file, in the panel's order.
 std::array<std::pair<const char*, bool*>, 9> drawFlags(DrawChoices& d) {
     return {{{"trails", &d.trails},
@@ -88,6 +61,7 @@ PlayerSettings parsePlayerSettings(const std::string& file, const std::string& t
         for (auto& [name, flag] : drawFlags(s.draw)) *flag = draw->boolean(name, *flag);
         draw->finish();
     }
+    // Results moved to the progress file; an older file's are read to migrate them.
     if (const auto levels = root.find("levels")) {
         if (!levels->isObject()) levels->fail("expected an object of results by level file name");
         if (levels->json().size() > kMaxLevelResults)
@@ -135,12 +109,8 @@ std::string savePlayerSettings(const std::string& file, const PlayerSettings& s)
     j["screen_shake"] = s.screenShake;
     j["physics_panel"] = s.physicsPanel;
     DrawChoices draw = s.draw;
-    for (const auto& [name, flag] : drawFlags(draw)) j["draw"][name] = *flag;
-    nlohmann::json levels = nlohmann::json::object();
-    for (const auto& [name, r] : s.results)
-        levels[name] = {{"best_score", r.bestScore}, {"stars", r.stars}, {"plays", r.plays},
-                        {"won", r.won},           {"assisted", r.assisted}};
-    j["levels"] = levels;
+    for (const auto& [name, flag] : drawFlags(draw))
+        j["draw"][name] = *flag;
     try {
         std::filesystem::create_directories(std::filesystem::path(file).parent_path());
         game::writeFileAtomically(file, j.dump(2) + "\n");

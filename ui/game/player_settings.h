@@ -1,26 +1,19 @@
-// What the game remembers between runs: the best result of every level, the player's
-// choices (difficulty, hotseat, preview and hint toggles, what to draw) and the ImGui
-// layout. Kept in
+// What the game remembers between runs: the player's choices (difficulty, hotseat,
+// preview and hint toggles, what to draw) and the ImGui layout; the results of the levels
+// are the progress file beside it (game/progress.h). Kept in
 // $XDG_CONFIG_HOME/artillery (else ~/.config/artillery), written atomically (temp file
 // + rename) so a crash never leaves half a file.
 #pragma once
 
 #include "game/ai.h"
+#include "game/progress.h"
 
 #include <map>
 #include <string>
 
 namespace ui {
 
-struct LevelResult {
-    int bestScore = 0;
-    int stars = 0;      ///< 0..3
-    int plays = 0;      ///< matches finished
-    bool won = false;   ///< duel: beaten at least once
-    /// The best stars so far came only with a learning aid (full preview or hint) in
-    /// view, so they are at most two; the level select says so.
-    bool assisted = false;
-};
+using LevelResult = game::LevelResult;
 
 /// The Draw toggles as the player left them (the panel's view section: MatchView's trails,
 /// the labels, and the debug overlays of ui/render/world_view.h).
@@ -47,13 +40,9 @@ struct PlayerSettings {
     bool screenShake = true;       ///< blasts shake the view (off for comfort)
     bool physicsPanel = true;
     DrawChoices draw;
-    /// By level file name (not path), so results survive moving the folder.
+    /// The level results an older settings file kept (its "levels" object), by level file
+    /// name: read once to move them into the progress file, never written back.
     std::map<std::string, LevelResult> results;
-
-    /// Records a finished match; returns true when it beat the stored best (as many stars
-    /// without an aid as before with one counts).
-    bool record(const std::string& levelFile, int score, int stars, bool won, bool assisted = false);
-    const LevelResult* result(const std::string& levelFile) const;
 };
 
 /// The folder settings live in ("" when neither XDG_CONFIG_HOME nor HOME is set).

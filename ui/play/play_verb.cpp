@@ -32,14 +32,16 @@ constexpr const char* kPlayUsage =
                       [--size WxH] [--headless] [--context auto|osmesa|egl]
                       [--warmup SECONDS] [--msaa N] [--no-panel]
                       [--difficulty easy|normal|hard] [--hotseat] [--sandbox] [--demo]
+                      [--progress FILE]
                       [--velocities] [--forces] [--ghosts] [--contacts] [--cells]
                       [--sleeping] [--models] [--json]
 
-Plays LEVEL in a window; without LEVEL the level select screen opens (every level in
-levels/ with its lesson and your best result). Aim by dragging from the cannon
+Plays LEVEL in a window; without LEVEL the level select screen opens (the campaign:
+levels/ in chapters with their lessons, your stars, and what opens next; any level
+opens here as LEVEL, locked or not). Aim by dragging from the cannon
 (direction = angle, length = power) or with the arrow keys, hold Space to charge and
 release to fire, 1-8 pick the projectile. Every change you make, physics settings
-included, is a command the session records, so each game is a replay. Results, choices
+included, is a command the session records, so each game is a replay. Progress, choices
 and the panel layout are kept in $XDG_CONFIG_HOME/artillery (~/.config/artillery), the
 replays in its replays/ folder ("Replays" on the level select screen lists them).
 
@@ -126,6 +128,7 @@ struct PlayOptions {
     std::optional<game::Difficulty> difficulty;
     std::optional<bool> hotseat;
     bool sandbox = false;
+    std::string progress; ///< a progress file to use instead of the settings folder's
 };
 
 struct RunReport {
@@ -213,6 +216,9 @@ PlayOptions parseOptions(const Args& args) {
     o.sandbox = args.flag("sandbox");
     if (o.sandbox && (o.demo || !o.replay.empty()))
         args.fail("--sandbox opens a level: it cannot go with --demo or --replay");
+    o.progress = args.text("progress", "");
+    if (!o.progress.empty() && (o.demo || !o.replay.empty()))
+        args.fail("--progress is for the levels: it cannot go with --demo or --replay");
     args.rejectUnknown();
     return o;
 }
@@ -244,7 +250,8 @@ std::string levelsFolder() {
 /// The game for a level (or the level select screen in a window); the physics demo with
 /// --demo, or headless without a level.
 std::unique_ptr<Screen> makeScreen(GLContext& context, SdlWindow* window, const PlayOptions& o) {
-    const bool demo = o.demo || (o.level.empty() && o.replay.empty() && !window);
+    const bool demo =
+        o.demo || (o.level.empty() && o.replay.empty() && o.progress.empty() && !window);
     if (demo) return std::make_unique<PlayScreen>(context, window, screenDef(o));
     GameScreenDef d;
     d.levelFile = o.level;
@@ -259,6 +266,8 @@ std::unique_ptr<Screen> makeScreen(GLContext& context, SdlWindow* window, const 
     // A person playing keeps results and layout; check runs (--frames) and headless
     // pictures leave nothing behind.
     if (window && !o.frames) d.settingsFolder = configFolder();
+    d.progressFile = o.progress;
+    d.progressReadOnly = o.frames.has_value();
     return std::make_unique<GameScreen>(context, window, d);
 }
 

@@ -1,0 +1,190 @@
+#include "game/campaign.h"
+
+#include "game/files/json_reader.h"
+#include "game/level.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+
+namespace game {
+
+namespace {
+
+constexpr std::size_t kMaxChapters = 64;
+constexpr std::size_t kMaxLevelsPerChapter = 64;
+constexpr std::size_t kMaxLessonCharacters = 2000;
+constexpr int kStarsPerLevel = 3;
+/// The campaign's own file name: the levels folder lists it beside the levels.
+constexpr const char* kCampaignFileName = "campaign.json";
+
+/// A level file name: "NN_name.json", no folder (the campaign lives beside its levels).
+std::string levelFileName(const Node& n) {
+    const std::string name = n.string(120);
+    const std::filesystem::path p(name);
+    if (name.empty() || p.filename().string() != name || p.extension() != ".json" ||
+        name == kCampaignFileName)
+        n.fail("expected a level file name in the levels folder (like \"01_earth_basics.json\"), "
+               "got \"" +
+               printable(name) + "\"");
+    return name;
+}
+
+Chapter parseChapter(const Node& n) {
+    if (!n.isObject())
+        n.fail("expected a chapter object with id, title, lesson, formula and levels");
+    Chapter c;
+    c.id = n.at("id").string(40);
+    if (c.id.empty()) n.at("id").fail("expected a non-empty id");
+    c.title = n.at("title").string(80);
+    c.lesson = n.at("lesson").string(kMaxLessonCharacters);
+    c.formula = n.at("formula").string(200);
+    c.starsToOpen = static_cast<int>(n.integer("stars_to_open", 0, 0, 1000));
+    for (const Node& level : n.at("levels").elements(kMaxLevelsPerChapter, 1))
+        c.levels.push_back(levelFileName(level));
+    n.finish();
+    return c;
+}
+
+} // namespace
+
+Campaign parseCampaign(const std::string& file, const std::string& text) {
+    const nlohmann::json doc = parseJson(file, text);
+    const Node root(doc, file);
+    if (!root.isObject()) root.fail("expected an object with format, chapters and outside");
+    root.integer("format", 1, 1, 1);
+    Campaign c;
+    c.file = file;
+    // Where each level file was first named, so a second mention can point at both.
+    std::map<std::string, std::string> namedAt;
+    auto once = [&](const std::string& name, const std::string& path, const Node& n) {
+        const auto [it, fresh] = namedAt.emplace(name, path);
+        if (!fresh) n.fail("\"" + name + "\" is already listed at " + it->second);
+    };
+    std::map<std::string, std::string> ids;
+    const std::vector<Node> chapters = root.at("chapters").elements(kMaxChapters, 1);
+    for (const Node& n : chapters) {
+        Chapter ch = parseChapter(n);
+        if (const auto [it, fresh] = ids.emplace(ch.id, n.path()); !fresh)
+            n.at("id").fail("chapter id \"" + ch.id + "\" is already used at " + it->second);
+        const std::vector<Node> levels = n.at("levels").elements(kMaxLevelsPerChapter, 1);
+        for (std::size_t i = 0; i < ch.levels.size(); ++i)
+            once(ch.levels[i], levels[i].path(), levels[i]);
+        c.chapters.push_back(std::move(ch));
+    }
+    if (c.chapters.front().starsToOpen != 0)
+        chapters.front().at("stars_to_open").fail("expected 0: the first chapter is always open");
+    if (const auto outside = root.find("outside"))
+        for (const Node& n : outside->elements(kMaxLevelsPerChapter)) {
+            c.outside.push_back(levelFileName(n));
+            once(c.outside.back(), n.path(), n);
+        }
+    root.finish();
+    return c;
+}
+
+Campaign loadCampaign(const std::string& file) {
+    return parseCampaign(file, readFile(file));
+}
+
+std::vector<std::string> campaignProblems(const Campaign& campaign,
+                                          const std::string& levelsFolder) {
+    namespace fs = std::filesystem;
+    std::vector<std::string> problems;
+    std::map<std::string, bool> listed;
+    for (std::size_t c = 0; c < campaign.chapters.size(); ++c) {
+        const Chapter& ch = campaign.chapters[c];
+        const std::string at = "$.chapters[" + std::to_string(c) + "]";
+        int practiceLevels = 0;
+        for (std::size_t l = 0; l < ch.levels.size(); ++l) {
+            listed[ch.levels[l]] = true;
+            const std::string where =
+                campaign.file + ": " + at + ".levels[" + std::to_string(l) + "]: ";
+            try {
+                const Level level = loadLevel((fs::path(levelsFolder) / ch.levels[l]).string());
+                if (level.mode == Mode::Sandbox)
+                    problems.push_back(where + "a sandbox has no result to unlock the next level; "
+                                               "list it in \"outside\"");
+                if (level.mode == Mode::Practice) ++practiceLevels;
+            } catch (const std::exception& e) {
+                problems.push_back(where + "the level does not load: " + e.what());
+            }
+        }
+        if (c + 1 < campaign.chapters.size() &&
+            campaign.chapters[c + 1].starsToOpen > kStarsPerLevel * practiceLevels)
+            problems.push_back(campaign.file + ": $.chapters[" + std::to_string(c + 1) +
+                               "].stars_to_open: expected at most " +
+                               std::to_string(kStarsPerLevel * practiceLevels) +
+                               " (3 stars for each "
+                               "practice level of \"" +
+                               ch.title + "\"), got " +
+                               std::to_string(campaign.chapters[c + 1].starsToOpen));
+    }
+    for (std::size_t i = 0; i < campaign.outside.size(); ++i) {
+        listed[campaign.outside[i]] = true;
+        if (!fs::exists(fs::path(levelsFolder) / campaign.outside[i]))
+            problems.push_back(campaign.file + ": $.outside[" + std::to_string(i) +
+                               "]: no such level file in " + levelsFolder);
+    }
+    std::vector<std::string> files;
+    std::error_code ec;
+    for (const auto& f : fs::directory_iterator(levelsFolder, ec))
+        if (f.path().extension() == ".json" && f.path().filename() != kCampaignFileName)
+            files.push_back(f.path().filename().string());
+    std::sort(files.begin(), files.end());
+    for (const std::string& f : files)
+        if (!listed.count(f))
+            problems.push_back(campaign.file + ": $.chapters: the level " + f +
+                               " is in no chapter (add it to one, or to \"outside\")");
+    return problems;
+}
+
+std::optional<LevelPlace> findLevel(const Campaign& campaign, const std::string& levelFile) {
+    const std::string name = std::filesystem::path(levelFile).filename().string();
+    for (std::size_t c = 0; c < campaign.chapters.size(); ++c)
+        for (std::size_t l = 0; l < campaign.chapters[c].levels.size(); ++l)
+            if (campaign.chapters[c].levels[l] == name) return LevelPlace{c, l};
+    return std::nullopt;
+}
+
+std::optional<LevelPlace> nextLevel(const Campaign& campaign, const std::string& levelFile) {
+    const auto at = findLevel(campaign, levelFile);
+    if (!at) return std::nullopt;
+    if (at->level + 1 < campaign.chapters[at->chapter].levels.size())
+        return LevelPlace{at->chapter, at->level + 1};
+    if (at->chapter + 1 < campaign.chapters.size()) return LevelPlace{at->chapter + 1, 0};
+    return std::nullopt;
+}
+
+bool cleared(const Progress& progress, const std::string& levelFile) {
+    const LevelResult* r = progress.result(levelFile);
+    return r && (r->stars >= 1 || r->won);
+}
+
+int chapterStars(const Chapter& chapter, const Progress& progress) {
+    int stars = 0;
+    for (const std::string& level : chapter.levels)
+        if (const LevelResult* r = progress.result(level)) stars += r->stars;
+    return stars;
+}
+
+Lock chapterLock(const Campaign& campaign, std::size_t chapter, const Progress& progress) {
+    if (chapter == 0) return {};
+    const int missing = campaign.chapters[chapter].starsToOpen -
+                        chapterStars(campaign.chapters[chapter - 1], progress);
+    if (missing <= 0) return {};
+    return {false, std::to_string(missing) + " more star" + (missing == 1 ? "" : "s") +
+                       " in Chapter " + std::to_string(chapter)};
+}
+
+Lock levelLock(const Campaign& campaign, std::size_t chapter, std::size_t level,
+               const Progress& progress) {
+    if (Lock l = chapterLock(campaign, chapter, progress); !l.open) return l;
+    if (level == 0) return {};
+    const std::string& before = campaign.chapters[chapter].levels[level - 1];
+    if (cleared(progress, before)) return {};
+    return {false, "clear " + std::to_string(chapter + 1) + "." + std::to_string(level) +
+                       " first (one star, or win the duel)"};
+}
+
+} // namespace game

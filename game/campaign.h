@@ -1,0 +1,73 @@
+// The campaign: the shipped levels in chapters that follow the lecture notes, each
+// chapter opening with a one-screen lesson and its formula. Read from levels/campaign.json
+// (format in levels/README.md) strictly: every error names the file, the JSON path and
+// what was expected, and a campaign is loaded whole or not at all.
+//
+// Unlocking, as a player of Angry Birds expects: inside a chapter, level k+1 opens once
+// level k is cleared (one star, or a won duel); a chapter opens once the chapter before
+// it has earned `starsToOpen` stars in all, and then its first level is open.
+#pragma once
+
+#include "game/progress.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace game {
+
+struct Chapter {
+    std::string id;      ///< short name, unique in the campaign ("drag")
+    std::string title;   ///< shown as the chapter's heading
+    std::string lesson;  ///< the one-screen lesson shown before its first level
+    std::string formula; ///< the formula the lesson is about, as plain text
+    /// Stars the previous chapter must have earned for this one to open (0 for the first).
+    int starsToOpen = 0;
+    std::vector<std::string> levels; ///< level file names in the levels folder, in order
+};
+
+struct Campaign {
+    std::string file;
+    std::vector<Chapter> chapters;
+    /// Shipped levels deliberately outside every chapter (the sandbox), always open.
+    std::vector<std::string> outside;
+};
+
+/// Parses a campaign strictly; throws LoadError (file, JSON path, what was expected).
+Campaign parseCampaign(const std::string& file, const std::string& text);
+Campaign loadCampaign(const std::string& file);
+
+/// What is wrong with a campaign against the levels folder beside it: a chapter's level
+/// that does not exist or does not load, a *.json in the folder that is in no chapter and
+/// not listed as outside, a chapter asking for more stars than the one before it can give.
+/// One message per problem, each naming the file and the JSON path; empty when sound.
+std::vector<std::string> campaignProblems(const Campaign& campaign,
+                                          const std::string& levelsFolder);
+
+/// Where a level is in the campaign: chapter and level index.
+struct LevelPlace {
+    std::size_t chapter = 0, level = 0;
+    bool operator==(const LevelPlace&) const = default;
+};
+/// The level file's place (matched by file name), if it is in a chapter.
+std::optional<LevelPlace> findLevel(const Campaign& campaign, const std::string& levelFile);
+/// The level after it in play order (the next chapter's first after a chapter's last);
+/// none after the last level or for a level outside the chapters.
+std::optional<LevelPlace> nextLevel(const Campaign& campaign, const std::string& levelFile);
+
+/// Stars earned in a chapter (duels earn none).
+int chapterStars(const Chapter& chapter, const Progress& progress);
+/// A level counts as cleared with at least one star, or a duel once won.
+bool cleared(const Progress& progress, const std::string& levelFile);
+
+/// Whether something is open, and if not, what the player must do ("" when open).
+struct Lock {
+    bool open = true;
+    std::string why;
+};
+Lock chapterLock(const Campaign& campaign, std::size_t chapter, const Progress& progress);
+Lock levelLock(const Campaign& campaign, std::size_t chapter, std::size_t level,
+               const Progress& progress);
+
+} // namespace game

@@ -1,0 +1,161 @@
+// The campaign: the shipped levels/campaign.json loads and is sound against the levels
+// folder (every level exists and loads, every shipped level is in exactly one chapter or
+// listed outside); bad files are refused naming the file and the JSON path; the unlock
+// rules (level k+1 after one star on level k, a chapter after N stars in the one before).
+#include "game/campaign.h"
+#include "game/files/json_reader.h"
+#include "game/level.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+using namespace game;
+
+namespace {
+const fs::path kSource = ARTILLERY_SOURCE_DIR;
+
+std::string refusal(const std::string& text) {
+    try {
+        parseCampaign("c.json", text);
+    } catch (const LoadError& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+/// Two chapters of two levels; the second opens with 4 stars in the first.
+Campaign twoChapters() {
+    return parseCampaign("c.json", R"({"format": 1, "chapters": [
+        {"id": "a", "title": "First", "lesson": "l", "formula": "f", "levels": ["1.json", "2.json"]},
+        {"id": "b", "title": "Second", "lesson": "l", "formula": "f", "stars_to_open": 4,
+         "levels": ["3.json", "4.json"]}], "outside": ["sandbox.json"]})");
+}
+} // namespace
+
+TEST(Campaign, ShippedCampaignIsSound) {
+    const Campaign c = loadCampaign((kSource / "levels/campaign.json").string());
+    EXPECT_EQ(c.chapters.size(), 8u);
+    std::size_t levels = 0;
+    for (const Chapter& ch : c.chapters) {
+        EXPECT_GE(ch.levels.size(), 3u) << ch.id;
+        EXPECT_LE(ch.levels.size(), 5u) << ch.id;
+        EXPECT_FALSE(ch.lesson.empty()) << ch.id;
+        EXPECT_FALSE(ch.formula.empty()) << ch.id;
+        levels += ch.levels.size();
+    }
+    EXPECT_GE(levels, 30u) << "the campaign has at least thirty levels";
+    const std::vector<std::string> problems = campaignProblems(c, (kSource / "levels").string());
+    for (const std::string& p : problems)
+        ADD_FAILURE() << p;
+    // The chapters follow the lecture notes in order.
+    const char* order[] = {"flight",  "worlds", "drag",      "bounce",
+                           "springs", "rigid",  "stability", "finals"};
+    for (std::size_t i = 0; i < c.chapters.size() && i < std::size(order); ++i)
+        EXPECT_EQ(c.chapters[i].id, order[i]);
+}
+
+TEST(Campaign, EveryChapterLevelTeachesOneIdea) {
+    const Campaign c = loadCampaign((kSource / "levels/campaign.json").string());
+    for (const Chapter& ch : c.chapters)
+        for (const std::string& file : ch.levels) {
+            const Level l = loadLevel((kSource / "levels" / file).string());
+            EXPECT_FALSE(l.lesson.empty()) << file;
+            EXPECT_LE(l.lesson.size(), 200u) << file << ": a lesson is one line";
+        }
+}
+
+TEST(Campaign, ProblemsNameTheFileAndPath) {
+    const fs::path dir = fs::temp_directory_path() / "artillery-campaign-test";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    fs::copy_file(kSource / "levels/01_earth_basics.json", dir / "01_earth_basics.json");
+    fs::copy_file(kSource / "levels/02_moon.json", dir / "02_moon.json");
+    fs::copy_file(kSource / "levels/11_sandbox.json", dir / "11_sandbox.json");
+    const Campaign c = parseCampaign("c.json", R"({"format": 1, "chapters": [
+        {"id": "a", "title": "A", "lesson": "l", "formula": "f",
+         "levels": ["01_earth_basics.json", "99_missing.json"]},
+        {"id": "b", "title": "B", "lesson": "l", "formula": "f", "stars_to_open": 7,
+         "levels": ["11_sandbox.json"]}]})");
+    const std::vector<std::string> p = campaignProblems(c, dir.string());
+    ASSERT_EQ(p.size(), 4u);
+    EXPECT_NE(p[0].find("c.json: $.chapters[0].levels[1]: the level does not load"),
+              std::string::npos)
+        << p[0];
+    EXPECT_NE(p[1].find("c.json: $.chapters[1].stars_to_open: expected at most 3"),
+              std::string::npos)
+        << p[1];
+    EXPECT_NE(p[2].find("$.chapters[1].levels[0]: a sandbox"), std::string::npos) << p[2];
+    EXPECT_NE(p[3].find("the level 02_moon.json is in no chapter"), std::string::npos) << p[3];
+    fs::remove_all(dir);
+}
+
+TEST(Campaign, BadFilesAreRefusedWithThePath) {
+    EXPECT_NE(refusal(R"({"format": 2, "chapters": []})").find("c.json: $.format"),
+              std::string::npos);
+    EXPECT_NE(refusal(R"({"format": 1, "chapters": []})")
+                  .find("$.chapters: expected at least 1 element(s)"),
+              std::string::npos);
+    const std::string chapter =
+        R"({"id": "a", "title": "A", "lesson": "l", "formula": "f", "levels": ["1.json"]})";
+    EXPECT_NE(refusal(R"({"format": 1, "chapters": [)" + chapter + "," + chapter + "]}")
+                  .find("$.chapters[1].id: chapter id \"a\" is already used at $.chapters[0]"),
+              std::string::npos)
+        << refusal(R"({"format": 1, "chapters": [)" + chapter + "," + chapter + "]}");
+    EXPECT_NE(refusal(R"({"format": 1, "chapters": [)" + chapter + R"(], "outside": ["1.json"]})")
+                  .find("$.outside[0]: \"1.json\" is already listed at $.chapters[0].levels[0]"),
+              std::string::npos);
+    EXPECT_NE(refusal(R"({"format": 1, "chapters": [{"id": "a", "title": "A", "lesson": "l",
+              "formula": "f", "levels": ["../x.json"]}]})")
+                  .find("$.chapters[0].levels[0]: expected a level file name"),
+              std::string::npos);
+    EXPECT_NE(refusal(R"({"format": 1, "chapters": [{"id": "a", "title": "A", "lesson": "l",
+              "formula": "f", "levels": ["1.json"], "stars": 3}]})")
+                  .find("$.chapters[0]"),
+              std::string::npos);
+    EXPECT_NE(refusal(R"({"format": 1, "chapters": [{"id": "a", "title": "A", "lesson": "l",
+              "formula": "f", "stars_to_open": 2, "levels": ["1.json"]}]})")
+                  .find("$.chapters[0].stars_to_open: expected 0"),
+              std::string::npos);
+    EXPECT_NE(refusal(R"({"format": 1, "chapters": [{"id": "a", "title": "A",
+              "formula": "f", "levels": ["1.json"]}]})")
+                  .find("$.chapters[0]: missing field \"lesson\""),
+              std::string::npos);
+}
+
+TEST(Campaign, LevelsOpenOneAfterAnotherAndChaptersByStars) {
+    const Campaign c = twoChapters();
+    Progress p;
+    EXPECT_TRUE(levelLock(c, 0, 0, p).open) << "the first level is always open";
+    EXPECT_FALSE(levelLock(c, 0, 1, p).open);
+    EXPECT_EQ(levelLock(c, 0, 1, p).why, "clear 1.1 first (one star, or win the duel)");
+    EXPECT_EQ(chapterLock(c, 1, p).why, "4 more stars in Chapter 1");
+    p.record("1.json", 100, 0, false); // played, no star: not cleared
+    EXPECT_FALSE(levelLock(c, 0, 1, p).open);
+    p.record("levels/1.json", 200, 3, false);
+    EXPECT_TRUE(levelLock(c, 0, 1, p).open);
+    EXPECT_EQ(chapterLock(c, 1, p).why, "1 more star in Chapter 1");
+    EXPECT_FALSE(levelLock(c, 1, 0, p).open);
+    EXPECT_EQ(levelLock(c, 1, 0, p).why, "1 more star in Chapter 1")
+        << "a locked chapter's levels say what opens it";
+    p.record("2.json", 100, 1, false);
+    EXPECT_EQ(chapterStars(c.chapters[0], p), 4);
+    EXPECT_TRUE(chapterLock(c, 1, p).open);
+    EXPECT_TRUE(levelLock(c, 1, 0, p).open);
+    EXPECT_FALSE(levelLock(c, 1, 1, p).open);
+    p.record("3.json", 0, 0, true); // a duel won clears its level
+    EXPECT_TRUE(levelLock(c, 1, 1, p).open);
+}
+
+TEST(Campaign, NextLevelGoesOnAcrossChapters) {
+    const Campaign c = twoChapters();
+    EXPECT_EQ(findLevel(c, "levels/2.json"), (LevelPlace{0, 1}));
+    EXPECT_EQ(nextLevel(c, "1.json"), (LevelPlace{0, 1}));
+    EXPECT_EQ(nextLevel(c, "some/folder/2.json"), (LevelPlace{1, 0})) << "into the next chapter";
+    EXPECT_EQ(nextLevel(c, "3.json"), (LevelPlace{1, 1}));
+    EXPECT_FALSE(nextLevel(c, "4.json")) << "the last level";
+    EXPECT_FALSE(nextLevel(c, "sandbox.json")) << "outside the chapters";
+    EXPECT_FALSE(findLevel(c, "5.json"));
+}

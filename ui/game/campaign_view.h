@@ -1,0 +1,45 @@
+// The campaign on the level select screen: each chapter's heading with its lesson button
+// and stars, its levels with the stars earned (greyed with the reason while locked), and
+// the one-screen lesson shown before a chapter's first level. What opens is decided by
+// game/campaign.h; this file only draws it and reports the player's choice.
+#pragma once
+
+#include "game/campaign.h"
+#include "game/progress.h"
+#include "ui/game/game_menus.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace ui {
+
+/// The levels folder as the select screen shows it: the campaign's chapters with their
+/// level entries, and the levels outside every chapter (all of them when the folder has
+/// no campaign.json).
+struct CampaignMenu {
+    game::Campaign campaign;
+    std::vector<std::vector<LevelEntry>> chapters; ///< entries of each chapter, in order
+    std::vector<LevelEntry> outside;               ///< the sandbox, and unlisted files
+    std::string error; ///< why campaign.json did not load ("" when it did or is absent)
+};
+
+/// Sorts `levels` (listLevels of `folder`) into the chapters of `folder`/campaign.json.
+CampaignMenu campaignMenu(const std::string& folder, const std::vector<LevelEntry>& levels);
+
+/// The chapters and their levels as table rows; a click on an open level or a lesson
+/// button is written into `choice` (openLevel, or showLesson with lessonThenLevel).
+void campaignTable(const CampaignMenu& menu, const game::Progress& progress, MenuChoice& choice);
+
+/// When a match of `levelFile` is over: a small card with the campaign's next level, its
+/// button (the lesson first when its chapter starts and was not read) or why it is locked.
+/// Draws nothing for a level outside the chapters or the last one.
+MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progress,
+                         const std::string& levelFile);
+
+/// One chapter's lesson and formula on a screen of its own. `thenLevel` is the level the
+/// player picked ("" when the lesson was opened on its own): the button plays it.
+MenuChoice lessonScreen(const game::Campaign& campaign, std::size_t chapter,
+                        const std::string& thenLevel);
+
+} // namespace ui
