@@ -43,9 +43,23 @@ std::vector<ReplayEntry> listReplays(const std::string& folder);
 
 enum class Overlay { None, LevelSelect, Replays, Pause };
 
+/// The level select's Random map row: the seed (typed to play a shared map, or drawn
+/// anew) and practice or duel; the difficulty is the computer's.
+struct RandomMapForm {
+    char seed[24] = "1";
+    bool duel = false;
+    std::string status; ///< what the last Generate did
+};
+
+/// A map to generate and play at once.
+struct RandomMapRequest {
+    std::uint64_t seed = 1;
+    bool duel = false;
+};
+
 /// What the player picked in a menu this frame.
 struct MenuChoice {
-    std::optional<std::string> openLevel; ///< a level file to play
+    std::optional<std::string> openLevel;  ///< a level file to play
     std::optional<std::string> openReplay; ///< a replay file to watch
     bool replays = false;                  ///< show the recorded replays
     bool networkDuel = false;              ///< leave for the network duel screen (ui/net)
@@ -54,10 +68,13 @@ struct MenuChoice {
     bool levelSelect = false;
     bool help = false;
     bool quit = false;
-    bool settingsChanged = false; ///< difficulty, hotseat or toggles (persist them)
+    bool settingsChanged = false;              ///< difficulty, hotseat or toggles (persist them)
+    std::optional<RandomMapRequest> randomMap; ///< generate this map and play it
 };
 
-MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettings& settings);
+/// The level list; with `randomMap`, also its Random map row.
+MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettings& settings,
+                             RandomMapForm* randomMap = nullptr);
 /// The replays in `folder` ("" when this run keeps none: check runs, headless).
 MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::string& folder);
 MenuChoice pauseMenu(PlayerSettings& settings);

@@ -12,6 +12,7 @@
 #include "ui/game/match_frame.h"
 #include "ui/game/target_inset.h"
 #include "ui/game/settings_commands.h"
+#include "ui/game/random_map.h"
 #include "ui/platform/sdl_window.h"
 #include "ui/render/gl.h"
 
@@ -459,7 +460,7 @@ void GameScreen::drawPlaying() {
 
 void GameScreen::drawPanels() {
     MenuChoice choice;
-    if (overlay_ == Overlay::LevelSelect) choice = levelSelectScreen(levels_, settings_);
+    if (overlay_ == Overlay::LevelSelect) choice = levelSelectScreen(levels_, settings_, &randomMap_);
     if (overlay_ == Overlay::Replays) choice = replaysScreen(replays_, replaysFolder());
     if (overlay_ == Overlay::Pause) choice = pauseMenu(settings_);
     if (helpOpen_) helpOverlay(helpOpen_);
@@ -500,6 +501,10 @@ void GameScreen::drawPanels() {
         if (req.rewindTo && session_) rewindLive(*req.rewindTo);
     }
     if (choice.openLevel) openLevel(*choice.openLevel);
+    if (choice.randomMap)
+        if (const auto file = writeRandomMap(*choice.randomMap, settings_.difficulty,
+                                             randomMapsFolder(def_.settingsFolder), randomMap_.status))
+            openLevel(*file);
     if (choice.openReplay) {
         try {
             openReplay(*choice.openReplay);
