@@ -28,32 +28,56 @@ double cm(double x) {
 
 /// What each difficulty asks of the player.
 struct Recipe {
-    double worldWidth;  ///< m
-    double worldHeight; ///< m, above y = 0
-    double baseHeight;  ///< mean ground height, m
-    double relief;      ///< ground height varies by up to +- this, m
-    double hill;        ///< a hill this high in the middle of the map, m
-    double windMax;     ///< wind drawn per turn in [-windMax, windMax], m/s
-    int targets;        ///< practice: round targets
-    int towers;         ///< block towers (practice: with a target block on top)
-    int towerBlocks;    ///< blocks under the top one
-    bool blob;          ///< practice: a soft blob to knock over
-    bool rope;          ///< a rope hung between two posts, in the way
+    double worldWidth = 220.0;  ///< m
+    double worldHeight = 120.0; ///< m, above y = 0
+    double baseHeight = 8.0;    ///< mean ground height, m
+    double relief = 8.0;        ///< ground height varies by up to +- this, m
+    double hill = 0.0;          ///< a hill this high in the middle of the map, m
+    double windMax = 0.0;       ///< wind drawn per turn in [-windMax, windMax], m/s
+    int targets = 2;            ///< practice: round targets
+    int towers = 0;             ///< block towers (practice: with a target block on top)
+    int towerBlocks = 0;        ///< blocks under the top one
+    bool blob = false;          ///< practice: a soft blob to knock over
+    bool rope = false;          ///< a rope hung between two posts, in the way
+};
+
+// Easy, normal, hard.
+constexpr Recipe kPractice[] = {
+    {.relief = 8.0},
+    {.relief = 14.0, .windMax = 3.0, .towers = 1, .towerBlocks = 2},
+    {.relief = 20.0, .windMax = 6.0, .towers = 1, .towerBlocks = 3, .blob = true},
+};
+constexpr Recipe kDuel[] = {
+    {.worldWidth = 320.0,
+     .worldHeight = 160.0,
+     .baseHeight = 12.0,
+     .relief = 10.0,
+     .windMax = 2.0,
+     .targets = 0},
+    {.worldWidth = 320.0,
+     .worldHeight = 160.0,
+     .baseHeight = 12.0,
+     .relief = 16.0,
+     .hill = 12.0,
+     .windMax = 5.0,
+     .targets = 0,
+     .towers = 1,
+     .towerBlocks = 2},
+    {.worldWidth = 320.0,
+     .worldHeight = 160.0,
+     .baseHeight = 12.0,
+     .relief = 22.0,
+     .hill = 24.0,
+     .windMax = 8.0,
+     .targets = 0,
+     .towers = 2,
+     .towerBlocks = 3,
+     .rope = true},
 };
 
 Recipe recipe(Mode mode, Difficulty d) {
-    const int i = static_cast<int>(d);
-    if (mode == Mode::Duel) {
-        const double relief[] = {10.0, 16.0, 22.0}, hill[] = {0.0, 12.0, 24.0},
-                     wind[] = {2.0, 5.0, 8.0};
-        const int towers[] = {0, 1, 2}, blocks[] = {0, 2, 3};
-        return {320.0, 160.0,     12.0,      relief[i], hill[i], wind[i],
-                0,     towers[i], blocks[i], false,     i == 2};
-    }
-    const double relief[] = {8.0, 14.0, 20.0}, wind[] = {0.0, 3.0, 6.0};
-    const int targets[] = {2, 2, 2}, towers[] = {0, 1, 1}, blocks[] = {0, 2, 3};
-    return {220.0,      120.0,     8.0,       relief[i], 0.0,  wind[i],
-            targets[i], towers[i], blocks[i], i == 2,    false};
+    const auto i = static_cast<std::size_t>(d);
+    return mode == Mode::Duel ? kDuel[i] : kPractice[i];
 }
 
 /// The ground as samples every kSpacing metres, with flattened pads.
