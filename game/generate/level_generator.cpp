@@ -139,8 +139,8 @@ void addTower(Level& l, double x, double h, int count, bool targetOnTop) {
         Block b;
         b.position = {x, cm(y + 0.5 * size.y)};
         b.size = size;
-        b.material = "stone";
-        b.density = 2400.0;
+        b.material = "wood";
+        b.density = 600.0;
         l.blocks.push_back(b);
         y += size.y;
     }

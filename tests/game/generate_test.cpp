@@ -82,9 +82,9 @@ TEST(Generate, SameSeedSameBytesPinned) {
     };
     const Pin pins[] = {
         {1, Mode::Practice, Difficulty::Easy, "dfa66505aff8e6fd"},
-        {42, Mode::Practice, Difficulty::Hard, "dab927602b62ba67"},
-        {1, Mode::Duel, Difficulty::Normal, "53b14ea70f4f0b4e"},
-        {9007199254740993ull, Mode::Duel, Difficulty::Hard, "2d9893958906e750"},
+        {42, Mode::Practice, Difficulty::Hard, "3021b06cba25e97d"},
+        {1, Mode::Duel, Difficulty::Normal, "58d3a6a9581a982a"},
+        {9007199254740993ull, Mode::Duel, Difficulty::Hard, "4abf77cc19a7f7c4"},
     };
     for (const Pin& p : pins) {
         const Level a = candidateLevel(def(p.seed, p.mode, p.difficulty), 0);
