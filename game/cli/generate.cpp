@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <ostream>
 
 namespace game::cli {
@@ -47,6 +48,11 @@ int runGenerate(const Args& args, std::ostream& out) {
     def.difficulty = *d;
     const std::string file = outputFile(args);
     args.rejectUnknown();
+    // Before the solver's games: a folder that is not there fails at once.
+    const std::filesystem::path folder = std::filesystem::path(file).parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder))
+        throw UsageError("artillery generate: " + file + ": the folder " + folder.string() +
+                         " does not exist");
 
     const generate::Generated g = generate::generateLevel(def);
     if (g.playable) {

@@ -8,6 +8,7 @@
 #include "game/generate/noise.h"
 #include "game/generate/seeded_random.h"
 #include "game/level_write.h"
+#include "game/terrain.h"
 
 #include <gtest/gtest.h>
 
