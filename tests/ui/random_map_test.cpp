@@ -33,7 +33,8 @@ TEST(RandomMap, WritesTheGeneratedMapIntoThePlayersFolder) {
 
 TEST(RandomMap, AnUnwritableFolderSaysWhy) {
     std::string status;
-    const auto file = ui::writeRandomMap({3, true}, game::Difficulty::Easy, "/proc/no/maps", status);
+    const auto file =
+        ui::writeRandomMap({3, true}, game::Difficulty::Easy, "/proc/no/maps", status);
     EXPECT_FALSE(file);
     EXPECT_EQ(status.rfind("not saved: ", 0), 0u) << status;
 }

@@ -11,8 +11,8 @@
 #include <cfloat>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <ctime>
+#include <cstdio>
 #include <filesystem>
 #include <random>
 
@@ -35,23 +35,20 @@ bool difficultyCombo(PlayerSettings& s) {
     bool changed = false;
     if (ImGui::BeginCombo("computer", game::difficultyName(s.difficulty))) {
         for (const auto d : all)
-            if (ImGui::Selectable(game::difficultyName(d), d == s.difficulty) &&
-                d != s.difficulty) {
+            if (ImGui::Selectable(game::difficultyName(d), d == s.difficulty) && d != s.difficulty) {
                 s.difficulty = d;
                 changed = true;
             }
         ImGui::EndCombo();
     }
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "How much aiming error the computer adds (duels; applies from the next match)");
+        ImGui::SetTooltip("How much aiming error the computer adds (duels; applies from the next match)");
     return changed;
 }
 
 std::string starsText(int stars) {
     std::string s;
-    for (int k = 0; k < 3; ++k)
-        s += k < stars ? "*" : ".";
+    for (int k = 0; k < 3; ++k) s += k < stars ? "*" : ".";
     return s;
 }
 
@@ -134,8 +131,7 @@ std::vector<LevelEntry> listLevels(const std::string& folder) {
         }
         out.push_back(std::move(e));
     }
-    std::sort(out.begin(), out.end(),
-              [](const LevelEntry& a, const LevelEntry& b) { return a.file < b.file; });
+    std::sort(out.begin(), out.end(), [](const LevelEntry& a, const LevelEntry& b) { return a.file < b.file; });
     return out;
 }
 
@@ -182,8 +178,7 @@ std::vector<ReplayEntry> listReplays(const std::string& folder) {
 MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettings& settings,
                              RandomMapForm* randomMap) {
     MenuChoice choice;
-    beginMenuWindow("Choose a level", "ARTILLERY",
-                    "a physics playground: every level shows one idea");
+    beginMenuWindow("Choose a level", "ARTILLERY", "a physics playground: every level shows one idea");
     ImGui::SameLine(ImGui::GetWindowWidth() - 120);
     if (ImGui::SmallButton("Network duel")) choice.networkDuel = true; // ui/net/net_screen.cpp
     if (randomMap) {
@@ -218,8 +213,8 @@ MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettin
                 if (e.mode == "duel")
                     ImGui::TextColored(kGoldText, "%s", r->won ? "won" : "played");
                 else
-                    ImGui::TextColored(kGoldText, "%s %d%s", starsText(r->stars).c_str(),
-                                       r->bestScore, r->assisted ? " (assisted)" : "");
+                    ImGui::TextColored(kGoldText, "%s %d%s", starsText(r->stars).c_str(), r->bestScore,
+                                       r->assisted ? " (assisted)" : "");
             } else {
                 ImGui::TextColored(kDimText, "-");
             }
@@ -246,8 +241,7 @@ MenuChoice levelSelectScreen(const std::vector<LevelEntry>& levels, PlayerSettin
 
 MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::string& folder) {
     MenuChoice choice;
-    beginMenuWindow("Replays", "REPLAYS",
-                    "every game is recorded; watch one, scrub it, take it over");
+    beginMenuWindow("Replays", "REPLAYS", "every game is recorded; watch one, scrub it, take it over");
     if (folder.empty())
         ImGui::TextWrapped(
             "This run keeps no replays (check runs and headless pictures leave nothing "
@@ -317,16 +311,12 @@ MenuChoice pauseMenu(PlayerSettings& settings) {
     ImGui::PushItemWidth(120);
     choice.settingsChanged |= difficultyCombo(settings);
     ImGui::PopItemWidth();
-    choice.settingsChanged |=
-        ImGui::Checkbox("hotseat duel (from the next match)", &settings.hotseat);
-    choice.settingsChanged |=
-        ImGui::Checkbox("trajectory preview (P)", &settings.trajectoryPreview);
+    choice.settingsChanged |= ImGui::Checkbox("hotseat duel (from the next match)", &settings.hotseat);
+    choice.settingsChanged |= ImGui::Checkbox("trajectory preview (P)", &settings.trajectoryPreview);
     choice.settingsChanged |= ImGui::Checkbox("full preview, assisted (V)", &settings.fullPreview);
-    choice.settingsChanged |=
-        ImGui::Checkbox("firing-solution hint, assisted (H)", &settings.solutionHint);
+    choice.settingsChanged |= ImGui::Checkbox("firing-solution hint, assisted (H)", &settings.solutionHint);
     ImGui::TextDisabled("assisted results earn at most two stars");
-    choice.settingsChanged |=
-        ImGui::Checkbox("camera follows the shell (C)", &settings.cameraFollow);
+    choice.settingsChanged |= ImGui::Checkbox("camera follows the shell (C)", &settings.cameraFollow);
     choice.settingsChanged |= ImGui::Checkbox("screen shake", &settings.screenShake);
     choice.settingsChanged |= ImGui::Checkbox("physics panel (F2)", &settings.physicsPanel);
     ImGui::Separator();
@@ -337,9 +327,8 @@ MenuChoice pauseMenu(PlayerSettings& settings) {
 
 void helpOverlay(bool& open) {
     centreNextWindow(600.0f);
-    ImGui::Begin("Help", &open,
-                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoResize);
+    ImGui::Begin("Help", &open, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                    ImGuiWindowFlags_NoResize);
     struct Row {
         const char* keys;
         const char* does;
@@ -352,8 +341,7 @@ void helpOverlay(bool& open) {
         {"Enter or F", "fire at the power set"},
         {"1 .. 8, Tab", "choose the projectile"},
         {"E", "end the turn (duels)"},
-        {"P / V / H", "launch-arc preview / full preview / firing-solution hint (the last two: at "
-                      "most 2 stars)"},
+        {"P / V / H", "launch-arc preview / full preview / firing-solution hint (the last two: at most 2 stars)"},
         {"C", "camera follows the shell and frames the impact (on / off)"},
         {"Esc", "pause menu"},
         {"F1 or ?", "this help"},
@@ -385,9 +373,8 @@ void helpOverlay(bool& open) {
         }
         ImGui::EndTable();
     }
-    ImGui::TextColored(
-        kDimText,
-        "Every change you make is a command at a tick: the game is recorded as a replay.");
+    ImGui::TextColored(kDimText,
+                       "Every change you make is a command at a tick: the game is recorded as a replay.");
     ImGui::End();
 }
 
@@ -419,13 +406,10 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
     ImGui::SameLine();
     req.settingsChanged |= ImGui::Checkbox("hint (H)", &settings.solutionHint);
     req.settingsChanged |= ImGui::Checkbox("full preview (V)", &settings.fullPreview);
-    if (settings.fullPreview || settings.solutionHint)
-        ImGui::TextColored(kDimText, "assisted: 2 stars at most");
+    if (settings.fullPreview || settings.solutionHint) ImGui::TextColored(kDimText, "assisted: 2 stars at most");
     if (m.level().mode == game::Mode::Duel)
-        ImGui::TextColored(kDimText, "%s",
-                           hotseatInUse
-                               ? "hotseat: two players"
-                               : (std::string("computer: ") + game::difficultyName(inUse)).c_str());
+        ImGui::TextColored(kDimText, "%s", hotseatInUse ? "hotseat: two players" :
+                                               (std::string("computer: ") + game::difficultyName(inUse)).c_str());
     // Rewind: back to any earlier moment; play goes on from there as a new branch (the
     // later commands are dropped). Applied when the slider is let go.
     const double dt = m.world().def().tickSeconds;

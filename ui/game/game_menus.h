@@ -59,7 +59,7 @@ struct RandomMapRequest {
 
 /// What the player picked in a menu this frame.
 struct MenuChoice {
-    std::optional<std::string> openLevel;  ///< a level file to play
+    std::optional<std::string> openLevel; ///< a level file to play
     std::optional<std::string> openReplay; ///< a replay file to watch
     bool replays = false;                  ///< show the recorded replays
     bool networkDuel = false;              ///< leave for the network duel screen (ui/net)
@@ -68,7 +68,7 @@ struct MenuChoice {
     bool levelSelect = false;
     bool help = false;
     bool quit = false;
-    bool settingsChanged = false;              ///< difficulty, hotseat or toggles (persist them)
+    bool settingsChanged = false; ///< difficulty, hotseat or toggles (persist them)
     std::optional<RandomMapRequest> randomMap; ///< generate this map and play it
 };
 
