@@ -1,6 +1,5 @@
 #include "game/generate/level_generator.h"
 
-#include "game/files/json_reader.h"
 #include "game/generate/noise.h"
 #include "game/generate/seeded_random.h"
 #include "game/level_write.h"
