@@ -26,6 +26,8 @@ struct LevelPhysics {
     double windMax = 0.0;         ///< m/s
     bool water = false;           ///< a water body below waterLevel
     double waterLevel = 0.0;      ///< m
+
+    bool operator==(const LevelPhysics&) const = default;
 };
 
 /// Ground as a heightfield polyline, left to right; blasts carve craters in it when
@@ -34,6 +36,8 @@ struct Terrain {
     std::vector<Vec2> points; ///< strictly increasing x
     bool destructible = true;
     std::string material = "ground";
+
+    bool operator==(const Terrain&) const = default;
 };
 
 /// A static obstacle: an open polyline (wall, ramp) or a closed convex polygon, or a circle.
@@ -43,6 +47,8 @@ struct Obstacle {
     Vec2 center;              ///< circle
     double radius = 0.0;      ///< circle, m
     std::string material = "steel";
+
+    bool operator==(const Obstacle&) const = default;
 };
 
 struct Cannon {
@@ -54,6 +60,8 @@ struct Cannon {
     std::vector<std::string> projectiles; ///< preset or weapon names offered; first is selected
     /// Shots of each entry of `projectiles` ({"name", "count"}); -1 = unlimited (a bare name).
     std::vector<int> projectileCounts;
+
+    bool operator==(const Cannon&) const = default;
 };
 
 struct Target {
@@ -62,6 +70,8 @@ struct Target {
     std::vector<Vec2> path;      ///< waypoints; empty = static
     double speedMps = 0.0;       ///< along the path, back and forth
     int points = 100;            ///< score for a hit
+
+    bool operator==(const Target&) const = default;
 };
 
 /// A rigid block (Box2D body): structures to topple.
@@ -72,6 +82,8 @@ struct Block {
     std::string material = "wood";
     double density = 600.0;      ///< kg/m^3 (per unit depth of 1 m)
     bool target = false;         ///< counts as a target when knocked off its base
+
+    bool operator==(const Block&) const = default;
 };
 
 /// A rope or rope bridge of particles joined by rods, pinned at its ends.
@@ -84,6 +96,8 @@ struct Rope {
     /// The end tied to a block (index into Level::blocks) instead of pinned: the rope
     /// holds the block, or the block anchors the rope. -1 = none.
     int fromBlock = -1, toBlock = -1;
+
+    bool operator==(const Rope&) const = default;
 };
 
 /// A soft blob: a ring of particles held by springs around a centre particle.
@@ -94,6 +108,8 @@ struct Blob {
     double stiffness = 400.0;    ///< N/m
     double mass = 2.0;           ///< kg in all
     bool target = false;
+
+    bool operator==(const Blob&) const = default;
 };
 
 struct Level {
@@ -115,6 +131,8 @@ struct Level {
     int shots = 5;               ///< shot budget per player (practice)
     std::uint64_t seed = 1;      ///< seeds the wind and the computer's aim
     std::string lesson;          ///< what the level shows, one line
+
+    bool operator==(const Level&) const = default;
 };
 
 /// Current level file format.

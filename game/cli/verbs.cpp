@@ -211,6 +211,30 @@ Exit code: 0 ok, 1 fewer stars than --require-stars, 2 bad input.
 )",
      {},
      runSolveLevel},
+    {"generate", "a level from a seed: same seed, same file; checked playable first",
+     R"(usage: artillery generate --seed N --mode practice|duel [--difficulty easy|normal|hard]
+                         -o FILE [--json]
+
+Makes a level from a seed: ground from fractal value noise, cannons on flat pads,
+targets and block towers (practice) or a second cannon with towers and a rope
+between (duel), a wind range and a name with the seed. The same seed, mode and
+difficulty give the same bytes on every computer. Before writing, the map is
+checked: a practice map must give the solver 3 stars, a duel map must let each
+cannon hit the other with one shot; if not, the next candidate derived from the
+seed is tried (at most 8), and the output says which candidate it took.
+
+  --seed N           0 .. 9223372036854775807
+  --mode M           practice or duel
+  --difficulty D     easy, normal (default) or hard: relief, wind, structures
+  -o FILE            where to write the level (also --output FILE)
+  --json             {"file":..|null,"seed":n,"mode":..,"difficulty":..,"name":..,
+                      "candidates":n,"playable":b,"content_hash":"hex",
+                      "stars":s | "hits":[b,b]}
+
+Exit code: 0 written, 1 no playable candidate (nothing written), 2 bad input.
+)",
+     {},
+     runGenerate},
 };
 
 } // namespace

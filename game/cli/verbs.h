@@ -38,6 +38,7 @@ int runCheck(const Args& args, std::ostream& out);
 int runReplayVerify(const Args& args, std::ostream& out);
 int runRun(const Args& args, std::ostream& out);
 int runSolveLevel(const Args& args, std::ostream& out);
+int runGenerate(const Args& args, std::ostream& out);
 
 } // namespace game::cli
 

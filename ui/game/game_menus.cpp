@@ -13,7 +13,9 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <cstdio>
 #include <filesystem>
+#include <random>
 
 namespace ui {
 
@@ -55,6 +57,53 @@ void beginMenuWindow(const char* title, const char* heading, const char* subtitl
     ImGui::SameLine();
     ImGui::TextColored(kDimText, "%s", subtitle);
     ImGui::Separator();
+}
+
+/// The seed as typed: decimal digits only, at most the largest seed a level holds.
+std::optional<std::uint64_t> seedFromText(const char* text) {
+    std::uint64_t seed = 0;
+    if (!*text) return std::nullopt;
+    for (const char* c = text; *c; ++c) {
+        if (*c < '0' || *c > '9' || seed > (0x7fffffffffffffffull - 9) / 10) return std::nullopt;
+        seed = seed * 10 + static_cast<std::uint64_t>(*c - '0');
+    }
+    return seed;
+}
+
+/// Random map: a seed field (the seed is the map: share it), a New seed button (drawn by
+/// the operating system; the map it names is the same everywhere), practice or duel,
+/// and Generate, which asks for the map to be made and played.
+void randomMapRow(RandomMapForm& form, MenuChoice& choice) {
+    ImGui::TextColored(kGoldText, "Random map");
+    ImGui::SameLine();
+    ImGui::PushItemWidth(170);
+    ImGui::InputText("seed", form.seed, sizeof form.seed, ImGuiInputTextFlags_CharsDecimal);
+    ImGui::PopItemWidth();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The same seed gives the same map on every computer");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("New seed")) {
+        std::random_device device;
+        const std::uint64_t drawn = (static_cast<std::uint64_t>(device()) << 20) ^ device();
+        std::snprintf(form.seed, sizeof form.seed, "%llu",
+                      static_cast<unsigned long long>(drawn % 1000000000ull));
+    }
+    ImGui::SameLine();
+    if (ImGui::RadioButton("practice", !form.duel)) form.duel = false;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("duel", form.duel)) form.duel = true;
+    ImGui::SameLine();
+    const auto seed = seedFromText(form.seed);
+    ImGui::BeginDisabled(!seed);
+    if (ImGui::Button("Generate and play")) choice.randomMap = RandomMapRequest{*seed, form.duel};
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Made at the computer's difficulty (below), checked playable, saved in "
+                          "your maps folder, played at once");
+    ImGui::EndDisabled();
+    if (!seed)
+        ImGui::TextColored(kDimText, "the seed is a whole number, 0 .. 9223372036854775807");
+    else if (!form.status.empty())
+        ImGui::TextColored(kDimText, "%s", form.status.c_str());
 }
 
 } // namespace
@@ -123,11 +172,15 @@ std::vector<ReplayEntry> listReplays(const std::string& folder) {
 }
 
 MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress& progress,
-                             PlayerSettings& settings) {
+                             PlayerSettings& settings, RandomMapForm* randomMap) {
     MenuChoice choice;
     beginMenuWindow("Choose a level", "ARTILLERY", "a physics playground: every level shows one idea");
     ImGui::SameLine(ImGui::GetWindowWidth() - 120);
     if (ImGui::SmallButton("Network duel")) choice.networkDuel = true; // ui/net/net_screen.cpp
+    if (randomMap) {
+        randomMapRow(*randomMap, choice);
+        ImGui::Separator();
+    }
     if (campaign.chapters.empty() && campaign.outside.empty())
         ImGui::TextWrapped("No level files found (looked for levels/*.json).");
     campaignTable(campaign, progress, choice);

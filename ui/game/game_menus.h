@@ -44,6 +44,20 @@ std::vector<ReplayEntry> listReplays(const std::string& folder);
 
 enum class Overlay { None, LevelSelect, Replays, Pause, Lesson };
 
+/// The level select's Random map row: the seed (typed to play a shared map, or drawn
+/// anew) and practice or duel; the difficulty is the computer's.
+struct RandomMapForm {
+    char seed[24] = "1";
+    bool duel = false;
+    std::string status; ///< what the last Generate did
+};
+
+/// A map to generate and play at once.
+struct RandomMapRequest {
+    std::uint64_t seed = 1;
+    bool duel = false;
+};
+
 /// What the player picked in a menu this frame.
 struct MenuChoice {
     std::optional<std::string> openLevel; ///< a level file to play
@@ -59,14 +73,16 @@ struct MenuChoice {
     std::optional<std::size_t> showLesson; ///< a chapter's lesson screen (campaign index)
     std::string lessonThenLevel;           ///< the level its Play button opens ("" = none)
     std::optional<std::string> lessonSeen; ///< a chapter id whose lesson was read
+    std::optional<RandomMapRequest> randomMap; ///< generate this map and play it
 };
 
 struct CampaignMenu; // ui/game/campaign_view.h
 
 /// The level select screen: the campaign's chapters and the levels outside them, with the
-/// progress that unlocks them, and the buttons to the other screens.
+/// progress that unlocks them, and the buttons to the other screens; with `randomMap`,
+/// also its Random map row.
 MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress& progress,
-                             PlayerSettings& settings);
+                             PlayerSettings& settings, RandomMapForm* randomMap = nullptr);
 /// The replays in `folder` ("" when this run keeps none: check runs, headless).
 MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::string& folder);
 MenuChoice pauseMenu(PlayerSettings& settings);

@@ -12,6 +12,7 @@
 #include "ui/game/match_frame.h"
 #include "ui/game/target_inset.h"
 #include "ui/game/settings_commands.h"
+#include "ui/game/random_map.h"
 #include "ui/platform/sdl_window.h"
 #include "ui/render/gl.h"
 
@@ -497,7 +498,7 @@ void GameScreen::drawPlaying() {
 void GameScreen::drawPanels() {
     MenuChoice choice;
     if (overlay_ == Overlay::LevelSelect)
-        choice = levelSelectScreen(campaign_, progress_, settings_);
+        choice = levelSelectScreen(campaign_, progress_, settings_, &randomMap_);
     if (overlay_ == Overlay::Lesson)
         choice = lessonScreen(campaign_.campaign, lessonChapter_, lessonThenLevel_);
     if (overlay_ == Overlay::Replays) choice = replaysScreen(replays_, replaysFolder());
@@ -550,6 +551,10 @@ void GameScreen::drawPanels() {
         overlay_ = Overlay::Lesson;
     }
     if (choice.openLevel) openLevel(*choice.openLevel);
+    if (choice.randomMap)
+        if (const auto file = writeRandomMap(*choice.randomMap, settings_.difficulty,
+                                             randomMapsFolder(def_.settingsFolder), randomMap_.status))
+            openLevel(*file);
     if (choice.openReplay) {
         try {
             openReplay(*choice.openReplay);

@@ -155,6 +155,7 @@ class GameScreen final : public Screen {
     std::unique_ptr<ReplayViewer> viewer_;
     std::vector<ReplayEntry> replays_;
     RewindControl rewind_;
+    RandomMapForm randomMap_; ///< the level select's Random map row
     /// Where the game in play branched from (a replay taken over, a rewind), "" if not.
     std::string branchNote_;
     std::uint64_t branchTick_ = 0;
