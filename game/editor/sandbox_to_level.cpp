@@ -80,7 +80,7 @@ Level sandboxToLevel(const Match& match) {
     l.file.clear();
     l.contentHash.clear();
     l.mode = Mode::Sandbox;
-    if (l.name.size() + 10 <= 80) l.name += " (sandbox)";
+    if (l.name.size() + 6 <= 80) l.name += " scene";
     const phys::ForceDef& f = match.world().def().forces;
     l.physics.gravity = -f.gravity.y;
     l.physics.drag = f.drag != phys::DragModel::None;

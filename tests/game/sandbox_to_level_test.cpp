@@ -88,7 +88,7 @@ TEST(SandboxToLevel, AnUntouchedLevelIsItself) {
     const Level level = flatSandbox();
     const Match m(level);
     Level scene = editor::sandboxToLevel(m);
-    EXPECT_EQ(scene.name, "flat (sandbox)");
+    EXPECT_EQ(scene.name, "flat scene");
     EXPECT_EQ(scene.file, "");
     scene.name = level.name;
     scene.file = level.file;

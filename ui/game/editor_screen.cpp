@@ -509,7 +509,7 @@ EditorRequests LevelEditorView::panel() {
     // The fields edit a copy; a change is one undo step however long the field is held.
     game::Level draft = l;
     bool changed = false;
-    ImGui::PushItemWidth(150.0f); // room for the labels beside the fields
+    ImGui::PushItemWidth(140.0f); // room for the labels beside the fields
     if (exists(l, selected_)) {
         char title[64];
         std::snprintf(title, sizeof title, "%s %d###selected", game::editor::itemKindName(selected_.kind),

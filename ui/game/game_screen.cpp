@@ -283,6 +283,7 @@ void GameScreen::backToEditor() {
     playtest_ = false;
     overlay_ = Overlay::None;
     cameraMoved_ = panning_ = false;
+    camera_ = editor_->framing(context_.width(), context_.height());
     aim_ = AimInput();
 }
 
@@ -320,7 +321,12 @@ bool GameScreen::editorEvent(const SDL_Event& e) {
     // The panel takes the mouse over it, but a drag begun in the world ends in the world.
     if (imgui_.wantsMouse() && !view.dragging() && !panning_) return running_;
     const double reach = camera_.metres(8.0); // a handle takes clicks 8 px around it
-    if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT)
+    // Over the panel a press is the panel's, even on the frame the editor comes back
+    // (ImGui learns what is under the pointer only from the frame it draws).
+    const bool overPanel = e.type == SDL_MOUSEBUTTONDOWN &&
+                           pointerPixels(e.button.x, e.button.y).x <
+                               std::min<double>(kEditorPanelWidth, 0.5 * context_.width());
+    if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT && !overPanel)
         view.press(camera_.toWorld(pointerPixels(e.button.x, e.button.y)), reach);
     else if (e.type == SDL_MOUSEBUTTONUP && e.button.button == SDL_BUTTON_LEFT)
         view.lift();
@@ -629,7 +635,8 @@ void GameScreen::drawPanels() {
         sceneToEditor = sandboxTools_.takeSaveAsLevel();
         if (playtest_) {
             const ImVec2 display = ImGui::GetIO().DisplaySize;
-            ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, 8.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+            // Under the wind gauge at the top centre.
+            ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, 76.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
             ImGui::Begin("Playtest", nullptr,
                          ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                              ImGuiWindowFlags_NoSavedSettings);
