@@ -82,6 +82,7 @@ template <class Test> bool anyNear(const ui::Image& img, Vec2 p, int r, Test tes
 }
 
 bool yellow(const std::uint8_t* c) { return c[0] > 200 && c[1] > 160 && c[2] < 130; }
+bool red(const std::uint8_t* c) { return c[0] > 200 && c[1] < 110 && c[2] < 110; }
 bool white(const std::uint8_t* c) { return c[0] > 215 && c[1] > 215 && c[2] > 190; }
 
 } // namespace
@@ -149,6 +150,12 @@ TEST(EditorScreen, PlaysTheEditedLevelAndComesBackToIt) {
     view->editor().change(sunk);
     EXPECT_NE(view->editor().problem().find("above the ground"), std::string::npos)
         << view->editor().problem();
+    // The block the message names is marked red where it lies.
+    screen.frame(1.0 / 60.0);
+    const fs::path png = scratch.dir / "sunk.png";
+    ASSERT_EQ(screen.saveScreenshot(png.string()), "");
+    EXPECT_TRUE(anyNear(readPng(png.string()), camera.toPixel({100.0, -5.0}), 4, red))
+        << "the block named by the loader";
     screen.handleEvent(key(SDLK_F5));
     EXPECT_FALSE(screen.playtest());
     EXPECT_NE(view->saveAs("sunk"), "");

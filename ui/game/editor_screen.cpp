@@ -180,7 +180,6 @@ void LevelEditorView::startDrag(const Item& item, Vec2 at) {
 }
 
 void LevelEditorView::press(Vec2 at, double reach) {
-    pointer_ = at;
     status_.clear();
     const Item hit = editor_.hitTest(at, reach);
     if (tool_ == Tool::Select) {
@@ -227,7 +226,6 @@ void LevelEditorView::press(Vec2 at, double reach) {
 }
 
 void LevelEditorView::move(Vec2 at, double reach) {
-    pointer_ = at;
     if (!dragging_) {
         hovered_ = editor_.hitTest(at, reach);
         return;

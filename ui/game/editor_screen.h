@@ -89,7 +89,6 @@ class LevelEditorView {
     game::editor::Item hovered_;
     bool dragging_ = false;
     phys::Vec2 grabOffset_; ///< item position minus the pointer when the drag began
-    phys::Vec2 pointer_;
     bool widgetGesture_ = false; ///< a panel field is being edited (one undo step)
     char saveName_[64] = "";
     std::string status_;
