@@ -13,13 +13,20 @@ using phys::Vec2;
 
 const char* itemKindName(ItemKind kind) {
     switch (kind) {
-    case ItemKind::None: return "nothing";
-    case ItemKind::TerrainPoint: return "terrain point";
-    case ItemKind::Cannon: return "cannon";
-    case ItemKind::Target: return "target";
-    case ItemKind::Block: return "block";
-    case ItemKind::Rope: return "rope";
-    case ItemKind::Blob: return "blob";
+    case ItemKind::None:
+        return "nothing";
+    case ItemKind::TerrainPoint:
+        return "terrain point";
+    case ItemKind::Cannon:
+        return "cannon";
+    case ItemKind::Target:
+        return "target";
+    case ItemKind::Block:
+        return "block";
+    case ItemKind::Rope:
+        return "rope";
+    case ItemKind::Blob:
+        return "blob";
     }
     return "?";
 }
@@ -31,7 +38,8 @@ Level newLevel() {
     l.mode = Mode::Practice;
     l.worldMin = {0.0, 0.0};
     l.worldMax = {200.0, 100.0};
-    for (int i = 0; i <= 10; ++i) l.terrain.points.push_back({20.0 * i, 10.0});
+    for (int i = 0; i <= 10; ++i)
+        l.terrain.points.push_back({20.0 * i, 10.0});
     Cannon c;
     c.position = {24.0, 10.0};
     c.projectiles = {"cannonball"};
@@ -88,7 +96,8 @@ Item LevelEditor::hitTest(Vec2 at, double reach) const {
         consider({ItemKind::Target, static_cast<int>(i)}, level_.targets[i].position,
                  level_.targets[i].radius);
     for (std::size_t i = 0; i < level_.blobs.size(); ++i)
-        consider({ItemKind::Blob, static_cast<int>(i)}, level_.blobs[i].center, level_.blobs[i].radius);
+        consider({ItemKind::Blob, static_cast<int>(i)}, level_.blobs[i].center,
+                 level_.blobs[i].radius);
     // Last: a terrain point under an object (a cannon stands on one) loses the tie.
     for (std::size_t i = 0; i < level_.terrain.points.size(); ++i)
         consider({ItemKind::TerrainPoint, static_cast<int>(i)}, level_.terrain.points[i], 0.0);
@@ -105,16 +114,22 @@ Item LevelEditor::hitTest(Vec2 at, double reach) const {
 Vec2 LevelEditor::positionOf(const Item& item) const {
     const auto i = static_cast<std::size_t>(item.index);
     switch (item.kind) {
-    case ItemKind::TerrainPoint: return level_.terrain.points[i];
-    case ItemKind::Cannon: return level_.cannons[i].position;
-    case ItemKind::Target: return level_.targets[i].position;
-    case ItemKind::Block: return level_.blocks[i].position;
-    case ItemKind::Blob: return level_.blobs[i].center;
+    case ItemKind::TerrainPoint:
+        return level_.terrain.points[i];
+    case ItemKind::Cannon:
+        return level_.cannons[i].position;
+    case ItemKind::Target:
+        return level_.targets[i].position;
+    case ItemKind::Block:
+        return level_.blocks[i].position;
+    case ItemKind::Blob:
+        return level_.blobs[i].center;
     case ItemKind::Rope: {
         const Rope& r = level_.ropes[i];
         return item.end == 0 ? r.from : item.end == 1 ? r.to : (r.from + r.to) * 0.5;
     }
-    case ItemKind::None: break;
+    case ItemKind::None:
+        break;
     }
     return {};
 }
@@ -125,7 +140,8 @@ int LevelEditor::addTerrainPoint(Vec2 at) {
     std::vector<Vec2>& pts = level_.terrain.points;
     const auto after = std::find_if(pts.begin(), pts.end(), [&](Vec2 p) { return p.x >= at.x; });
     if (after != pts.end() && after->x == at.x) {
-        refusal_ = "a terrain point has this x already (the ground is a heightfield: one height per x)";
+        refusal_ =
+            "a terrain point has this x already (the ground is a heightfield: one height per x)";
         return -1;
     }
     Level before = level_;
@@ -194,7 +210,8 @@ Item LevelEditor::place(ItemKind kind, Vec2 at) {
         const int i = addTerrainPoint(at);
         return i < 0 ? Item{} : Item{ItemKind::TerrainPoint, i};
     }
-    case ItemKind::None: return {};
+    case ItemKind::None:
+        return {};
     }
     pushUndo(std::move(before));
     edited();
@@ -204,14 +221,19 @@ Item LevelEditor::place(ItemKind kind, Vec2 at) {
 void LevelEditor::setItemPosition(Level& level, const Item& item, Vec2 to) const {
     const auto i = static_cast<std::size_t>(item.index);
     switch (item.kind) {
-    case ItemKind::TerrainPoint: level.terrain.points[i] = to; break;
-    case ItemKind::Cannon: level.cannons[i].position = to; break;
+    case ItemKind::TerrainPoint:
+        level.terrain.points[i] = to;
+        break;
+    case ItemKind::Cannon:
+        level.cannons[i].position = to;
+        break;
     case ItemKind::Target: {
         // A moving target's path goes with it.
         Target& t = level.targets[i];
         const Vec2 shift = to - t.position;
         t.position = to;
-        for (Vec2& p : t.path) p += shift;
+        for (Vec2& p : t.path)
+            p += shift;
         break;
     }
     case ItemKind::Block: {
@@ -225,7 +247,9 @@ void LevelEditor::setItemPosition(Level& level, const Item& item, Vec2 to) const
         }
         break;
     }
-    case ItemKind::Blob: level.blobs[i].center = to; break;
+    case ItemKind::Blob:
+        level.blobs[i].center = to;
+        break;
     case ItemKind::Rope: {
         Rope& r = level.ropes[i];
         if (item.end == 0)
@@ -239,7 +263,8 @@ void LevelEditor::setItemPosition(Level& level, const Item& item, Vec2 to) const
         }
         break;
     }
-    case ItemKind::None: break;
+    case ItemKind::None:
+        break;
     }
 }
 
@@ -269,20 +294,29 @@ bool LevelEditor::remove(const Item& item) {
         }
         next.cannons.erase(next.cannons.begin() + item.index);
         break;
-    case ItemKind::Target: next.targets.erase(next.targets.begin() + item.index); break;
+    case ItemKind::Target:
+        next.targets.erase(next.targets.begin() + item.index);
+        break;
     case ItemKind::Block:
         next.blocks.erase(next.blocks.begin() + item.index);
         // Ties name blocks by index: the deleted block's ties go, later ones shift down.
         for (Rope& r : next.ropes) {
             for (int* tie : {&r.fromBlock, &r.toBlock}) {
-                if (*tie == item.index) *tie = -1;
-                else if (*tie > item.index) --*tie;
+                if (*tie == item.index)
+                    *tie = -1;
+                else if (*tie > item.index)
+                    --*tie;
             }
         }
         break;
-    case ItemKind::Rope: next.ropes.erase(next.ropes.begin() + item.index); break;
-    case ItemKind::Blob: next.blobs.erase(next.blobs.begin() + item.index); break;
-    case ItemKind::None: return false;
+    case ItemKind::Rope:
+        next.ropes.erase(next.ropes.begin() + item.index);
+        break;
+    case ItemKind::Blob:
+        next.blobs.erase(next.blobs.begin() + item.index);
+        break;
+    case ItemKind::None:
+        return false;
     }
     change(next);
     return true;

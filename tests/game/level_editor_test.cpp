@@ -29,14 +29,16 @@ Level content(Level l) {
 
 /// A folder of this process's own (CTest runs test programs side by side).
 fs::path scratch(const std::string& name) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("artillery-editor-test-" + name + "-" + std::to_string(::getpid()));
+    const fs::path dir = fs::temp_directory_path() /
+                         ("artillery-editor-test-" + name + "-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;
 }
 
-Level earthBasics() { return loadLevel((kSource / "levels/01_earth_basics.json").string()); }
+Level earthBasics() {
+    return loadLevel((kSource / "levels/01_earth_basics.json").string());
+}
 
 } // namespace
 
@@ -100,9 +102,11 @@ TEST(LevelEditor, PlacesEveryKindAndUndoesEachPlacement) {
     EXPECT_EQ(l.blobs[static_cast<std::size_t>(blob.index)].center, (Vec2{120.0, 20.0}));
     EXPECT_EQ(cannon, (Item{ItemKind::Cannon, 1, -1}));
     EXPECT_TRUE(editor.valid()) << editor.problem();
-    for (int i = 0; i < 5; ++i) editor.undo();
+    for (int i = 0; i < 5; ++i)
+        editor.undo();
     EXPECT_TRUE(editor.level() == start);
-    for (int i = 0; i < 5; ++i) editor.redo();
+    for (int i = 0; i < 5; ++i)
+        editor.redo();
     EXPECT_EQ(editor.level().blobs.size(), 1u);
 }
 
@@ -122,7 +126,8 @@ TEST(LevelEditor, HitTestFindsTheNearestHandleThenBodies) {
     EXPECT_EQ(editor.hitTest({20.1, 10.0}, 0.5), (Item{ItemKind::TerrainPoint, 1, -1}));
     EXPECT_EQ(editor.hitTest({150.5, 12.5}, 0.5), (Item{ItemKind::Target, 0, -1}));
     EXPECT_EQ(editor.hitTest({80.2, 10.1}, 0.5), (Item{ItemKind::TerrainPoint, 4, -1}));
-    EXPECT_EQ(editor.hitTest({100.0, 12.8}, 0.5), (Item{ItemKind::Block, 0, -1})) << "inside, turned";
+    EXPECT_EQ(editor.hitTest({100.0, 12.8}, 0.5), (Item{ItemKind::Block, 0, -1}))
+        << "inside, turned";
     EXPECT_FALSE(editor.hitTest({101.8, 11.0}, 0.5)) << "outside the turned block";
     EXPECT_EQ(editor.hitTest({70.2, 40.0}, 0.5), (Item{ItemKind::Rope, 0, 1}));
     EXPECT_EQ(editor.hitTest({65.0, 40.3}, 0.5), (Item{ItemKind::Rope, 0, -1}));
@@ -145,7 +150,8 @@ TEST(LevelEditor, ADragIsOneUndoStepAndMovesWhatIsTiedToIt) {
     ASSERT_TRUE(editor.valid()) << editor.problem();
     const Item block{ItemKind::Block, 0};
     editor.beginGesture();
-    for (int i = 1; i <= 10; ++i) editor.dragTo(block, {100.0 + i, 12.0});
+    for (int i = 1; i <= 10; ++i)
+        editor.dragTo(block, {100.0 + i, 12.0});
     editor.endGesture();
     EXPECT_EQ(editor.level().blocks[0].position, (Vec2{110.0, 12.0}));
     EXPECT_EQ(editor.level().ropes[0].to, (Vec2{110.0, 12.5})) << "the tied end went along";
@@ -195,7 +201,8 @@ TEST(LevelEditor, ATargetInTheGroundShowsTheLoadersMessageAndIsNotSaved) {
         loaderSays = e.what();
     }
     EXPECT_EQ(editor.problem(), loaderSays);
-    EXPECT_NE(editor.problem().find("$.targets[0].position"), std::string::npos) << editor.problem();
+    EXPECT_NE(editor.problem().find("$.targets[0].position"), std::string::npos)
+        << editor.problem();
     EXPECT_NE(editor.problem().find("above the ground"), std::string::npos) << editor.problem();
     const std::string why = editor.save((dir / "bad.json").string());
     EXPECT_NE(why.find("does not pass check"), std::string::npos) << why;
@@ -212,7 +219,8 @@ TEST(LevelEditor, ATerrainPointMakingXDecreaseShowsTheLoadersMessage) {
     editor.move({ItemKind::TerrainPoint, 3}, {10.0, 10.0}); // x 60 -> 10, after x = 40
     EXPECT_FALSE(editor.valid());
     EXPECT_NE(editor.problem().find("$.terrain.points[3]"), std::string::npos) << editor.problem();
-    EXPECT_NE(editor.problem().find("expected x to increase"), std::string::npos) << editor.problem();
+    EXPECT_NE(editor.problem().find("expected x to increase"), std::string::npos)
+        << editor.problem();
     EXPECT_NE(editor.save((fs::temp_directory_path() / "never.json").string()), "");
 }
 
@@ -271,11 +279,13 @@ TEST(LevelEditor, AnEditedLevelSavesLoadsAndPlays) {
     SessionOptions o;
     o.autoplay = true; // the computer plays the level
     Session session(loaded, o);
-    for (int i = 0; i < 600; ++i) session.step();
+    for (int i = 0; i < 600; ++i)
+        session.step();
     const Match& m = session.match();
     EXPECT_EQ(m.tick(), 600u);
     EXPECT_GE(m.shotsFired(), 1) << "the computer fired within 5 s";
-    for (const GameEvent& e : m.events()) EXPECT_NE(e.kind, EventKind::Unstable) << e.text;
+    for (const GameEvent& e : m.events())
+        EXPECT_NE(e.kind, EventKind::Unstable) << e.text;
     EXPECT_GE(m.wind(), -4.0);
     EXPECT_LE(m.wind(), 3.0);
     fs::remove_all(dir);

@@ -36,7 +36,8 @@ void stepUntilBlocksRest(Match& m, double seconds) {
     for (int i = 0; i < ticks; ++i) {
         m.step();
         bool awake = false;
-        for (const BlockState& b : m.blocks()) awake = awake || m.rigid().state(b.body).awake;
+        for (const BlockState& b : m.blocks())
+            awake = awake || m.rigid().state(b.body).awake;
         if (!awake && i > 120) return;
     }
 }
@@ -58,7 +59,8 @@ TEST(SandboxToLevel, SpawnedBlockAndRopeAreWhereTheyRested) {
     ASSERT_EQ(loaded.blocks.size(), 1u);
     EXPECT_NEAR(loaded.blocks[0].position.x, rested.position.x, 1e-9);
     EXPECT_NEAR(loaded.blocks[0].position.y, rested.position.y, 1e-9);
-    EXPECT_NEAR(loaded.blocks[0].angleDeg * M_PI / 180.0, std::remainder(rested.angle, 2 * M_PI), 1e-9);
+    EXPECT_NEAR(loaded.blocks[0].angleDeg * M_PI / 180.0, std::remainder(rested.angle, 2 * M_PI),
+                1e-9);
     EXPECT_EQ(loaded.blocks[0].size, (Vec2{1.0, 1.0}));
     EXPECT_EQ(loaded.blocks[0].material, "wood");
 
@@ -72,7 +74,8 @@ TEST(SandboxToLevel, SpawnedBlockAndRopeAreWhereTheyRested) {
     EXPECT_EQ(loaded.ropes[0].segments, rope.def.segments);
     EXPECT_FALSE(loaded.ropes[0].pinTo);
     // Same links: (1 + sag) times the new span is the length it was spawned with.
-    EXPECT_NEAR((1.0 + loaded.ropes[0].sag) * phys::length(loaded.ropes[0].to - loaded.ropes[0].from),
+    EXPECT_NEAR((1.0 + loaded.ropes[0].sag) *
+                    phys::length(loaded.ropes[0].to - loaded.ropes[0].from),
                 6.0, 1e-9);
     EXPECT_EQ(loaded.mode, Mode::Sandbox);
     EXPECT_EQ(loaded.blobs.size(), 0u) << "the tennis ball is left out";
@@ -104,7 +107,8 @@ TEST(SandboxToLevel, SpawnedBlobsAndTheLiveGravityAreKept) {
     moon.text = "gravity";
     moon.value = 1.62;
     ASSERT_EQ(m.apply(moon), "");
-    for (int i = 0; i < 240; ++i) m.step();
+    for (int i = 0; i < 240; ++i)
+        m.step();
     const Level loaded = parseLevel("scene.json", levelToJson(editor::sandboxToLevel(m)));
     ASSERT_EQ(loaded.blobs.size(), 1u);
     const Vec2 centre = m.world().particles.position(m.blobs()[0].center);

@@ -29,7 +29,8 @@ constexpr int kH = 540;
 /// A settings folder of this process's own: the maps folder (Save As, the playtest)
 /// is inside it.
 struct Scratch {
-    fs::path dir = fs::temp_directory_path() / ("artillery-editor-screen-test-" + std::to_string(::getpid()));
+    fs::path dir =
+        fs::temp_directory_path() / ("artillery-editor-screen-test-" + std::to_string(::getpid()));
     Scratch() {
         fs::remove_all(dir);
         fs::create_directories(dir);
@@ -77,13 +78,20 @@ ui::Image readPng(const std::string& path) {
 template <class Test> bool anyNear(const ui::Image& img, Vec2 p, int r, Test test) {
     for (int y = static_cast<int>(p.y) - r; y <= static_cast<int>(p.y) + r; ++y)
         for (int x = static_cast<int>(p.x) - r; x <= static_cast<int>(p.x) + r; ++x)
-            if (x >= 0 && y >= 0 && x < img.width && y < img.height && test(img.pixel(x, y))) return true;
+            if (x >= 0 && y >= 0 && x < img.width && y < img.height && test(img.pixel(x, y)))
+                return true;
     return false;
 }
 
-bool yellow(const std::uint8_t* c) { return c[0] > 200 && c[1] > 160 && c[2] < 130; }
-bool red(const std::uint8_t* c) { return c[0] > 200 && c[1] < 110 && c[2] < 110; }
-bool white(const std::uint8_t* c) { return c[0] > 215 && c[1] > 215 && c[2] > 190; }
+bool yellow(const std::uint8_t* c) {
+    return c[0] > 200 && c[1] > 160 && c[2] < 130;
+}
+bool red(const std::uint8_t* c) {
+    return c[0] > 200 && c[1] < 110 && c[2] < 110;
+}
+bool white(const std::uint8_t* c) {
+    return c[0] > 215 && c[1] > 215 && c[2] > 190;
+}
 
 } // namespace
 
@@ -105,7 +113,8 @@ TEST(EditorScreen, DrawsTheLevelBesideThePanelWithItsHandles) {
     EXPECT_EQ(view->selection().index, 0);
     EXPECT_EQ(view->editor().level().blocks[0].position, block) << "a click without a drag";
     EXPECT_FALSE(view->editor().canUndo()) << "moves nothing";
-    for (int i = 0; i < 2; ++i) screen.frame(1.0 / 60.0);
+    for (int i = 0; i < 2; ++i)
+        screen.frame(1.0 / 60.0);
     const fs::path png = scratch.dir / "editor.png";
     ASSERT_EQ(screen.saveScreenshot(png.string()), "");
     const ui::Image img = readPng(png.string());
@@ -121,7 +130,8 @@ TEST(EditorScreen, DrawsTheLevelBesideThePanelWithItsHandles) {
     // The selected block's outline in the selection's yellow, a terrain point's handle white.
     EXPECT_TRUE(anyNear(img, camera.toPixel(block), 4, yellow)) << "selected block outline";
     EXPECT_TRUE(anyNear(img, camera.toPixel({80.0, 0.0}), 2, white)) << "terrain handle";
-    EXPECT_FALSE(anyNear(img, camera.toPixel({110.0, 60.0}), 4, yellow)) << "nothing selected there";
+    EXPECT_FALSE(anyNear(img, camera.toPixel({110.0, 60.0}), 4, yellow))
+        << "nothing selected there";
 }
 
 TEST(EditorScreen, PlaysTheEditedLevelAndComesBackToIt) {
@@ -171,7 +181,8 @@ TEST(EditorScreen, PlaysTheEditedLevelAndComesBackToIt) {
     const game::Level& played = screen.session()->match().level();
     EXPECT_EQ(played.file, (scratch.dir / "maps/playtest.json").string());
     EXPECT_EQ(played.blocks.size(), blocks + 1);
-    for (int i = 0; i < 30; ++i) screen.frame(1.0 / 60.0);
+    for (int i = 0; i < 30; ++i)
+        screen.frame(1.0 / 60.0);
     EXPECT_GT(screen.session()->match().tick(), 0u);
 
     screen.handleEvent(key(SDLK_F4));

@@ -27,7 +27,8 @@ bool number(const char* label, double& value, double step, const char* format = 
 
 bool point(const char* label, phys::Vec2& p) {
     double xy[2] = {p.x, p.y};
-    const bool changed = ImGui::InputScalarN(label, ImGuiDataType_Double, xy, 2, nullptr, nullptr, "%.3f");
+    const bool changed =
+        ImGui::InputScalarN(label, ImGuiDataType_Double, xy, 2, nullptr, nullptr, "%.3f");
     if (changed) p = {xy[0], xy[1]};
     return changed;
 }
@@ -71,8 +72,10 @@ std::vector<std::string> splitNames(const std::string& list) {
 const std::vector<std::string>& projectileNames() {
     static const std::vector<std::string> names = [] {
         std::vector<std::string> n;
-        for (const game::Weapon& w : game::weapons()) n.emplace_back(w.name);
-        for (const phys::ProjectilePreset& p : phys::projectilePresets()) n.emplace_back(p.name);
+        for (const game::Weapon& w : game::weapons())
+            n.emplace_back(w.name);
+        for (const phys::ProjectilePreset& p : phys::projectilePresets())
+            n.emplace_back(p.name);
         return n;
     }();
     return names;
@@ -82,8 +85,9 @@ const std::vector<std::string>& projectileNames() {
 bool modeCombo(game::Level& level) {
     std::string mode = game::modeName(level.mode);
     if (!choice("mode", mode, {"practice", "duel", "sandbox"})) return false;
-    level.mode = mode == "duel" ? game::Mode::Duel : mode == "sandbox" ? game::Mode::Sandbox
-                                                                        : game::Mode::Practice;
+    level.mode = mode == "duel"      ? game::Mode::Duel
+                 : mode == "sandbox" ? game::Mode::Sandbox
+                                     : game::Mode::Practice;
     return true;
 }
 
@@ -92,7 +96,8 @@ bool physicsFields(game::LevelPhysics& p) {
     ImGui::TextDisabled("planet:");
     for (const char* planet : {"earth", "moon", "mars", "jupiter"}) {
         ImGui::SameLine();
-        if (ImGui::SmallButton(planet)) p.gravity = *phys::gravityFromPlanet(planet), changed = true;
+        if (ImGui::SmallButton(planet))
+            p.gravity = *phys::gravityFromPlanet(planet), changed = true;
     }
     changed |= number("air density (kg/m^3)", p.airDensity, 0.05);
     changed |= ImGui::Checkbox("air drag on shells", &p.drag);
@@ -142,7 +147,8 @@ bool targetFields(game::Target& t) {
     const phys::Vec2 before = t.position;
     bool changed = point("position", t.position);
     if (changed) // a moving target's path goes with it, as when it is dragged
-        for (phys::Vec2& p : t.path) p += t.position - before;
+        for (phys::Vec2& p : t.path)
+            p += t.position - before;
     changed |= number("radius (m)", t.radius, 0.1);
     changed |= integer("points", t.points, 10);
     if (!t.path.empty()) {
@@ -220,13 +226,26 @@ bool itemPropertiesPanel(game::Level& level, const Item& item) {
     ImGui::PushID(static_cast<int>(item.kind) * 100000 + item.index);
     bool changed = false;
     switch (item.kind) {
-    case ItemKind::TerrainPoint: changed = point("x, y", level.terrain.points[i]); break;
-    case ItemKind::Cannon: changed = cannonFields(level.cannons[i]); break;
-    case ItemKind::Target: changed = targetFields(level.targets[i]); break;
-    case ItemKind::Block: changed = blockFields(level.blocks[i]); break;
-    case ItemKind::Rope: changed = ropeFields(level.ropes[i]); break;
-    case ItemKind::Blob: changed = blobFields(level.blobs[i]); break;
-    case ItemKind::None: break;
+    case ItemKind::TerrainPoint:
+        changed = point("x, y", level.terrain.points[i]);
+        break;
+    case ItemKind::Cannon:
+        changed = cannonFields(level.cannons[i]);
+        break;
+    case ItemKind::Target:
+        changed = targetFields(level.targets[i]);
+        break;
+    case ItemKind::Block:
+        changed = blockFields(level.blocks[i]);
+        break;
+    case ItemKind::Rope:
+        changed = ropeFields(level.ropes[i]);
+        break;
+    case ItemKind::Blob:
+        changed = blobFields(level.blobs[i]);
+        break;
+    case ItemKind::None:
+        break;
     }
     ImGui::PopID();
     return changed;

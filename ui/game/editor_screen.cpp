@@ -59,24 +59,37 @@ constexpr ToolInfo kTools[] = {
 
 ItemKind kindOf(LevelEditorView::Tool tool) {
     switch (tool) {
-    case LevelEditorView::Tool::Cannon: return ItemKind::Cannon;
-    case LevelEditorView::Tool::Target: return ItemKind::Target;
-    case LevelEditorView::Tool::Block: return ItemKind::Block;
-    case LevelEditorView::Tool::Rope: return ItemKind::Rope;
-    case LevelEditorView::Tool::Blob: return ItemKind::Blob;
-    default: return ItemKind::None;
+    case LevelEditorView::Tool::Cannon:
+        return ItemKind::Cannon;
+    case LevelEditorView::Tool::Target:
+        return ItemKind::Target;
+    case LevelEditorView::Tool::Block:
+        return ItemKind::Block;
+    case LevelEditorView::Tool::Rope:
+        return ItemKind::Rope;
+    case LevelEditorView::Tool::Blob:
+        return ItemKind::Blob;
+    default:
+        return ItemKind::None;
     }
 }
 
 std::size_t countOf(const game::Level& l, ItemKind kind) {
     switch (kind) {
-    case ItemKind::TerrainPoint: return l.terrain.points.size();
-    case ItemKind::Cannon: return l.cannons.size();
-    case ItemKind::Target: return l.targets.size();
-    case ItemKind::Block: return l.blocks.size();
-    case ItemKind::Rope: return l.ropes.size();
-    case ItemKind::Blob: return l.blobs.size();
-    case ItemKind::None: break;
+    case ItemKind::TerrainPoint:
+        return l.terrain.points.size();
+    case ItemKind::Cannon:
+        return l.cannons.size();
+    case ItemKind::Target:
+        return l.targets.size();
+    case ItemKind::Block:
+        return l.blocks.size();
+    case ItemKind::Rope:
+        return l.ropes.size();
+    case ItemKind::Blob:
+        return l.blobs.size();
+    case ItemKind::None:
+        break;
     }
     return 0;
 }
@@ -99,7 +112,8 @@ double groundAt(const std::vector<Vec2>& pts, double x) {
 /// The item the loader's message names ("$.blocks[3]...", "$.terrain.points[2]"), so
 /// the view can mark it.
 Item itemInProblem(const std::string& problem) {
-    static const std::regex path(R"(\$\.(terrain\.points|cannons|targets|blocks|ropes|blobs)\[(\d+)\])");
+    static const std::regex path(
+        R"(\$\.(terrain\.points|cannons|targets|blocks|ropes|blobs)\[(\d+)\])");
     std::smatch m;
     if (!std::regex_search(problem, m, path)) return {};
     const std::string list = m[1];
@@ -129,7 +143,8 @@ std::string fileStem(const std::string& name) {
         else if (!out.empty() && out.back() != '_')
             out += '_';
     }
-    while (!out.empty() && out.back() == '_') out.pop_back();
+    while (!out.empty() && out.back() == '_')
+        out.pop_back();
     return out.empty() ? "my_level" : out.substr(0, 48);
 }
 
@@ -277,15 +292,21 @@ EditorRequests LevelEditorView::key(SDL_Keycode key, bool ctrl, bool shift) {
     }
     switch (key) {
     case SDLK_DELETE:
-    case SDLK_BACKSPACE: deleteSelected(); break;
+    case SDLK_BACKSPACE:
+        deleteSelected();
+        break;
     case SDLK_ESCAPE:
         if (selected_)
             selected_ = {};
         else
             out.close = true;
         break;
-    case SDLK_F5: out.play = editor_.valid(); break;
-    case SDLK_g: snap_ = !snap_; break;
+    case SDLK_F5:
+        out.play = editor_.valid();
+        break;
+    case SDLK_g:
+        snap_ = !snap_;
+        break;
     default:
         if (key >= SDLK_1 && key < SDLK_1 + static_cast<int>(std::size(kTools)))
             choose(kTools[key - SDLK_1].tool);
@@ -304,7 +325,8 @@ std::string LevelEditorView::save() {
 
 std::string LevelEditorView::saveAs(const std::string& name) {
     std::string stem = name;
-    if (std::filesystem::path(stem).extension() == ".json") stem = std::filesystem::path(stem).stem().string();
+    if (std::filesystem::path(stem).extension() == ".json")
+        stem = std::filesystem::path(stem).stem().string();
     if (stem.empty() || stem.find_first_of("/\\") != std::string::npos || stem[0] == '.') {
         status_ = "not saved: give a file name (no folder: it goes in " + mapsFolder_ + ")";
         return status_;
@@ -353,7 +375,8 @@ void LevelEditorView::drawHandles(Renderer2D& r, const Camera& camera) const {
         return item;
     };
     auto marked = [&](const Item& item) {
-        return whole(item) == problem || whole(item) == whole(selected_) || whole(item) == whole(hovered_);
+        return whole(item) == problem || whole(item) == whole(selected_) ||
+               whole(item) == whole(hovered_);
     };
     auto colourOf = [&](const Item& item, Color normal) {
         if (whole(item) == problem) return kProblem;
@@ -364,13 +387,15 @@ void LevelEditorView::drawHandles(Renderer2D& r, const Camera& camera) const {
     // The grid the points snap to, coarsened until its lines are 12 px apart.
     if (snap_) {
         double step = gridMetres_;
-        while (step * camera.pixelsPerMetre < 12.0) step *= 2.0;
+        while (step * camera.pixelsPerMetre < 12.0)
+            step *= 2.0;
         for (double x = std::ceil(l.worldMin.x / step) * step; x <= l.worldMax.x; x += step)
             r.line({x, l.worldMin.y}, {x, l.worldMax.y}, kGrid, 1.0f);
         for (double y = std::ceil(l.worldMin.y / step) * step; y <= l.worldMax.y; y += step)
             r.line({l.worldMin.x, y}, {l.worldMax.x, y}, kGrid, 1.0f);
     }
-    const Vec2 bounds[] = {l.worldMin, {l.worldMax.x, l.worldMin.y}, l.worldMax, {l.worldMin.x, l.worldMax.y}};
+    const Vec2 bounds[] = {
+        l.worldMin, {l.worldMax.x, l.worldMin.y}, l.worldMax, {l.worldMin.x, l.worldMax.y}};
     r.polyline(bounds, Color::hex(0x9fb3c8, 0.7f), 1.5f, true);
     if (l.physics.water)
         r.line({l.worldMin.x, l.physics.waterLevel}, {l.worldMax.x, l.physics.waterLevel},
@@ -379,7 +404,8 @@ void LevelEditorView::drawHandles(Renderer2D& r, const Camera& camera) const {
     r.polyline(l.terrain.points, Color::hex(0xfff3c4, 0.9f), 2.0f);
     for (std::size_t i = 0; i < l.terrain.points.size(); ++i) {
         const Item item{ItemKind::TerrainPoint, static_cast<int>(i)};
-        r.fillCircle(l.terrain.points[i], camera.metres(marked(item) ? 5.5 : 3.5), colourOf(item, kHandle));
+        r.fillCircle(l.terrain.points[i], camera.metres(marked(item) ? 5.5 : 3.5),
+                     colourOf(item, kHandle));
     }
     for (std::size_t i = 0; i < l.blocks.size(); ++i) {
         const auto corners = blockCorners(l.blocks[i]);
@@ -388,8 +414,8 @@ void LevelEditorView::drawHandles(Renderer2D& r, const Camera& camera) const {
     }
     for (std::size_t i = 0; i < l.targets.size(); ++i) {
         const game::Target& t = l.targets[i];
-        r.strokeCircle(t.position, t.radius, colourOf({ItemKind::Target, static_cast<int>(i)}, kOutline),
-                       2.0f, 4.0f);
+        r.strokeCircle(t.position, t.radius,
+                       colourOf({ItemKind::Target, static_cast<int>(i)}, kOutline), 2.0f, 4.0f);
         if (!t.path.empty()) r.polyline(t.path, kOutline, 1.0f);
     }
     for (std::size_t i = 0; i < l.cannons.size(); ++i) {
@@ -402,7 +428,8 @@ void LevelEditorView::drawHandles(Renderer2D& r, const Camera& camera) const {
         const game::Rope& rope = l.ropes[i];
         const Color c = colourOf({ItemKind::Rope, static_cast<int>(i)}, kOutline);
         r.line(rope.from, rope.to, c, 1.5f);
-        r.fillCircle(rope.from, camera.metres(4.0), rope.pinFrom && rope.fromBlock < 0 ? c : kHandle);
+        r.fillCircle(rope.from, camera.metres(4.0),
+                     rope.pinFrom && rope.fromBlock < 0 ? c : kHandle);
         r.strokeCircle(rope.to, camera.metres(4.0), c, 2.0f);
     }
     for (std::size_t i = 0; i < l.blobs.size(); ++i)
@@ -495,7 +522,8 @@ EditorRequests LevelEditorView::panel() {
                      ImGuiWindowFlags_NoSavedSettings);
     const game::Level& l = editor_.level();
     ImGui::TextWrapped("%s%s", l.name.c_str(), editor_.modified() ? "  (changed)" : "");
-    ImGui::TextDisabled("%s", editor_.file().empty() ? "new level, not saved yet" : editor_.file().c_str());
+    ImGui::TextDisabled("%s", editor_.file().empty() ? "new level, not saved yet"
+                                                     : editor_.file().c_str());
     ImGui::Separator();
     toolButtons();
     ImGui::Separator();
@@ -510,8 +538,8 @@ EditorRequests LevelEditorView::panel() {
     ImGui::PushItemWidth(140.0f); // room for the labels beside the fields
     if (exists(l, selected_)) {
         char title[64];
-        std::snprintf(title, sizeof title, "%s %d###selected", game::editor::itemKindName(selected_.kind),
-                      selected_.index);
+        std::snprintf(title, sizeof title, "%s %d###selected",
+                      game::editor::itemKindName(selected_.kind), selected_.index);
         ImGui::SetNextItemOpen(true, ImGuiCond_Appearing);
         if (ImGui::CollapsingHeader(title)) changed |= itemPropertiesPanel(draft, selected_);
     }
@@ -529,8 +557,9 @@ EditorRequests LevelEditorView::panel() {
     ImGui::End();
 
     // What the tool does, under the world.
-    ImGui::SetNextWindowPos(ImVec2(std::min(kEditorPanelWidth, 0.5f * display.x) + 12.0f, display.y - 34.0f),
-                            ImGuiCond_Always);
+    ImGui::SetNextWindowPos(
+        ImVec2(std::min(kEditorPanelWidth, 0.5f * display.x) + 12.0f, display.y - 34.0f),
+        ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.55f);
     ImGui::Begin("##editorhint", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |

@@ -88,7 +88,7 @@ class LevelEditorView {
     game::editor::Item selected_;
     game::editor::Item hovered_;
     bool dragging_ = false;
-    phys::Vec2 grabOffset_; ///< item position minus the pointer when the drag began
+    phys::Vec2 grabOffset_;      ///< item position minus the pointer when the drag began
     bool widgetGesture_ = false; ///< a panel field is being edited (one undo step)
     char saveName_[64] = "";
     std::string status_;
