@@ -102,13 +102,17 @@ Item LevelEditor::hitTest(Vec2 at, double reach) const {
     for (std::size_t i = 0; i < level_.terrain.points.size(); ++i)
         consider({ItemKind::TerrainPoint, static_cast<int>(i)}, level_.terrain.points[i], 0.0);
     if (best) return best;
-    // Bodies: the last drawn (on top) first.
-    for (std::size_t i = level_.blocks.size(); i-- > 0;)
-        if (insideBlock(level_.blocks[i], at)) return {ItemKind::Block, static_cast<int>(i)};
+    if (const int block = blockAt(at); block >= 0) return {ItemKind::Block, block};
     for (std::size_t i = 0; i < level_.ropes.size(); ++i)
         if (distanceToSegment(at, level_.ropes[i].from, level_.ropes[i].to) <= reach)
             return {ItemKind::Rope, static_cast<int>(i), -1};
     return {};
+}
+
+int LevelEditor::blockAt(Vec2 at) const {
+    for (std::size_t i = level_.blocks.size(); i-- > 0;)
+        if (insideBlock(level_.blocks[i], at)) return static_cast<int>(i);
+    return -1;
 }
 
 Vec2 LevelEditor::positionOf(const Item& item) const {

@@ -63,6 +63,9 @@ class LevelEditor {
     /// object wins over the terrain point under it), else the top block it is inside,
     /// else a rope span within `reach`.
     Item hitTest(phys::Vec2 at, double reach) const;
+    /// The top block `at` lies inside (the one hitTest picks), or -1: where a rope end
+    /// let go there is tied.
+    int blockAt(phys::Vec2 at) const;
     /// Where an item sits: its centre, position, or the rope end (a whole rope: its middle).
     phys::Vec2 positionOf(const Item& item) const;
 

@@ -63,6 +63,14 @@ SDL_Event button(Uint32 type, Vec2 pixel) {
     return e;
 }
 
+SDL_Event motion(Vec2 pixel) {
+    SDL_Event e{};
+    e.type = SDL_MOUSEMOTION;
+    e.motion.x = static_cast<int>(pixel.x);
+    e.motion.y = static_cast<int>(pixel.y);
+    return e;
+}
+
 /// The PNG as written, RGBA, row 0 at the top.
 ui::Image readPng(const std::string& path) {
     ui::Image img;
@@ -196,4 +204,35 @@ TEST(EditorScreen, PlaysTheEditedLevelAndComesBackToIt) {
     ASSERT_EQ(screen.levelEditor()->saveAs("castle_plus"), "");
     const game::Level saved = game::loadLevel((scratch.dir / "maps/castle_plus.json").string());
     EXPECT_EQ(saved.blocks.size(), blocks + 1);
+}
+
+TEST(EditorScreen, ARopeDrawnOntoABlockIsTiedToIt) {
+    Scratch scratch;
+    std::string error;
+    auto context = ui::createHeadlessContext(kW, kH, ui::HeadlessBackend::Auto, error);
+    ASSERT_NE(context, nullptr) << error;
+    ui::GameScreen screen(*context, nullptr, editCastle(scratch.dir));
+    ui::LevelEditorView* view = screen.levelEditor();
+    ASSERT_NE(view, nullptr);
+    const ui::Camera camera = view->framing(kW, kH);
+    const game::Block& crate = view->editor().level().blocks[0]; // at (150, 0.5), 1 m
+    const Vec2 anchor{140.0, 20.0};
+    screen.handleEvent(key(SDLK_6));
+    screen.handleEvent(button(SDL_MOUSEBUTTONDOWN, camera.toPixel(anchor)));
+    for (double s : {0.25, 0.5, 0.75, 1.0})
+        screen.handleEvent(motion(camera.toPixel(anchor + (crate.position - anchor) * s)));
+    screen.handleEvent(button(SDL_MOUSEBUTTONUP, camera.toPixel(crate.position)));
+    ASSERT_EQ(view->editor().level().ropes.size(), 1u);
+    const game::Rope& rope = view->editor().level().ropes[0];
+    EXPECT_EQ(rope.from, anchor);
+    EXPECT_NEAR(rope.to.x, crate.position.x, 0.5);
+    EXPECT_EQ(rope.toBlock, 0) << "let go inside block 0";
+    EXPECT_EQ(rope.fromBlock, -1);
+    EXPECT_TRUE(view->editor().valid()) << view->editor().problem();
+    view->editor().undo();
+    EXPECT_TRUE(view->editor().level().ropes.size() == 1u &&
+                view->editor().level().ropes[0].toBlock == -1)
+        << "the drag (tie included) is one step; the placement another";
+    view->editor().undo();
+    EXPECT_TRUE(view->editor().level().ropes.empty());
 }

@@ -53,7 +53,8 @@ constexpr ToolInfo kTools[] = {
     {LevelEditorView::Tool::Cannon, "cannon", "click to place a cannon; drag one to move it"},
     {LevelEditorView::Tool::Target, "target", "click to place a target; drag one to move it"},
     {LevelEditorView::Tool::Block, "block", "click to place a 1 m wooden block; drag to move"},
-    {LevelEditorView::Tool::Rope, "rope", "press at one end, drag to the other, let go"},
+    {LevelEditorView::Tool::Rope, "rope",
+     "press at one end, drag to the other, let go (an end let go on a block is tied to it)"},
     {LevelEditorView::Tool::Blob, "blob", "click to place a soft blob; drag to move"},
 };
 
@@ -232,6 +233,7 @@ void LevelEditorView::press(Vec2 at, double reach) {
         Item end = placed;
         end.end = 1;
         startDrag(end, p);
+        grabOffset_ = {}; // the far end is under the pointer, not 6 m right of it
         editor_.dragTo(end, p + Vec2{gridMetres_, 0.0});
         selected_ = placed;
         selected_.end = 1;
@@ -267,7 +269,20 @@ void LevelEditorView::move(Vec2 at, double reach) {
 void LevelEditorView::lift() {
     if (!dragging_) return;
     dragging_ = false;
+    if (selected_.kind == ItemKind::Rope && selected_.end >= 0 &&
+        exists(editor_.level(), selected_))
+        tieRopeEnd();
     editor_.endGesture();
+}
+
+void LevelEditorView::tieRopeEnd() {
+    // As the sandbox's rope does: an end let go inside a block is tied to it (the rope
+    // holds the block); let go outside every block, it is untied. Part of the drag's step.
+    game::Level l = editor_.level();
+    game::Rope& r = l.ropes[static_cast<std::size_t>(selected_.index)];
+    const bool from = selected_.end == 0;
+    (from ? r.fromBlock : r.toBlock) = editor_.blockAt(from ? r.from : r.to);
+    editor_.update(l);
 }
 
 void LevelEditorView::deleteSelected() {

@@ -74,6 +74,7 @@ class LevelEditorView {
     phys::Vec2 snapped(phys::Vec2 p) const;
     void startDrag(const game::editor::Item& item, phys::Vec2 at);
     void deleteSelected();
+    void tieRopeEnd();
     void refreshPreview();
     void drawHandles(Renderer2D& r, const Camera& camera) const;
     void toolButtons();
