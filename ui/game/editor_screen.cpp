@@ -543,8 +543,12 @@ EditorRequests LevelEditorView::panel() {
     toolButtons();
     ImGui::Separator();
     fileButtons(out);
+    // A fixed room for the verdict and the last action's word, so the fields below do
+    // not jump while a message comes and goes under the pointer.
+    ImGui::BeginChild("verdict", ImVec2(0.0f, 4.6f * ImGui::GetTextLineHeightWithSpacing()));
     verdict();
     if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
+    ImGui::EndChild();
     ImGui::Separator();
 
     // The fields edit a copy; a change is one undo step however long the field is held.
