@@ -161,6 +161,7 @@ void Match::addRope(const Rope& r) {
     const double depth = spanLength * std::sqrt(3.0 * r.sag / 8.0);
     const double link = (1.0 + r.sag) * spanLength / r.segments;
     ParticleId prev = kNoParticle;
+    RopeState built{r, kNoParticle, kNoParticle};
     for (int i = 0; i <= r.segments; ++i) {
         const double s = static_cast<double>(i) / r.segments;
         ParticleDef pd;
@@ -181,8 +182,11 @@ void Match::addRope(const Rope& r) {
             c.length = link;
             world_.constraints.push_back(c);
         }
+        if (i == 0) built.first = id;
+        built.last = id;
         prev = id;
     }
+    ropes_.push_back(built);
 }
 
 void Match::addBlob(const Blob& b) {

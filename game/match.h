@@ -91,6 +91,14 @@ struct BlobState {
     bool toppled = false;
 };
 
+/// A rope as built: its definition and the particles at its two ends (the links run
+/// between them), so the scene can be read back as a level (game/editor/sandbox_to_level.h).
+struct RopeState {
+    Rope def;
+    phys::ParticleId first = phys::kNoParticle;
+    phys::ParticleId last = phys::kNoParticle;
+};
+
 /// What the sandbox's hand holds: a block (pulled by a critically damped spring force
 /// toward the pointer) or a particle (on a spring to the pointer).
 struct GrabState {
@@ -137,6 +145,8 @@ class Match {
     const std::vector<TargetState>& targets() const { return targets_; }
     const std::vector<BlockState>& blocks() const { return blocks_; }
     const std::vector<BlobState>& blobs() const { return blobs_; }
+    /// The level's ropes and the ones spawned in the sandbox, in the order made.
+    const std::vector<RopeState>& ropes() const { return ropes_; }
     double wind() const { return world_.def().forces.wind.x; }
     /// The shell in flight, if any.
     std::optional<phys::ParticleId> shell() const;
@@ -242,6 +252,7 @@ class Match {
     std::vector<TargetState> targets_;
     std::vector<BlockState> blocks_;
     std::vector<BlobState> blobs_;
+    std::vector<RopeState> ropes_;
     std::vector<GameEvent> events_;
     std::mt19937_64 rng_;
     int current_ = 0;

@@ -106,6 +106,35 @@ void randomMapRow(RandomMapForm& form, MenuChoice& choice) {
         ImGui::TextColored(kDimText, "%s", form.status.c_str());
 }
 
+/// Level editor: a new level, or a listed one to edit, or the one being edited.
+void levelEditorRow(LevelEditorForm& form, const std::vector<LevelEntry>& levels, MenuChoice& choice) {
+    ImGui::TextColored(kGoldText, "Level editor");
+    ImGui::SameLine();
+    if (ImGui::Button("New level")) choice.editLevel = std::string();
+    ImGui::SameLine();
+    std::vector<const LevelEntry*> loadable;
+    for (const LevelEntry& e : levels)
+        if (e.error.empty()) loadable.push_back(&e);
+    form.selected = std::clamp(form.selected, 0, std::max(0, static_cast<int>(loadable.size()) - 1));
+    ImGui::PushItemWidth(230);
+    if (!loadable.empty() &&
+        ImGui::BeginCombo("##editlevel", loadable[static_cast<std::size_t>(form.selected)]->name.c_str())) {
+        for (std::size_t i = 0; i < loadable.size(); ++i)
+            if (ImGui::Selectable(loadable[i]->name.c_str(), static_cast<int>(i) == form.selected))
+                form.selected = static_cast<int>(i);
+        ImGui::EndCombo();
+    }
+    ImGui::PopItemWidth();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(loadable.empty());
+    if (ImGui::Button("Edit")) choice.editLevel = loadable[static_cast<std::size_t>(form.selected)]->file;
+    ImGui::EndDisabled();
+    if (!form.editing.empty()) {
+        ImGui::SameLine();
+        if (ImGui::Button(("Back to " + form.editing).c_str())) choice.continueEditing = true;
+    }
+}
+
 } // namespace
 
 std::vector<LevelEntry> listLevels(const std::string& folder) {
@@ -172,13 +201,18 @@ std::vector<ReplayEntry> listReplays(const std::string& folder) {
 }
 
 MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress& progress,
-                             PlayerSettings& settings, RandomMapForm* randomMap) {
+                             PlayerSettings& settings, RandomMapForm* randomMap,
+                             LevelEditorForm* editor, const std::vector<LevelEntry>* levels) {
     MenuChoice choice;
     beginMenuWindow("Choose a level", "ARTILLERY", "a physics playground: every level shows one idea");
     ImGui::SameLine(ImGui::GetWindowWidth() - 120);
     if (ImGui::SmallButton("Network duel")) choice.networkDuel = true; // ui/net/net_screen.cpp
     if (randomMap) {
         randomMapRow(*randomMap, choice);
+        ImGui::Separator();
+    }
+    if (editor && levels) {
+        levelEditorRow(*editor, *levels, choice);
         ImGui::Separator();
     }
     if (campaign.chapters.empty() && campaign.outside.empty())
@@ -319,6 +353,9 @@ void helpOverlay(bool& open) {
         {"replay: [ ] \\, R, T", "speed x1/8 .. x16, x1; from the start; take over"},
         {"R", "restart the level"},
         {"L", "level select"},
+        {"editor: 1 .. 7, G", "tool (select, terrain, cannon, target, block, rope, blob); grid snap"},
+        {"editor: Del, Ctrl+Z/Y, Ctrl+S", "delete the selected item; undo / redo; save"},
+        {"editor: F5, F4", "play the level being made; back to the editor from its match"},
         {"wheel, right drag, Home", "zoom, pan, re-frame"},
         {"F12", "screenshot (PNG in the current folder)"},
         {"controller",

@@ -58,6 +58,13 @@ struct RandomMapRequest {
     bool duel = false;
 };
 
+/// The level select's Level editor row: a new level, or one of the listed levels to
+/// edit, or back to the level being edited.
+struct LevelEditorForm {
+    int selected = 0;      ///< index into the level list shown
+    std::string editing;   ///< the name of the level the editor holds ("" = none open)
+};
+
 /// What the player picked in a menu this frame.
 struct MenuChoice {
     std::optional<std::string> openLevel; ///< a level file to play
@@ -74,15 +81,19 @@ struct MenuChoice {
     std::string lessonThenLevel;           ///< the level its Play button opens ("" = none)
     std::optional<std::string> lessonSeen; ///< a chapter id whose lesson was read
     std::optional<RandomMapRequest> randomMap; ///< generate this map and play it
+    std::optional<std::string> editLevel; ///< open the editor on this file ("" = a new level)
+    bool continueEditing = false;         ///< back to the level the editor holds
 };
 
 struct CampaignMenu; // ui/game/campaign_view.h
 
 /// The level select screen: the campaign's chapters and the levels outside them, with the
 /// progress that unlocks them, and the buttons to the other screens; with `randomMap`,
-/// also its Random map row.
+/// also its Random map row; with `editor`, the Level editor row over `levels`.
 MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress& progress,
-                             PlayerSettings& settings, RandomMapForm* randomMap = nullptr);
+                             PlayerSettings& settings, RandomMapForm* randomMap = nullptr,
+                             LevelEditorForm* editor = nullptr,
+                             const std::vector<LevelEntry>* levels = nullptr);
 /// The replays in `folder` ("" when this run keeps none: check runs, headless).
 MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::string& folder);
 MenuChoice pauseMenu(PlayerSettings& settings);

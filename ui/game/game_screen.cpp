@@ -8,7 +8,10 @@
 #include "ui/platform/gl_setup.h"
 #include "ui/game/game_screen.h"
 
+#include "game/editor/level_editor.h"
+#include "game/editor/sandbox_to_level.h"
 #include "game/files/json_reader.h"
+#include "game/level_write.h"
 #include "ui/game/match_frame.h"
 #include "ui/game/target_inset.h"
 #include "ui/game/settings_commands.h"
@@ -102,6 +105,9 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
     if (window_ && SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER) == 0) pad_.openFirst();
     if (!def_.replayFile.empty()) {
         openReplay(def_.replayFile); // throws with the loader's message
+    } else if (def_.edit) {
+        openEditor(def_.levelFile.empty() ? game::editor::newLevel()
+                                          : game::loadLevel(def_.levelFile)); // throws likewise
     } else if (def_.levelFile.empty()) {
         overlay_ = Overlay::LevelSelect;
         for (const LevelEntry& e : levels_) {
@@ -169,6 +175,7 @@ void GameScreen::persist() {
 
 void GameScreen::openLevel(const std::string& file) {
     level_ = game::loadLevel(file);
+    editing_ = playtest_ = false;
     backdrop_.reset();
     viewer_.reset();
     restart();
@@ -235,6 +242,102 @@ const game::Match* GameScreen::shownMatch() const {
     return session_ ? &session_->match() : nullptr;
 }
 
+// ---- the level editor --------------------------------------------------------------------
+std::string GameScreen::mapsFolder() const { return randomMapsFolder(def_.settingsFolder); }
+
+void GameScreen::openEditor(game::Level level) {
+    editor_ = std::make_unique<LevelEditorView>(std::move(level), mapsFolder());
+    session_.reset();
+    viewer_.reset();
+    backdrop_.reset();
+    editing_ = true;
+    playtest_ = false;
+    overlay_ = Overlay::None;
+    cameraMoved_ = panning_ = false;
+    camera_ = editor_->framing(context_.width(), context_.height());
+}
+
+/// As the Random map row does: the level is written into the maps folder and played from
+/// there, through the loader, so what is played is what the file says (and a replay of
+/// it names a file that holds it).
+void GameScreen::playEditedLevel() {
+    const game::editor::LevelEditor& edited = editor_->editor();
+    if (!edited.valid()) return;
+    const std::string file = (std::filesystem::path(mapsFolder()) / "playtest.json").string();
+    try {
+        std::filesystem::create_directories(mapsFolder());
+        game::saveLevel(file, edited.level());
+        openLevel(file);
+    } catch (const std::exception& e) {
+        stats_.status = std::string("cannot play it: ") + e.what();
+        std::cerr << "artillery: " << stats_.status << "\n";
+        return;
+    }
+    playtest_ = true;
+}
+
+void GameScreen::backToEditor() {
+    session_.reset();
+    viewer_.reset();
+    editing_ = true;
+    playtest_ = false;
+    overlay_ = Overlay::None;
+    cameraMoved_ = panning_ = false;
+    camera_ = editor_->framing(context_.width(), context_.height());
+    aim_ = AimInput();
+}
+
+void GameScreen::editorPanels() {
+    const EditorRequests r = editor_->panel();
+    if (helpOpen_) helpOverlay(helpOpen_);
+    if (r.play) playEditedLevel();
+    if (r.close) {
+        editing_ = false; // kept: the level select offers to come back to it
+        overlay_ = Overlay::LevelSelect;
+    }
+}
+
+bool GameScreen::editorEvent(const SDL_Event& e) {
+    LevelEditorView& view = *editor_;
+    if (e.type == SDL_KEYDOWN) {
+        if (imgui_.wantsKeyboard()) return running_;
+        const SDL_Keycode key = e.key.keysym.sym;
+        if (key == SDLK_F12) screenshotRequested_ = true;
+        if (key == SDLK_F1) helpOpen_ = !helpOpen_;
+        if (key == SDLK_HOME) cameraMoved_ = false; // framed again next frame
+        const bool ctrl = (e.key.keysym.mod & KMOD_CTRL) != 0;
+        const bool shift = (e.key.keysym.mod & KMOD_SHIFT) != 0;
+        const EditorRequests r = view.key(key, ctrl, shift);
+        if (r.play) playEditedLevel();
+        if (r.close) {
+            editing_ = false;
+            overlay_ = Overlay::LevelSelect;
+        }
+        return running_;
+    }
+    const bool mouse = e.type == SDL_MOUSEBUTTONDOWN || e.type == SDL_MOUSEBUTTONUP ||
+                       e.type == SDL_MOUSEMOTION || e.type == SDL_MOUSEWHEEL;
+    if (!mouse) return running_;
+    // The panel takes the mouse over it, but a drag begun in the world ends in the world.
+    if (imgui_.wantsMouse() && !view.dragging() && !panning_) return running_;
+    const double reach = camera_.metres(8.0); // a handle takes clicks 8 px around it
+    // Over the panel a press is the panel's, even on the frame the editor comes back
+    // (ImGui learns what is under the pointer only from the frame it draws).
+    const bool overPanel = e.type == SDL_MOUSEBUTTONDOWN &&
+                           pointerPixels(e.button.x, e.button.y).x <
+                               std::min<double>(kEditorPanelWidth, 0.5 * context_.width());
+    if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT && !overPanel)
+        view.press(camera_.toWorld(pointerPixels(e.button.x, e.button.y)), reach);
+    else if (e.type == SDL_MOUSEBUTTONUP && e.button.button == SDL_BUTTON_LEFT)
+        view.lift();
+    else {
+        if (e.type == SDL_MOUSEMOTION)
+            view.move(camera_.toWorld(pointerPixels(e.motion.x, e.motion.y)), reach);
+        cameraEvent(e); // wheel zooms, right (or middle) drag pans
+    }
+    return running_;
+}
+
 // ---- camera ---------------------------------------------------------------------------
 void GameScreen::frameLevel(const game::Match& m) {
     camera_ = levelCamera(m, context_.width(), context_.height());
@@ -242,7 +345,7 @@ void GameScreen::frameLevel(const game::Match& m) {
     rig_.tick(m); // from this tick on
 }
 
-bool GameScreen::following() const { return settings_.cameraFollow && !cameraMoved_; }
+bool GameScreen::following() const { return !editing_ && settings_.cameraFollow && !cameraMoved_; }
 
 void GameScreen::followShot(const game::Match& m) {
     rig_.tick(m);
@@ -301,6 +404,7 @@ void GameScreen::recordResultOnce() {
     const game::Match& m = session_->match();
     if (!m.over() || resultRecorded_) return;
     resultRecorded_ = true;
+    if (playtest_) return; // a level being made earns no stars
     const bool humanWon = m.winner() >= 0 &&
                           m.cannons()[static_cast<std::size_t>(m.winner())].def.player != "cpu";
     newBest_ = progress_.record(level_.file, m.score(), m.stars(), humanWon, m.assisted() != 0);
@@ -384,6 +488,7 @@ void GameScreen::openReplay(const std::string& file) {
     // The same level the live game would use, so taking over plays as a new game would.
     viewer_ = std::make_unique<ReplayViewer>(file, hotseatInUse() ? withHotseat(level_) : level_,
                                              std::move(replay));
+    editing_ = playtest_ = false;
     session_.reset();
     backdrop_.reset();
     branchNote_.clear();
@@ -496,9 +601,14 @@ void GameScreen::drawPlaying() {
 }
 
 void GameScreen::drawPanels() {
+    if (editing_) {
+        editorPanels();
+        return;
+    }
     MenuChoice choice;
+    editorForm_.editing = editor_ ? editor_->editor().level().name : "";
     if (overlay_ == Overlay::LevelSelect)
-        choice = levelSelectScreen(campaign_, progress_, settings_, &randomMap_);
+        choice = levelSelectScreen(campaign_, progress_, settings_, &randomMap_, &editorForm_, &levels_);
     if (overlay_ == Overlay::Lesson)
         choice = lessonScreen(campaign_.campaign, lessonChapter_, lessonThenLevel_);
     if (overlay_ == Overlay::Replays) choice = replaysScreen(replays_, replaysFolder());
@@ -513,6 +623,7 @@ void GameScreen::drawPanels() {
         else if (req.exportVideo)
             viewer_->exportVideo(replaysFolder());
     }
+    bool sceneToEditor = false;
     if (session_ && overlay_ == Overlay::None) {
         game::Match& m = session_->match();
         const MatchPanelRequests req = matchPanel(m, humanTurn(), settings_, settings_.difficulty,
@@ -521,6 +632,17 @@ void GameScreen::drawPanels() {
             if (auto c = AimInput::select(m.cannon(), *req.projectile)) submit(*c);
         if (req.fire && humanTurn()) submit(aim_.fire(m.cannon()));
         submit(sandboxTools_.panel(m));
+        sceneToEditor = sandboxTools_.takeSaveAsLevel();
+        if (playtest_) {
+            const ImVec2 display = ImGui::GetIO().DisplaySize;
+            // Under the wind gauge at the top centre.
+            ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, 76.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+            ImGui::Begin("Playtest", nullptr,
+                         ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                             ImGuiWindowFlags_NoSavedSettings);
+            if (ImGui::Button("Back to the editor (F4)")) choice.continueEditing = true;
+            ImGui::End();
+        }
         if (req.endTurn && humanTurn()) {
             game::Command c;
             c.kind = game::CommandKind::EndTurn;
@@ -539,7 +661,7 @@ void GameScreen::drawPanels() {
             if (scene.fire && humanTurn()) submit(aim_.fire(m.cannon()));
             if (scene.reset) restart();
         }
-        if (m.over() && resultRecorded_ && !choice.openLevel)
+        if (m.over() && resultRecorded_ && !choice.openLevel && !playtest_)
             choice = nextLevelCard(campaign_, progress_, level_.file);
         // Last: a rewind replaces the match `m` refers to.
         if (req.rewindTo && session_) rewindLive(*req.rewindTo);
@@ -550,7 +672,18 @@ void GameScreen::drawPanels() {
         lessonThenLevel_ = choice.lessonThenLevel;
         overlay_ = Overlay::Lesson;
     }
+    if (sceneToEditor && session_) openEditor(game::editor::sandboxToLevel(session_->match()));
     if (choice.openLevel) openLevel(*choice.openLevel);
+    if (choice.editLevel) {
+        try {
+            openEditor(choice.editLevel->empty() ? game::editor::newLevel()
+                                                 : game::loadLevel(*choice.editLevel));
+        } catch (const std::exception& e) {
+            stats_.status = e.what();
+            std::cerr << "artillery: " << e.what() << "\n";
+        }
+    }
+    if (choice.continueEditing && editor_) backToEditor();
     if (choice.randomMap)
         if (const auto file = writeRandomMap(*choice.randomMap, settings_.difficulty,
                                              randomMapsFolder(def_.settingsFolder), randomMap_.status))
@@ -577,14 +710,19 @@ void GameScreen::drawPanels() {
 }
 
 void GameScreen::frame(double wallSeconds) {
-    if (viewer_) {
+    if (editing_) {
+        // The level being made is not simulated: it is drawn at its first tick.
+    } else if (viewer_) {
         viewer_->advance(wallSeconds, overlay_ != Overlay::None || helpOpen_, matchView_);
     } else if (session_) {
         pollHeldInput(wallSeconds);
         simulate(wallSeconds);
     }
     const int w = context_.width(), h = context_.height();
-    if (w != camera_.width || h != camera_.height) {
+    if (editing_ && !cameraMoved_) {
+        camera_ = editor_->framing(w, h); // the whole world beside the panel
+        msaa_.resize(w, h, samples_);
+    } else if (w != camera_.width || h != camera_.height) {
         if (cameraMoved_ || !shownMatch())
             camera_.width = w, camera_.height = h;
         else
@@ -595,7 +733,9 @@ void GameScreen::frame(double wallSeconds) {
     markAssists();
     imgui_.newFrame(wallSeconds);
     msaa_.bind(context_.framebuffer());
-    if (shownMatch()) {
+    if (editing_) {
+        editor_->drawWorld(renderer_, camera_);
+    } else if (shownMatch()) {
         drawPlaying();
     } else if (backdrop_) {
         // The select screen over the first level's landscape.
@@ -646,6 +786,10 @@ bool GameScreen::keyDown(const SDL_Event& e) {
     const SDL_Keycode key = e.key.keysym.sym;
     if (key == SDLK_F12) {
         screenshotRequested_ = true;
+        return true;
+    }
+    if (key == SDLK_F4 && playtest_ && editor_) {
+        backToEditor();
         return true;
     }
     if (key == SDLK_F1 || key == SDLK_QUESTION || (key == SDLK_SLASH && (e.key.keysym.mod & KMOD_SHIFT))) {
@@ -796,6 +940,7 @@ bool GameScreen::handleEvent(const SDL_Event& e) {
     if (e.type == SDL_QUIT) return false;
     if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_CLOSE) return false;
     const bool uiWants = imgui_.processEvent(e);
+    if (editing_) return editorEvent(e);
     const PadAction padAction = pad_.handle(e);
     if (e.type == SDL_KEYDOWN && !imgui_.wantsKeyboard()) return keyDown(e) && running_;
     if (e.type == SDL_KEYUP && e.key.keysym.sym == SDLK_SPACE && session_ && aim_.charging())

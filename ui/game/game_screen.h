@@ -22,6 +22,7 @@
 #include "physics/clock.h"
 #include "ui/game/aim_input.h"
 #include "ui/game/campaign_view.h"
+#include "ui/game/editor_screen.h"
 #include "ui/game/game_menus.h"
 #include "ui/game/match_view.h"
 #include "ui/game/pad_input.h"
@@ -62,6 +63,8 @@ struct GameScreenDef {
     std::optional<bool> hotseat;
     /// Open the level as a sandbox (a `sandbox` command at its first tick).
     bool sandbox = false;
+    /// Open the level editor on levelFile ("" = a new level) instead of playing.
+    bool edit = false;
     /// What to draw at the start: trails and the debug view's overlays (play flags).
     ViewControls view;
 };
@@ -87,9 +90,21 @@ class GameScreen final : public Screen {
     const game::Session* session() const { return session_.get(); }
     /// The replay being watched, if any.
     const ReplayViewer* replayViewer() const { return viewer_.get(); }
+    /// The level editor, while it is on screen (null otherwise).
+    LevelEditorView* levelEditor() { return editing_ ? editor_.get() : nullptr; }
+    /// The match being played is the editor's level (a playtest: the editor waits).
+    bool playtest() const { return playtest_; }
 
   private:
     void openLevel(const std::string& file);
+    // The level editor (ui/game/editor_screen.*): open it, play its level, come back.
+    void openEditor(game::Level level);
+    void playEditedLevel();
+    void backToEditor();
+    bool editorEvent(const SDL_Event& e);
+    void editorPanels();
+    /// Where Save As and the playtest write levels: the player's maps folder.
+    std::string mapsFolder() const;
     void restart();
     /// Plays `session` from its current tick (a new match, or a replay taken over).
     void playSession(std::unique_ptr<game::Session> session);
@@ -156,6 +171,11 @@ class GameScreen final : public Screen {
     std::vector<ReplayEntry> replays_;
     RewindControl rewind_;
     RandomMapForm randomMap_; ///< the level select's Random map row
+    LevelEditorForm editorForm_; ///< the level select's Level editor row
+    /// The level editor; kept while its level is played or the level select is shown.
+    std::unique_ptr<LevelEditorView> editor_;
+    bool editing_ = false;  ///< the editor is on screen
+    bool playtest_ = false; ///< the match in play is the editor's level
     /// Where the game in play branched from (a replay taken over, a rewind), "" if not.
     std::string branchNote_;
     std::uint64_t branchTick_ = 0;

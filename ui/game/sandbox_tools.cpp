@@ -64,6 +64,10 @@ std::vector<Command> SandboxTools::panel(const game::Match& match) {
     }
     ImGui::Text("%zu particles, %zu springs, %zu blocks", match.world().particles.count(),
                 match.world().springs.size(), match.blocks().size());
+    if (ImGui::Button("Save as level")) saveAsLevel_ = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Opens the scene in the level editor: the blocks, ropes and blobs where "
+                          "they are now (loose balls are left out); save it from there");
     ImGui::End();
     return out;
 }

@@ -25,6 +25,13 @@ class SandboxTools {
 
     /// The "Sandbox" panel; returns the commands its buttons asked for.
     std::vector<game::Command> panel(const game::Match& match);
+    /// True once after the panel's "Save as level" was pressed: the screen opens the
+    /// scene in the level editor (game/editor/sandbox_to_level.h).
+    bool takeSaveAsLevel() {
+        const bool asked = saveAsLevel_;
+        saveAsLevel_ = false;
+        return asked;
+    }
     /// True when the left mouse belongs to a sandbox tool rather than to the cannon.
     bool active(const game::Match& match) const { return match.sandbox() && tool_ != Tool::Cannon; }
 
@@ -44,6 +51,7 @@ class SandboxTools {
     phys::Vec2 pointer_;
     bool holding_ = false;
     phys::Vec2 lastDrag_;
+    bool saveAsLevel_ = false;
 };
 
 } // namespace ui

@@ -61,6 +61,9 @@ ImGuiLayer::~ImGuiLayer() {
 }
 
 bool ImGuiLayer::processEvent(const SDL_Event& event) {
+    // Headless there is no SDL backend to take events (tests hand the screen synthetic
+    // ones): they are not ImGui's.
+    if (!window_) return false;
     return ImGui_ImplSDL2_ProcessEvent(&event);
 }
 

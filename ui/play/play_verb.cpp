@@ -32,7 +32,7 @@ constexpr const char* kPlayUsage =
                       [--size WxH] [--headless] [--context auto|osmesa|egl]
                       [--warmup SECONDS] [--msaa N] [--no-panel]
                       [--difficulty easy|normal|hard] [--hotseat] [--sandbox] [--demo]
-                      [--progress FILE]
+                      [--edit] [--progress FILE]
                       [--velocities] [--forces] [--ghosts] [--contacts] [--cells]
                       [--sleeping] [--models] [--json]
 
@@ -74,6 +74,10 @@ options:
   --sandbox             open LEVEL as a sandbox: no shot budget, no score, and the
                         Sandbox panel's tools (spawn blocks, balls, ropes, springs,
                         cloth, blobs; grab and drag) on the left mouse button
+  --edit                open the level editor on LEVEL (a new level without one):
+                        terrain points, cannons, targets, blocks, ropes, blobs, the
+                        physics and the wind; checked live as `check` does; saved
+                        into your maps folder; F5 plays it, F4 comes back
   --demo                the physics demo scene instead of a level (a cannon with a
                         drag-free twin and a swinging spring chain); with it:
                         --integrator NAME, --planet NAME | --gravity G, --wind VX,
@@ -102,6 +106,9 @@ keys:  mouse drag aim   arrows angle/power   hold Space charge, release fire
 replay: Space or K play/pause   . one tick   , one tick back   [ ] speed x1/8..x16
        \ x1   left/right 1 s back/forward (Shift 5 s)   PgUp/PgDn previous/next shot
        R from the start   T take over (play on from here, recording a branch)
+editor: 1-7 tool (select, terrain, cannon, target, block, rope, blob)   left click
+       places, drag moves   Del deletes   G grid snap   Ctrl+Z undo   Ctrl+Y redo
+       Ctrl+S save   F5 play (F4 back to the editor)   Esc deselect, then levels
 mouse: wheel zooms at the pointer, right drag pans, Home re-frames
 controller: left stick aims, triggers set power, A fires, B ends the turn
 
@@ -128,6 +135,7 @@ struct PlayOptions {
     std::optional<game::Difficulty> difficulty;
     std::optional<bool> hotseat;
     bool sandbox = false;
+    bool edit = false;    ///< the level editor on `level` ("" = a new level)
     std::string progress; ///< a progress file to use instead of the settings folder's
 };
 
@@ -216,6 +224,9 @@ PlayOptions parseOptions(const Args& args) {
     o.sandbox = args.flag("sandbox");
     if (o.sandbox && (o.demo || !o.replay.empty()))
         args.fail("--sandbox opens a level: it cannot go with --demo or --replay");
+    o.edit = args.flag("edit");
+    if (o.edit && (o.demo || !o.replay.empty() || o.sandbox))
+        args.fail("--edit opens the level editor: it cannot go with --demo, --replay or --sandbox");
     o.progress = args.text("progress", "");
     if (!o.progress.empty() && (o.demo || !o.replay.empty()))
         args.fail("--progress is for the levels: it cannot go with --demo or --replay");
@@ -250,8 +261,8 @@ std::string levelsFolder() {
 /// The game for a level (or the level select screen in a window); the physics demo with
 /// --demo, or headless without a level.
 std::unique_ptr<Screen> makeScreen(GLContext& context, SdlWindow* window, const PlayOptions& o) {
-    const bool demo =
-        o.demo || (o.level.empty() && o.replay.empty() && o.progress.empty() && !window);
+    const bool demo = o.demo || (o.level.empty() && o.replay.empty() && o.progress.empty() &&
+                                 !o.edit && !window);
     if (demo) return std::make_unique<PlayScreen>(context, window, screenDef(o));
     GameScreenDef d;
     d.levelFile = o.level;
@@ -262,6 +273,7 @@ std::unique_ptr<Screen> makeScreen(GLContext& context, SdlWindow* window, const 
     d.difficulty = o.difficulty;
     d.hotseat = o.hotseat;
     d.sandbox = o.sandbox;
+    d.edit = o.edit;
     d.view = o.view;
     // A person playing keeps results and layout; check runs (--frames) and headless
     // pictures leave nothing behind.
@@ -439,7 +451,7 @@ const game::cli::Verb& playVerb() {
                                       kPlayUsage,
                                       {"headless", "no-panel", "no-drag", "velocities", "forces",
                                        "ghosts", "contacts", "cells", "sleeping", "models", "demo",
-                                       "hotseat", "sandbox"},
+                                       "hotseat", "sandbox", "edit"},
                                       runPlay};
     return verb;
 }
