@@ -113,12 +113,17 @@ void Synthesizer::forgetMatch() {
 void Synthesizer::observe(const Match& m) {
     if (seen_ && (m.tick() < lastTick_ || m.events().size() < seenEvents_)) forgetMatch();
     if (!viewSet_) view_ = {m.level().worldMin.x, m.level().worldMax.x};
+    // A paused match (looked at every frame, no tick run) has nothing new to hear: its
+    // contacts are the last tick's, already heard.
+    const bool ticked = !seen_ || m.tick() != lastTick_;
     followClock(m);
     seen_ = true;
     hearEvents(m);
-    hearShell(m);
-    hearContacts(m);
-    hearBlocks(m);
+    if (ticked) {
+        hearShell(m);
+        hearContacts(m);
+        hearBlocks(m);
+    }
     lastTick_ = m.tick();
 }
 

@@ -349,3 +349,22 @@ TEST(Sound, WavNamesAreCheckedBeforeTheRun) {
     EXPECT_NE(checkWavFile("/nonexistent-folder/t.wav").find("does not exist"), std::string::npos);
     EXPECT_EQ(checkWavFile((fs::temp_directory_path() / "t.wav").string()), "");
 }
+
+// Live (the window looks every frame, also while paused): a tick's contacts are heard once,
+// however often the match is looked at before the next tick.
+TEST(Sound, APausedMatchIsHeardOnce) {
+    Match m(level("11_sandbox.json"));
+    Command c = cmd(CommandKind::Spawn, 0.0, "steel-ball");
+    c.at = {40.0, 6.0};
+    ASSERT_EQ(m.apply(c), "");
+    Synthesizer synth(SynthesizerDef{.live = true});
+    for (int i = 0; i < 240 && synth.started(VoiceKind::Impact) == 0; ++i) {
+        m.step();
+        synth.observe(m);
+    }
+    const std::size_t heard = synth.started(VoiceKind::Impact);
+    ASSERT_GT(heard, 0u) << "the ball lands within 2 s";
+    for (int frame = 0; frame < 10; ++frame)
+        synth.observe(m);
+    EXPECT_EQ(synth.started(VoiceKind::Impact), heard);
+}

@@ -356,6 +356,7 @@ void GameScreen::simulate(double wallSeconds) {
         session_->step();
         matchView_.observe(session_->match());
         statsPanel_.sample(session_->match());
+        hearTick(session_->match());
         physicsUs += session_->match().world().profile().totalUs;
     }
     const game::Match& m = session_->match();
@@ -579,21 +580,29 @@ void GameScreen::drawPanels() {
     if (choice.networkDuel) networkDuel_ = true, running_ = false;
     if (choice.settingsChanged) persist();
     // A click for every button, box and slider pressed this frame.
-    if (audio_ && !audio_->silent() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
-        ImGui::IsAnyItemHovered())
+    if (hearing() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && ImGui::IsAnyItemHovered())
         sound_.click();
 }
 
+bool GameScreen::hearing() const {
+    return audio_ && !audio_->silent();
+}
+
+void GameScreen::hearTick(const game::Match& m) {
+    if (!hearing()) return;
+    // Panned across what the camera shows.
+    sound_.setView({camera_.visibleMin().x, camera_.visibleMax().x});
+    sound_.observe(m);
+}
+
 void GameScreen::hearFrame() {
-    if (!audio_ || audio_->silent()) return;
+    if (!hearing()) return;
     sound_.setMix(settings_.sound);
-    if (const game::Match* m = shownMatch()) {
-        // Panned across what the camera shows.
-        sound_.setView({camera_.visibleMin().x, camera_.visibleMax().x});
-        sound_.observe(*m);
-    } else {
+    // A live match was heard tick by tick (simulate); a replay is heard once a frame.
+    if (viewer_)
+        hearTick(viewer_->match());
+    else if (!session_)
         sound_.forgetMatch();
-    }
     audio_->feed(sound_);
 }
 

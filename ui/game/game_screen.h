@@ -128,7 +128,10 @@ class GameScreen final : public Screen {
     void drawPanels();
     void persist();
     void loadProgress();
-    /// The sound: the synthesizer hears the match on screen, the device plays it.
+    /// The sound: the synthesizer hears the match on screen (a live one after every
+    /// tick, a replay once a frame) and the device plays it; nothing without a device.
+    bool hearing() const;
+    void hearTick(const game::Match& m);
     void hearFrame();
     phys::Vec2 pivotPixels() const;
     phys::Vec2 pointerPixels(int x, int y) const;
