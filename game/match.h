@@ -137,6 +137,9 @@ class Match {
     const std::vector<TargetState>& targets() const { return targets_; }
     const std::vector<BlockState>& blocks() const { return blocks_; }
     const std::vector<BlobState>& blobs() const { return blobs_; }
+    /// The particle-body coupling: its events are the last tick's hits of particles on
+    /// blocks (read by the sound; nothing may change it from outside).
+    const phys::ParticleBodyCoupling& coupling() const { return coupling_; }
     double wind() const { return world_.def().forces.wind.x; }
     /// The shell in flight, if any.
     std::optional<phys::ParticleId> shell() const;

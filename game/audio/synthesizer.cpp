@@ -220,27 +220,51 @@ void Synthesizer::hearShell(const Match& m) {
 }
 
 void Synthesizer::hearContacts(const Match& m) {
-    // The contacts the solver resolved this tick, the hardest first (ties by order).
-    std::vector<const phys::ContactEvent*> hard;
-    for (const phys::ContactEvent& e : m.world().contacts())
-        if (!e.resting && e.closingSpeed > def_.impactSpeedMps) hard.push_back(&e);
-    std::stable_sort(hard.begin(), hard.end(), [](const auto* a, const auto* b) {
-        return a->closingSpeed > b->closingSpeed;
-    });
-    if (hard.size() > def_.impactsPerTick) hard.resize(def_.impactsPerTick);
+    // What one contact sounds like: where, how hard, of what, how elastic.
+    struct Hit {
+        double speed;
+        Vec2 where;
+        Timbre timbre;
+        double restitution;
+        std::uint64_t salt;
+    };
+    std::vector<Hit> hits;
     const phys::World& w = m.world();
-    for (const phys::ContactEvent* e : hard) {
-        const auto& surface = e->b == phys::kNoParticle
-                                  ? w.materials[w.shapes.material(e->shape)].name
-                                  : w.materials[w.particles.material[e->b]].name;
-        const auto& struck = w.materials[w.particles.material[e->a]].name;
-        // The harder of the two sets the ring: a steel ball on earth still rings.
-        const Timbre t = timbreOf(struck) == Timbre::Steel ? Timbre::Steel : timbreOf(surface);
-        // The restitution the contact applied: e = v_out.n / v_in.n.
-        const double restitution =
-            std::clamp(dot(e->velocity, e->normal) / e->closingSpeed, 0.0, 1.0);
-        start(impact(t, e->closingSpeed, restitution), m.tick(), e->position, e->a);
+    auto materialOf = [&](phys::ParticleId p) -> const std::string& {
+        return w.materials[w.particles.material[p]].name;
+    };
+    // The harder of the two sets the ring: a steel ball on earth still rings.
+    auto harder = [](Timbre particle, Timbre surface) {
+        return particle == Timbre::Steel ? Timbre::Steel : surface;
+    };
+    // Particles on the static world and on each other, as the solver resolved them: the
+    // restitution it applied is e = v_out.n / v_in.n.
+    for (const phys::ContactEvent& e : w.contacts()) {
+        if (e.resting || !(e.closingSpeed > def_.impactSpeedMps)) continue;
+        const std::string& surface = e.b == phys::kNoParticle
+                                         ? w.materials[w.shapes.material(e.shape)].name
+                                         : materialOf(e.b);
+        hits.push_back({e.closingSpeed, e.position,
+                        harder(timbreOf(materialOf(e.a)), timbreOf(surface)),
+                        std::clamp(dot(e.velocity, e.normal) / e.closingSpeed, 0.0, 1.0), e.a});
     }
+    // Particles on blocks (the coupling's impulses): the block's material; e from the
+    // particle's velocity after the tick along the contact normal.
+    for (const phys::BodyContactEvent& e : m.coupling().events()) {
+        if (!(e.closingSpeed > def_.impactSpeedMps) || !w.particles.alive(e.particle)) continue;
+        Timbre block = Timbre::Wood;
+        for (const BlockState& b : m.blocks())
+            if (b.body == e.body) block = timbreOf(b.def.material);
+        const double out = dot(w.particles.velocity(e.particle), e.normal);
+        hits.push_back({e.closingSpeed, e.point, harder(timbreOf(materialOf(e.particle)), block),
+                        std::clamp(out / e.closingSpeed, 0.0, 1.0), 0xc0u + e.particle});
+    }
+    // The hardest are heard (ties keep their order).
+    std::stable_sort(hits.begin(), hits.end(),
+                     [](const Hit& a, const Hit& b) { return a.speed > b.speed; });
+    if (hits.size() > def_.impactsPerTick) hits.resize(def_.impactsPerTick);
+    for (const Hit& h : hits)
+        start(impact(h.timbre, h.speed, h.restitution), m.tick(), h.where, h.salt);
 }
 
 void Synthesizer::hearBlocks(const Match& m) {

@@ -7,9 +7,10 @@
 //   Fired            the report, by the muzzle speed
 //   the shell        a whistle whose pitch follows its speed (and its Doppler shift
 //                    toward the listener), louder as v^2; a splash where it enters water
-//   contacts         every particle's impact on the static world (terrain, walls) above
-//                    1.5 m/s: loudness from the closing speed, timbre from the material,
-//                    ring from the restitution the solver applied (e = v_out / v_in)
+//   contacts         every particle's impact above 1.5 m/s on the static world (terrain,
+//                    walls), on another particle, or on a block (the coupling's hits), the
+//                    six hardest of a tick: loudness from the closing speed, timbre from
+//                    the materials, ring from the restitution (e = v_out / v_in)
 //   blocks           a block's velocity jumping by more than gravity explains (struck,
 //                    landing, knocked over): an impact of its material at |dv|
 //   Burst            the blast, by its impulse x radius

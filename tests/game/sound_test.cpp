@@ -368,3 +368,32 @@ TEST(Sound, APausedMatchIsHeardOnce) {
         synth.observe(m);
     EXPECT_EQ(synth.started(VoiceKind::Impact), heard);
 }
+
+// A ball dropped on a block is heard the tick it strikes it (the coupling's impulse), as
+// the block's material.
+TEST(Sound, ABallStrikingABlockIsHeard) {
+    Match m(level("11_sandbox.json"));
+    Command block = cmd(CommandKind::Spawn, 2.0, "block");
+    block.at = {60.0, 3.0};
+    ASSERT_EQ(m.apply(block), "");
+    Synthesizer synth;
+    for (int i = 0; i < 240; ++i) { // the block settles on the floor
+        m.step();
+        synth.observe(m);
+    }
+    Command ball = cmd(CommandKind::Spawn, 0.0, "golf-ball");
+    ball.at = {60.0, 12.0};
+    ASSERT_EQ(m.apply(ball), "");
+    int struck = 0;
+    for (int i = 0; i < 240 && struck == 0; ++i) {
+        const std::size_t before = synth.started(VoiceKind::Impact);
+        m.step();
+        synth.observe(m);
+        for (const phys::BodyContactEvent& e : m.coupling().events())
+            if (e.closingSpeed > 1.5) {
+                struck = static_cast<int>(m.tick());
+                EXPECT_GT(synth.started(VoiceKind::Impact), before) << "at tick " << m.tick();
+            }
+    }
+    EXPECT_GT(struck, 0) << "the ball falls onto the block within 2 s";
+}
