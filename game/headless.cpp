@@ -20,6 +20,7 @@ HeadlessSummary runHeadless(const Level& level, const HeadlessOptions& o) {
             session.submit(o.commands[next++]);
         session.step();
         sim += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+        for (FrameSink* listener : o.listeners) listener->frame(session.match());
         if (o.sink && session.match().tick() % std::max<std::uint64_t>(1, o.every) == 0) {
             t0 = Clock::now();
             o.sink->frame(session.match());

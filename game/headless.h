@@ -29,6 +29,8 @@ struct HeadlessOptions {
     SessionOptions session;            ///< difficulty, cpu seed, recording
     FrameSink* sink = nullptr;
     std::uint64_t every = 1;           ///< frame every K ticks
+    /// Views that want every tick besides the frames (the sound track); they only read.
+    std::vector<FrameSink*> listeners;
 };
 
 struct HeadlessSummary {

@@ -147,6 +147,9 @@ class Match {
     const std::vector<BlobState>& blobs() const { return blobs_; }
     /// The level's ropes and the ones spawned in the sandbox, in the order made.
     const std::vector<RopeState>& ropes() const { return ropes_; }
+    /// The particle-body coupling: its events are the last tick's hits of particles on
+    /// blocks (read by the sound; nothing may change it from outside).
+    const phys::ParticleBodyCoupling& coupling() const { return coupling_; }
     double wind() const { return world_.def().forces.wind.x; }
     /// The shell in flight, if any.
     std::optional<phys::ParticleId> shell() const;

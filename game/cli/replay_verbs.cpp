@@ -1,6 +1,7 @@
 // artillery run and artillery replay verify: headless simulation and replay checking.
 #include "game/cli/verbs.h"
 
+#include "game/audio/sound_track.h"
 #include "game/files/json_reader.h"
 #include "game/headless.h"
 
@@ -79,6 +80,7 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
     const bool audio = !args.flag("no-audio");
     const std::string size = args.text("size", "1280x720");
     const auto record = args.text("record");
+    const auto audioFile = args.text("audio");
     const std::string difficulty = args.text("difficulty", "normal");
     const bool hud = !args.flag("no-hud");
     const bool autoplay = args.flag("autoplay");
@@ -98,6 +100,8 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
         args.fail("--fps and --no-audio describe a video; add --video FILE");
     if (video && !videos)
         args.fail("--video needs the renderer, which this build of the verb lacks");
+    if (audioFile)
+        if (const std::string why = audio::checkWavFile(*audioFile); !why.empty()) args.fail(why);
 
     HeadlessOptions o;
     o.session.difficulty = *difficultyFromName(difficulty);
@@ -132,6 +136,11 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
         o.sink = sink.get();
         o.every = static_cast<std::uint64_t>(every);
     }
+    audio::SoundTrack soundTrack;
+    if (audioFile) o.listeners.push_back(&soundTrack);
+    // The video's sound: a synthesizer of its own, heard after every tick and pulled by
+    // the encoder in step with the pictures.
+    audio::Synthesizer videoSound;
     std::unique_ptr<VideoSink> videoSink;
     if (video) {
         VideoRequest request;
@@ -141,6 +150,12 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
         request.fps = static_cast<int>(fps);
         request.hud = hud;
         request.audio = audio;
+        if (audio) {
+            request.afterTick = [&videoSound](const Match& m) { videoSound.observe(m); };
+            request.sound = [&videoSound](float* interleaved, std::size_t frames) {
+                videoSound.render(interleaved, frames);
+            };
+        }
         std::string why;
         videoSink = (*videos)(request, why);
         if (!videoSink) args.fail(why);
@@ -150,6 +165,13 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
     const HeadlessSummary s = runHeadless(level, o);
     if (videoSink)
         if (const std::string why = videoSink->finish(); !why.empty()) throw UsageError(why);
+    if (audioFile) {
+        try {
+            soundTrack.write(*audioFile);
+        } catch (const std::exception& e) {
+            throw UsageError(e.what());
+        }
+    }
     if (json) {
         nlohmann::json j{{"ticks", s.ticks},     {"final_hash", hex(s.finalHash)}, {"score", s.score},
                          {"shots", s.shots},     {"over", s.over},                 {"winner", s.winner},
@@ -159,6 +181,10 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
                           {"codec", videoSink->codec()},
                           {"frames", videoSink->frames()},
                           {"seconds", videoSink->seconds()}};
+        if (audioFile)
+            j["audio"] = {{"file", *audioFile},
+                          {"frames", soundTrack.frames()},
+                          {"seconds", soundTrack.seconds()}};
         out << j.dump() << "\n";
         return kOk;
     }
@@ -183,6 +209,11 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
     out << line;
     if (record) out << "recorded " << *record << "\n";
     if (png) out << "frames in " << *png << "\n";
+    if (audioFile) {
+        std::snprintf(line, sizeof line, "sound in %s (16-bit PCM WAV, stereo 48 kHz, %.2f s)\n",
+                      audioFile->c_str(), soundTrack.seconds());
+        out << line;
+    }
     if (videoSink) {
         std::snprintf(line, sizeof line, "video in %s (%s, %lld frames, %.2f s)\n", video->c_str(),
                       videoSink->codec(), videoSink->frames(), videoSink->seconds());

@@ -15,7 +15,7 @@ namespace {
 const std::string& runUsage() {
     static const std::string usage = std::string(R"(usage: artillery run LEVEL.json [--replay FILE | --commands FILE] [--ticks N]
            [--png DIR --every K | --video FILE [--fps N] [--no-audio]]
-           [--size WxH] [--no-hud] [--record FILE]
+           [--size WxH] [--no-hud] [--record FILE] [--audio FILE.wav]
            [--autoplay] [--difficulty easy|normal|hard] [--json]
 
 Plays LEVEL with no window: the commands of a replay or of a commands script are
@@ -31,15 +31,20 @@ events, the score and the final state hash.
                      headlessly with the window's drawing code (OSMesa, or EGL)
   --video FILE       write the run as a video playing at real speed, drawn like --png:
                      FILE.mp4 is H.264 (MPEG-4 part 2 where libavcodec lacks it) with
-                     AAC sound, stereo 48 kHz; FILE.gif has pictures only
+                     the match's sound in AAC, stereo 48 kHz; FILE.gif has pictures only
   --fps N            the video's frames per second, 1..60 (default 30)
   --no-audio         an MP4 without a sound track
   --size WxH         frame size (default 1280x720; even for MP4); --no-hud leaves the HUD out
   --record FILE      save this run as a replay
+  --audio FILE.wav   write the match's sound track, synthesized from its events (the
+                     report, the whistle, impacts, blasts, splashes, chimes): 16-bit
+                     PCM WAV, stereo 48 kHz, tick t at sample floor(t * 48000 * dt),
+                     the same file for the same run
   --autoplay         the computer plays every cannon (at --difficulty)
   --json             {"ticks":n,"final_hash":"hex","score":..,"shots":n,"over":b,
                       "winner":i,"events":[...],"sim_ms":..,"render_ms":..}, with
-                     --video also "video":{"file":..,"codec":..,"frames":n,"seconds":..}
+                     --video also "video":{"file":..,"codec":..,"frames":n,"seconds":..},
+                     --audio also "audio":{"file":..,"frames":n,"seconds":..}
 )") +
         "\nSettings a commands file's {\"cmd\": \"set\", \"name\": .., \"value\": ..} takes:\n" +
         settingsHelp();

@@ -116,3 +116,38 @@ TEST(PlayerSettingsFiles, CameraShakePreviewRoundTripAndOldResultsAreReadOnly) {
     }
     std::filesystem::remove_all(dir);
 }
+
+// The Sound section's volumes and mute persist; a volume outside 0..1, a mute that is not
+// a boolean, or a field the section lacks is refused with its path.
+TEST(PlayerSettingsFiles, SoundVolumesRoundTripAndAreReadStrictly) {
+    const auto dir = std::filesystem::temp_directory_path() / "artillery-sound-settings-test";
+    std::filesystem::remove_all(dir);
+    const std::string file = (dir / "settings.json").string();
+    ui::PlayerSettings s;
+    s.sound = {0.25, 0.5, 0.0, true};
+    ASSERT_EQ(ui::savePlayerSettings(file, s), "");
+    std::string warning;
+    const ui::PlayerSettings back = ui::loadPlayerSettings(file, warning);
+    EXPECT_EQ(warning, "");
+    EXPECT_EQ(back.sound, s.sound);
+    EXPECT_EQ(ui::parsePlayerSettings("a.json", R"({"format": 1})").sound, game::audio::SoundMix{});
+    const auto message = [](const std::string& text) {
+        try {
+            ui::parsePlayerSettings("s.json", text);
+        } catch (const game::LoadError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_NE(message(R"({"format": 1, "sound": {"ui": -0.1}})").find("$.sound.ui: expected a number in [0, 1]"),
+              std::string::npos)
+        << message(R"({"format": 1, "sound": {"ui": -0.1}})");
+    EXPECT_NE(message(R"({"format": 1, "sound": {"mute": "yes"}})").find("$.sound.mute"),
+              std::string::npos);
+    EXPECT_NE(message(R"({"format": 1, "sound": {"music": 1}})").find("unknown field \"music\""),
+              std::string::npos)
+        << message(R"({"format": 1, "sound": {"music": 1}})");
+    EXPECT_NE(message(R"({"format": 1, "sound": 0.5})").find("expected an object with master"),
+              std::string::npos);
+    std::filesystem::remove_all(dir);
+}

@@ -2,7 +2,8 @@
 // libavformat and libavcodec: the stream's codec, size and frame count, the duration,
 // and a sine tone put in that comes back out at its frequency (counted by its upward zero
 // crossings, to 1 %) on the right channel. Bad names and folders fail with one message
-// and leave no file; the match's hash is the same with a video being written as without.
+// and leave no file; the match's hash is the same with a video being written as without;
+// the replay viewer's export (the run verb in a child) carries the match's sound track.
 #include "game/headless.h"
 #include "game/level.h"
 #include "game/replay.h"
@@ -17,6 +18,7 @@ extern "C" {
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -386,6 +388,15 @@ TEST(VideoFrameSink, FramesThatAreNotAWholeNumberOfTicksKeepTime) {
     EXPECT_EQ(decode(request.file).frames, 50);
 }
 
+/// Root mean square of a channel between two times (s) at 48 kHz.
+double rms(const std::vector<float>& channel, double from, double to) {
+    const auto a = std::min(channel.size(), static_cast<std::size_t>(from * 48000.0));
+    const auto b = std::min(channel.size(), static_cast<std::size_t>(to * 48000.0));
+    double sum = 0.0;
+    for (std::size_t i = a; i < b; ++i) sum += static_cast<double>(channel[i]) * channel[i];
+    return b > a ? std::sqrt(sum / static_cast<double>(b - a)) : 0.0;
+}
+
 /// Waits for the child process to end (a test's timeout stops a hung one).
 ui::VideoExport::State waitFor(ui::VideoExport& e) {
     while (e.poll() == ui::VideoExport::State::Running)
@@ -418,6 +429,13 @@ TEST(VideoExport, WritesAReplayThroughTheRunVerbInAChildProcess) {
     EXPECT_EQ(d.frames, 30);
     EXPECT_EQ(d.width, 96);
     EXPECT_EQ(d.audioStreams, 1);
+    // The track is the match's sound: quiet at first, then the report and the whistle
+    // from the shot at tick 60, 0.5 s (windows clear of the AAC encoder's 1024-sample
+    // delay).
+    ASSERT_EQ(d.sampleRate, 48000);
+    EXPECT_LT(rms(d.left, 0.0, 0.25), 0.005); // blocks settle with a thud at 0.31 s
+    EXPECT_GT(rms(d.left, 0.5, 0.75), 0.03);
+    EXPECT_GT(rms(d.right, 0.5, 0.75), 0.005);
 
     const std::string bad = scratch("castle_second.avi");
     ASSERT_TRUE(exporter.start(ARTILLERY_EXE, levelFile, replay, bad));

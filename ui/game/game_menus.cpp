@@ -293,7 +293,23 @@ MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::str
     return choice;
 }
 
-MenuChoice pauseMenu(PlayerSettings& settings) {
+bool soundSection(game::audio::SoundMix& mix, const std::string& silentWhy) {
+    ImGui::TextUnformatted("Sound");
+    bool done = false;
+    auto volume = [&](const char* label, double& value) {
+        float v = static_cast<float>(value);
+        if (ImGui::SliderFloat(label, &v, 0.0f, 1.0f, "%.2f")) value = v; // heard at once
+        done |= ImGui::IsItemDeactivatedAfterEdit();                     // saved when let go
+    };
+    volume("master volume", mix.master);
+    volume("effects volume", mix.effects);
+    volume("UI volume", mix.ui);
+    done |= ImGui::Checkbox("mute", &mix.mute);
+    if (!silentWhy.empty()) ImGui::TextDisabled("silent: %s", silentWhy.c_str());
+    return done;
+}
+
+MenuChoice pauseMenu(PlayerSettings& settings, const std::string& silentWhy) {
     MenuChoice choice;
     centreNextWindow(300.0f);
     ImGui::Begin("Paused", nullptr,
@@ -316,6 +332,10 @@ MenuChoice pauseMenu(PlayerSettings& settings) {
     choice.settingsChanged |= ImGui::Checkbox("camera follows the shell (C)", &settings.cameraFollow);
     choice.settingsChanged |= ImGui::Checkbox("screen shake", &settings.screenShake);
     choice.settingsChanged |= ImGui::Checkbox("physics panel (F2)", &settings.physicsPanel);
+    ImGui::Separator();
+    ImGui::PushItemWidth(160);
+    choice.settingsChanged |= soundSection(settings.sound, silentWhy);
+    ImGui::PopItemWidth();
     ImGui::Separator();
     if (ImGui::Button("Quit", wide)) choice.quit = true;
     ImGui::End();

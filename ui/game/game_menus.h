@@ -96,7 +96,12 @@ MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress&
                              const std::vector<LevelEntry>* levels = nullptr);
 /// The replays in `folder` ("" when this run keeps none: check runs, headless).
 MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::string& folder);
-MenuChoice pauseMenu(PlayerSettings& settings);
+/// The pause menu: resume, restart, levels, help, the player's choices and the Sound
+/// section. `silentWhy` is why the game plays silent ("" when it plays sound).
+MenuChoice pauseMenu(PlayerSettings& settings, const std::string& silentWhy = "");
+/// The Sound section: master, effects and UI volume and mute. True once an edit is done
+/// (a slider let go, the box ticked): time to save the settings.
+bool soundSection(game::audio::SoundMix& mix, const std::string& silentWhy);
 /// The keyboard, mouse and controller shortcuts. `open` is cleared by its close button.
 void helpOverlay(bool& open);
 

@@ -103,6 +103,10 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
     levels_ = listLevels(def_.levelsFolder);
     campaign_ = campaignMenu(def_.levelsFolder, levels_);
     if (window_ && SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER) == 0) pad_.openFirst();
+    if (window_) {
+        audio_ = std::make_unique<AudioDevice>();
+        if (audio_->silent()) std::cerr << "artillery: playing silent (" << audio_->why() << ")\n";
+    }
     if (!def_.replayFile.empty()) {
         openReplay(def_.replayFile); // throws with the loader's message
     } else if (def_.edit) {
@@ -456,6 +460,7 @@ void GameScreen::simulate(double wallSeconds) {
         session_->step();
         matchView_.observe(session_->match());
         statsPanel_.sample(session_->match());
+        hearTick(session_->match());
         physicsUs += session_->match().world().profile().totalUs;
     }
     const game::Match& m = session_->match();
@@ -612,7 +617,7 @@ void GameScreen::drawPanels() {
     if (overlay_ == Overlay::Lesson)
         choice = lessonScreen(campaign_.campaign, lessonChapter_, lessonThenLevel_);
     if (overlay_ == Overlay::Replays) choice = replaysScreen(replays_, replaysFolder());
-    if (overlay_ == Overlay::Pause) choice = pauseMenu(settings_);
+    if (overlay_ == Overlay::Pause) choice = pauseMenu(settings_, audio_ ? audio_->why() : "");
     if (helpOpen_) helpOverlay(helpOpen_);
     if (viewer_ && overlay_ == Overlay::None) {
         const ReplayRequests req = viewer_->panel();
@@ -707,6 +712,31 @@ void GameScreen::drawPanels() {
     if (choice.quit) running_ = false;
     if (choice.networkDuel) networkDuel_ = true, running_ = false;
     if (choice.settingsChanged) persist();
+    // A click for every button, box and slider pressed this frame.
+    if (hearing() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && ImGui::IsAnyItemHovered())
+        sound_.click();
+}
+
+bool GameScreen::hearing() const {
+    return audio_ && !audio_->silent();
+}
+
+void GameScreen::hearTick(const game::Match& m) {
+    if (!hearing()) return;
+    // Panned across what the camera shows.
+    sound_.setView({camera_.visibleMin().x, camera_.visibleMax().x});
+    sound_.observe(m);
+}
+
+void GameScreen::hearFrame() {
+    if (!hearing()) return;
+    sound_.setMix(settings_.sound);
+    // A live match was heard tick by tick (simulate); a replay is heard once a frame.
+    if (viewer_)
+        hearTick(viewer_->match());
+    else if (!session_)
+        sound_.forgetMatch();
+    audio_->feed(sound_);
 }
 
 void GameScreen::frame(double wallSeconds) {
@@ -755,6 +785,7 @@ void GameScreen::frame(double wallSeconds) {
     drawPanels();
     imgui_.drawLabels(renderer_.labels());
     imgui_.render();
+    hearFrame();
 }
 
 std::string GameScreen::saveScreenshot(const std::string& path) {

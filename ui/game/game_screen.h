@@ -30,6 +30,8 @@
 #include "ui/game/replay_view.h"
 #include "ui/game/sandbox_tools.h"
 #include "ui/game/stats_panel.h"
+#include "game/audio/synthesizer.h"
+#include "ui/platform/audio_device.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
 #include "ui/play/physics_panel.h"
@@ -141,6 +143,11 @@ class GameScreen final : public Screen {
     void drawPanels();
     void persist();
     void loadProgress();
+    /// The sound: the synthesizer hears the match on screen (a live one after every
+    /// tick, a replay once a frame) and the device plays it; nothing without a device.
+    bool hearing() const;
+    void hearTick(const game::Match& m);
+    void hearFrame();
     phys::Vec2 pivotPixels() const;
     phys::Vec2 pointerPixels(int x, int y) const;
     bool keyDown(const SDL_Event& e);
@@ -203,6 +210,10 @@ class GameScreen final : public Screen {
     FrameStats stats_;
     int framesMeasured_ = 0;
     PadInput pad_; ///< a game controller, if one is plugged in
+    /// The sound card (window only; silent when there is none) and what it plays: voices
+    /// start as the match's events are heard, a frame at a time.
+    std::unique_ptr<AudioDevice> audio_;
+    game::audio::Synthesizer sound_{game::audio::SynthesizerDef{.live = true}};
     bool padFireHeld_ = false;
 };
 

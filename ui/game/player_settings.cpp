@@ -61,6 +61,14 @@ PlayerSettings parsePlayerSettings(const std::string& file, const std::string& t
         for (auto& [name, flag] : drawFlags(s.draw)) *flag = draw->boolean(name, *flag);
         draw->finish();
     }
+    if (const auto sound = root.find("sound")) {
+        if (!sound->isObject()) sound->fail("expected an object with master, effects, ui (0..1) and mute");
+        s.sound.master = sound->number("master", s.sound.master, 0.0, 1.0);
+        s.sound.effects = sound->number("effects", s.sound.effects, 0.0, 1.0);
+        s.sound.ui = sound->number("ui", s.sound.ui, 0.0, 1.0);
+        s.sound.mute = sound->boolean("mute", s.sound.mute);
+        sound->finish();
+    }
     // Results moved to the progress file; an older file's are read to migrate them.
     if (const auto levels = root.find("levels")) {
         if (!levels->isObject()) levels->fail("expected an object of results by level file name");
@@ -111,6 +119,10 @@ std::string savePlayerSettings(const std::string& file, const PlayerSettings& s)
     DrawChoices draw = s.draw;
     for (const auto& [name, flag] : drawFlags(draw))
         j["draw"][name] = *flag;
+    j["sound"] = {{"master", s.sound.master},
+                  {"effects", s.sound.effects},
+                  {"ui", s.sound.ui},
+                  {"mute", s.sound.mute}};
     try {
         std::filesystem::create_directories(std::filesystem::path(file).parent_path());
         game::writeFileAtomically(file, j.dump(2) + "\n");

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "game/ai.h"
+#include "game/audio/synthesizer.h"
 #include "game/progress.h"
 
 #include <map>
@@ -40,6 +41,8 @@ struct PlayerSettings {
     bool screenShake = true;       ///< blasts shake the view (off for comfort)
     bool physicsPanel = true;
     DrawChoices draw;
+    /// Master, effects and UI volume (0..1) and mute: the settings panel's Sound section.
+    game::audio::SoundMix sound;
     /// The level results an older settings file kept (its "levels" object), by level file
     /// name: read once to move them into the progress file, never written back.
     std::map<std::string, LevelResult> results;
