@@ -115,6 +115,8 @@ void placeBalls(long n, const PileLayout& l, Place place) {
     }
 }
 
+} // namespace
+
 std::unique_ptr<World> particlePile(long n) {
     const PileLayout l = pileLayout(n);
     auto w = std::make_unique<World>(WorldDef{}); // default collision settings
@@ -154,8 +156,6 @@ std::unique_ptr<RigidWorld> rigidPile(long n) {
     });
     return w;
 }
-
-} // namespace
 
 double pileWorkload(long n, int steps) {
     auto w = particlePile(n);

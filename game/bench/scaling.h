@@ -7,8 +7,14 @@
 
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
+
+namespace phys {
+class World;
+class RigidWorld;
+} // namespace phys
 
 namespace game::bench {
 
@@ -45,6 +51,10 @@ double clothWorkload(long n, int steps);
 double pileWorkload(long n, int steps);
 /// The same pile as Box2D circles in a RigidWorld (same box, radius, restitution).
 double rigidPileWorkload(long n, int steps);
+/// The two piles themselves, unsettled, for programs that step them on their own
+/// (bench/bench_pile.cpp counts their instructions under callgrind).
+std::unique_ptr<phys::World> particlePile(long n);
+std::unique_ptr<phys::RigidWorld> rigidPile(long n);
 
 /// Ticks run before the pile workloads are timed: 0.5 s at 1/120 s, so most balls are
 /// in contact when the clock starts.

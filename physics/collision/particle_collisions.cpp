@@ -102,22 +102,28 @@ void ParticleCollisions::buildProxies(const ParticleSet& set, const StaticShapes
 
 // The broad phase proper runs on fattened boxes (each particle's box grown by a margin
 // and by a step of its motion) and its pairs are kept: a pass only filters them by the
-// exact boxes, which gives exactly the pairs a broad phase over the exact boxes would.
-// That holds while every exact box lies in its fat box and nothing else changed (kinds,
-// slots, shapes, settings); the first pass where that fails rebuilds the cache. A pile
-// settling through eight passes a step, or resting for many steps, then costs one broad
-// phase instead of one a pass.
+// kinds of now and the exact boxes, which gives exactly the pairs a broad phase over the
+// exact boxes would. That holds while every exact box lies in its fat box, no proxy can
+// pair with more than when the cache was built, and nothing else changed (slots, shapes,
+// settings); the first pass where that fails rebuilds the cache. A proxy that went to
+// rest (Moving to Resting: a particle fell asleep) or away (to None) only loses pairs,
+// so a pile whose particles fall asleep a few at a time keeps its broad phase; one more
+// movable than at the build (Resting to Moving, None to anything) may have new pairs. A
+// pile settling through eight passes a step, or resting for many steps, then costs one
+// broad phase instead of one a pass.
 bool ParticleCollisions::pairCacheHolds(const CollisionDef& def) const {
     const std::size_t n = boxes_.size();
     if (!cacheValid_ || fatBoxes_.size() != n || cachedShapes_ != staticIndex_.version() ||
         cachedBroadPhase_ != def.broadPhase || cachedCellSize_ != def.gridCellSize)
         return false;
     for (std::size_t i = 0; i < n; ++i) {
-        if (kinds_[i] != fatKinds_[i]) return false;
+        const ProxyKind k = kinds_[i], f0 = fatKinds_[i];
+        const bool fewerPairs = k == f0 || k == ProxyKind::None || f0 == ProxyKind::Moving;
+        if (!fewerPairs) return false;
         const Aabb &b = boxes_[i], &f = fatBoxes_[i];
         const bool inside =
             (f.lo.x <= b.lo.x) & (f.lo.y <= b.lo.y) & (b.hi.x <= f.hi.x) & (b.hi.y <= f.hi.y);
-        if (kinds_[i] != ProxyKind::None && !inside) return false;
+        if (k != ProxyKind::None && !inside) return false;
     }
     return true;
 }
@@ -156,6 +162,8 @@ void ParticleCollisions::buildPairCache(const CollisionDef& def) {
     cachedPairs_.resize(particlePairs_.size() + staticPairs_.size());
     std::merge(particlePairs_.begin(), particlePairs_.end(), staticPairs_.begin(),
                staticPairs_.end(), cachedPairs_.begin());
+    livePairs_ = cachedPairs_;
+    liveKinds_ = fatKinds_;
     cacheValid_ = true;
     cachedShapes_ = staticIndex_.version();
     cachedBroadPhase_ = def.broadPhase;
@@ -163,13 +171,32 @@ void ParticleCollisions::buildPairCache(const CollisionDef& def) {
     ++stats_.broadPhases;
 }
 
+// The cached pairs the proxies can make with the kinds of now (at least one moving, none
+// gone; a shape pairs only with a moving particle), again only when a kind changed: once
+// a tick as particles fall asleep, not once a pass. The full cache is kept, so a
+// particle that falls asleep and wakes again while its box stays in its fat box gets its
+// pairs back without a broad phase.
+void ParticleCollisions::selectLivePairs() {
+    const auto n = static_cast<std::uint32_t>(kinds_.size());
+    livePairs_.clear();
+    for (const ProxyPair& p : cachedPairs_) {
+        const ProxyKind a = kinds_[p.first];
+        const ProxyKind b = p.second < n ? kinds_[p.second] : ProxyKind::Resting;
+        if (a != ProxyKind::None && b != ProxyKind::None &&
+            (a == ProxyKind::Moving || b == ProxyKind::Moving))
+            livePairs_.push_back(p);
+    }
+    liveKinds_ = kinds_;
+}
+
 void ParticleCollisions::findPairs(const CollisionDef& def) {
     if (!pairCacheHolds(def)) buildPairCache(def);
+    if (kinds_ != liveKinds_) selectLivePairs();
     // Kept pairs whose exact boxes overlap; without branches (which pass is a coin toss).
     const auto n = static_cast<std::uint32_t>(boxes_.size());
-    pairs_.resize(cachedPairs_.size());
+    pairs_.resize(livePairs_.size());
     std::size_t kept = 0;
-    for (const ProxyPair& p : cachedPairs_) {
+    for (const ProxyPair& p : livePairs_) {
         const Aabb& a = boxes_[p.first];
         const Aabb& b = p.second < n ? boxes_[p.second] : staticIndex_.box(p.second - n);
         pairs_[kept] = p;

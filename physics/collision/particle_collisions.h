@@ -120,6 +120,7 @@ class ParticleCollisions {
     void findPairs(const CollisionDef& def);
     bool pairCacheHolds(const CollisionDef& def) const;
     void buildPairCache(const CollisionDef& def);
+    void selectLivePairs();
     void detect(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                 double h);
     /// What resolving a candidate did: nothing (no contact any more), a resting contact,
@@ -162,6 +163,9 @@ class ParticleCollisions {
     std::vector<Aabb> fatBoxes_;
     std::vector<ProxyKind> fatKinds_;
     std::vector<ProxyPair> cachedPairs_, particlePairs_, staticPairs_;
+    // The cached pairs that can pair with the kinds of liveKinds_ (selectLivePairs).
+    std::vector<ProxyPair> livePairs_;
+    std::vector<ProxyKind> liveKinds_;
     bool cacheValid_ = false;
     std::uint64_t cachedShapes_ = 0;
     BroadPhase cachedBroadPhase_ = BroadPhase::Grid;

@@ -1,0 +1,198 @@
+// bench_pile: the pile of `artillery bench scaling` (game/bench/scaling.cpp: wooden balls
+// dropped into an open box) as particles and as Box2D circles, stepped on their own so
+// that callgrind can count each side's instructions, which load does not change:
+//
+//   valgrind --tool=callgrind --toggle-collect='*stepParticlePile*' build/bench/bench_pile
+//   valgrind --tool=callgrind --toggle-collect='*stepRigidPile*' build/bench/bench_pile
+//   callgrind_annotate callgrind.out.<pid> | head -40
+//
+// Each side is built and settled for kPileSettleTicks (0.5 s, not counted), then steps
+// `--ticks` more; Ir per tick is the collected total over the ticks. Without valgrind it
+// prints wall ms per tick (meaningful on a quiet machine only; read the ratio) and, for
+// checking that a change gives the same bits, the particle world's hash and what the
+// step did (contacts, pairs, passes, broad phases, sleepers).
+//
+// `--heap N --seconds S` instead drops the staggered heap of tests/physics/pile_test.cpp
+// (N balls, each row offset by half a spacing) and prints, every simulated second, how
+// many balls sleep, the kinetic energy and the fastest ball: whether a big heap comes
+// to rest.
+//
+// Usage: bench_pile [--balls N] [--ticks T] [--side particles|rigid|both] [--trace] [--csv]
+//        bench_pile --heap N [--seconds S]
+#include "game/bench/scaling.h"
+#include "physics/diagnostics.h"
+#include "physics/rigid/rigid_world.h"
+#include "physics/world.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <string>
+
+namespace {
+
+using namespace phys;
+using Clock = std::chrono::steady_clock;
+
+// The stepping loops callgrind collects in (--toggle-collect); never inlined, so that
+// their names exist.
+[[gnu::noinline]] void stepParticlePile(World& w, int ticks) {
+    for (int t = 0; t < ticks; ++t)
+        w.step();
+}
+
+[[gnu::noinline]] void stepRigidPile(RigidWorld& w, int ticks, double tick) {
+    for (int t = 0; t < ticks; ++t)
+        w.step(tick);
+}
+
+double msSince(Clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+int sleepers(const ParticleSet& p) {
+    int n = 0;
+    for (std::size_t i = 0; i < p.slots(); ++i)
+        n += (p.flags[i] & kAlive) && (p.flags[i] & kSleeping) ? 1 : 0;
+    return n;
+}
+
+struct Options {
+    long balls = 2000;
+    int ticks = 60;
+    bool particles = true, rigid = true, csv = false, trace = false;
+    long heap = 0;
+    double seconds = 20.0;
+};
+
+// The heap of tests/physics/pile_test.cpp (staggeredHeap): n balls on a grid 0.12 m apart,
+// each row offset by half a spacing, in an open box.
+void runHeap(long n, double seconds) {
+    World w;
+    const int columns = static_cast<int>(std::ceil(std::sqrt(2.0 * static_cast<double>(n))));
+    const int rows = static_cast<int>((n + columns - 1) / columns);
+    const double width = 0.12 * columns + 0.18, top = 0.12 * (rows + 4);
+    w.shapes.addSegment({0.0, 0.0}, {width, 0.0}, material::kWooden);
+    w.shapes.addSegment({0.0, 0.0}, {0.0, top}, material::kWooden);
+    w.shapes.addSegment({width, 0.0}, {width, top}, material::kWooden);
+    std::mt19937_64 rng(777);
+    std::uniform_real_distribution<double> jitter(-0.01, 0.01);
+    for (long i = 0; i < n; ++i) {
+        const long c = i % columns, r = i / columns;
+        ParticleDef pd;
+        pd.position = {0.12 * static_cast<double>(c + 1) + 0.06 * static_cast<double>(r % 2) +
+                           jitter(rng),
+                       0.12 * static_cast<double>(r + 1) + jitter(rng)};
+        pd.radius = 0.05;
+        pd.mass = 0.1;
+        pd.material = material::kWooden;
+        w.particles.add(pd);
+    }
+    const int perSecond = static_cast<int>(std::lround(1.0 / w.def().tickSeconds));
+    std::printf("heap of %ld balls, %d columns\n", n, columns);
+    std::printf("%8s %9s %12s %12s %10s %16s\n", "time_s", "asleep", "kinetic_J", "fastest_m_s",
+                "ms_per_tick", "hash");
+    for (int s = 1; s <= static_cast<int>(std::lround(seconds)); ++s) {
+        const auto t0 = Clock::now();
+        stepParticlePile(w, perSecond);
+        const double ms = msSince(t0) / perSecond;
+        double fastest = 0.0;
+        const ParticleSet& p = w.particles;
+        for (std::size_t i = 0; i < p.slots(); ++i)
+            fastest = std::max(fastest, std::hypot(p.vx[i], p.vy[i]));
+        std::printf("%8d %9d %12.4g %12.4g %10.3f %016llx\n", s, sleepers(p),
+                    energy(p, w.springs, w.def().forces).kinetic, fastest, ms,
+                    static_cast<unsigned long long>(w.hash()));
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        const bool more = i + 1 < argc;
+        if (a == "--balls" && more) {
+            o.balls = std::atol(argv[++i]);
+        } else if (a == "--ticks" && more) {
+            o.ticks = std::atoi(argv[++i]);
+        } else if (a == "--side" && more) {
+            const std::string side = argv[++i];
+            o.particles = side == "particles" || side == "both";
+            o.rigid = side == "rigid" || side == "both";
+        } else if (a == "--trace") {
+            o.trace = true;
+        } else if (a == "--csv") {
+            o.csv = true;
+        } else if (a == "--heap" && more) {
+            o.heap = std::atol(argv[++i]);
+        } else if (a == "--seconds" && more) {
+            o.seconds = std::atof(argv[++i]);
+        } else {
+            std::fprintf(stderr,
+                         "usage: bench_pile [--balls N] [--ticks T] [--side particles|rigid|both] "
+                         "[--trace] [--csv]\n       bench_pile --heap N [--seconds S]\n");
+            return 2;
+        }
+    }
+    if (o.balls < 1 || o.ticks < 1 || (!o.particles && !o.rigid) || !(o.seconds > 0.0)) {
+        std::fprintf(stderr, "bench_pile: --balls and --ticks must be >= 1, --side one of "
+                             "particles, rigid, both, --seconds > 0\n");
+        return 2;
+    }
+    if (o.heap > 0) {
+        runHeap(o.heap, o.seconds);
+        return 0;
+    }
+
+    double particleMs = NAN, rigidMs = NAN;
+    if (o.particles) {
+        auto w = game::bench::particlePile(o.balls);
+        for (int t = 0; t < game::bench::kPileSettleTicks; ++t)
+            w->step();
+        const auto t0 = Clock::now();
+        if (o.trace) // what each tick did, to see where a window's work falls
+            for (int t = 0; t < o.ticks; ++t) {
+                stepParticlePile(*w, 1);
+                const CollisionStats& s = w->collisionStats();
+                std::printf("tick %d: %zu contacts, %d pairs, %d passes, %d broad phases, "
+                            "%d asleep\n",
+                            game::bench::kPileSettleTicks + t + 1, w->contacts().size(), s.pairs,
+                            s.passes, s.broadPhases, sleepers(w->particles));
+            }
+        else
+            stepParticlePile(*w, o.ticks);
+        particleMs = msSince(t0) / o.ticks;
+        const CollisionStats& s = w->collisionStats();
+        if (!o.csv)
+            std::printf("particles %ld balls: %.4f ms/tick; last tick: %zu contacts, %d pairs, "
+                        "%d passes, %d broad phases, %d asleep; hash %016llx\n",
+                        o.balls, particleMs, w->contacts().size(), s.pairs, s.passes, s.broadPhases,
+                        sleepers(w->particles), static_cast<unsigned long long>(w->hash()));
+    }
+    if (o.rigid) {
+        auto w = game::bench::rigidPile(o.balls);
+        const double tick = WorldDef{}.tickSeconds;
+        for (int t = 0; t < game::bench::kPileSettleTicks; ++t)
+            w->step(tick);
+        const auto t0 = Clock::now();
+        stepRigidPile(*w, o.ticks, tick);
+        rigidMs = msSince(t0) / o.ticks;
+        if (!o.csv)
+            std::printf("box2d     %ld balls: %.4f ms/tick; hash %016llx\n", o.balls, rigidMs,
+                        static_cast<unsigned long long>(w->hash()));
+    }
+    if (o.csv) {
+        std::printf("balls,ticks,particle_ms,box2d_ms\n%ld,%d,%.5g,%.5g\n", o.balls, o.ticks,
+                    particleMs, rigidMs);
+    } else if (o.particles && o.rigid) {
+        std::printf("box2d / particles: %.2fx (wall clock: read it on a quiet machine)\n",
+                    rigidMs / particleMs);
+    }
+    return 0;
+}
