@@ -105,7 +105,7 @@ void Synthesizer::forgetMatch() {
     whistleId_ = 0;
     seen_ = false;
     seenEvents_ = 0;
-    shellSeen_ = false;
+    waterEntry_.forget();
     blockVelocity_.clear();
     blockSeen_.clear();
 }
@@ -175,6 +175,9 @@ void Synthesizer::hearEvents(const Match& m) {
 
 void Synthesizer::hearShell(const Match& m) {
     const auto shell = m.shell();
+    // A splash where the shell went into the water since the last look.
+    if (const auto entry = waterEntry_.look(m))
+        start(splash(entry->downSpeed), m.tick(), entry->point, 0x5b1a5b);
     Voice* whistling = nullptr;
     for (Voice& v : voices_)
         if (v.id == whistleId_ && !v.ending) whistling = &v;
@@ -183,7 +186,6 @@ void Synthesizer::hearShell(const Match& m) {
         if (whistling)
             whistling->keys.push_back({at, whistling->targetHz, 0.0, whistling->pan, true});
         whistleId_ = 0;
-        shellSeen_ = false;
         return;
     }
     const Vec2 p = m.world().particles.position(*shell);
@@ -207,16 +209,6 @@ void Synthesizer::hearShell(const Match& m) {
     const bool underwater = m.level().physics.water && p.y < m.level().physics.waterLevel;
     const double gain = underwater ? 0.0 : whistleGain(speed);
     if (whistling) whistling->keys.push_back({at, pitch, gain, panOf(p), false});
-
-    // A splash: the shell crossed the water line going down since the last look.
-    if (m.level().physics.water) {
-        const double level = m.level().physics.waterLevel;
-        if (shellSeen_ && shellAt_.y > level && p.y <= level)
-            start(splash(std::abs(shellVy_)), m.tick(), {p.x, level}, 0x5b1a5b);
-    }
-    shellSeen_ = true;
-    shellAt_ = p;
-    shellVy_ = v.y;
 }
 
 void Synthesizer::hearContacts(const Match& m) {

@@ -29,6 +29,7 @@
 #pragma once
 
 #include "game/audio/voices.h"
+#include "game/effects/water_entry.h"
 #include "game/match.h"
 
 #include <cstddef>
@@ -110,7 +111,7 @@ class Synthesizer {
     std::vector<Voice> voices_;
     std::int64_t cursor_ = 0;
     double limiterGain_ = 1.0;
-    std::size_t started_[8] = {};
+    std::size_t started_[kVoiceKinds] = {};
     // The match as last seen.
     bool seen_ = false;
     std::uint64_t lastTick_ = 0;
@@ -122,9 +123,7 @@ class Synthesizer {
     std::int64_t tickMilliHz_ = 0;
     // The shell's whistle (an index into voices_ is unstable: found by this id).
     std::uint64_t whistleId_ = 0;
-    bool shellSeen_ = false;
-    phys::Vec2 shellAt_;
-    double shellVy_ = 0.0;
+    WaterEntryWatch waterEntry_; ///< the shell's crossings of the water line: splashes
     // Blocks' velocities at the last look.
     std::vector<phys::Vec2> blockVelocity_;
     std::vector<bool> blockSeen_;

@@ -13,6 +13,7 @@
 
 #include "game/generate/seeded_random.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -28,6 +29,7 @@ const char* timbreName(Timbre t);
 Timbre timbreOf(const std::string& material);
 
 enum class VoiceKind : std::uint8_t { Report, Whistle, Impact, Blast, Splash, Crack, Chime, Click };
+inline constexpr std::size_t kVoiceKinds = 8; ///< the kinds above
 
 /// Which volume slider a voice answers to.
 enum class Bus : std::uint8_t { Effects, Ui };

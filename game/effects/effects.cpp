@@ -211,18 +211,7 @@ void Effects::observe(const Match& m) {
     seenEvents_ = events.size();
 
     // Splashes: the shell crossed the water line going down since the last tick.
-    const auto shell = m.shell();
-    if (shell && m.level().physics.water) {
-        const Vec2 p = m.world().particles.position(*shell);
-        const double level = m.level().physics.waterLevel;
-        if (shellSeen_ && shellAt_.y > level && p.y <= level) {
-            const double f = (shellAt_.y - level) / std::max(1e-12, shellAt_.y - p.y);
-            splash(shellAt_ + (p - shellAt_) * f, std::abs(shellVy_));
-        }
-        shellAt_ = p;
-        shellVy_ = m.world().particles.vy[*shell];
-    }
-    shellSeen_ = shell.has_value();
+    if (const auto entry = waterEntry_.look(m)) splash(entry->point, entry->downSpeed);
 
     // A viewer that looked away for long catches up on at most ten seconds.
     const auto most = static_cast<std::uint64_t>(10.0 / dt);

@@ -20,6 +20,7 @@
 #pragma once
 
 #include "game/effects/shot_feedback.h"
+#include "game/effects/water_entry.h"
 #include "game/match.h"
 #include "physics/world.h"
 
@@ -146,10 +147,7 @@ class Effects {
     std::size_t thrown_ = 0;
     std::size_t thrownOf_[4] = {};
     std::string firedAmmo_; ///< what the last shot fired (a blast's impulse)
-    // The shell as last seen: for splashes (a crossing of the water line).
-    bool shellSeen_ = false;
-    phys::Vec2 shellAt_;
-    double shellVy_ = 0.0;
+    WaterEntryWatch waterEntry_; ///< the shell's crossings of the water line: splashes
 };
 
 } // namespace game
