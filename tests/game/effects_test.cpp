@@ -7,6 +7,8 @@
 #include "game/files/json_reader.h"
 #include "game/replay.h"
 
+#include "shots.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,24 +19,9 @@ namespace fs = std::filesystem;
 
 namespace {
 const fs::path kSource = ARTILLERY_SOURCE_DIR;
-Level level(const std::string& name) {
-    return loadLevel((kSource / "levels" / name).string());
-}
-
-Command cmd(CommandKind k, double number = 0.0, std::string text = {}) {
-    Command c;
-    c.kind = k;
-    c.number = number;
-    c.text = std::move(text);
-    return c;
-}
-
-/// Aims, powers and fires the current cannon.
-void shoot(Match& m, double angleDeg, double speedMps) {
-    ASSERT_EQ(m.apply(cmd(CommandKind::Aim, angleDeg)), "");
-    ASSERT_EQ(m.apply(cmd(CommandKind::Power, speedMps)), "");
-    ASSERT_EQ(m.apply(cmd(CommandKind::Fire)), "");
-}
+using shots::cmd;
+using shots::level;
+using shots::shoot;
 } // namespace
 
 // Golden replays with blasts, bounces, toppling blocks, splashes and a duel: with effects

@@ -8,6 +8,8 @@
 #include "game/files/json_reader.h"
 #include "game/replay.h"
 
+#include "shots.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,23 +22,9 @@ namespace fs = std::filesystem;
 
 namespace {
 const fs::path kSource = ARTILLERY_SOURCE_DIR;
-Level level(const std::string& name) {
-    return loadLevel((kSource / "levels" / name).string());
-}
-
-Command cmd(CommandKind k, double number = 0.0, std::string text = {}) {
-    Command c;
-    c.kind = k;
-    c.number = number;
-    c.text = std::move(text);
-    return c;
-}
-
-void shoot(Match& m, double angleDeg, double speedMps) {
-    ASSERT_EQ(m.apply(cmd(CommandKind::Aim, angleDeg)), "");
-    ASSERT_EQ(m.apply(cmd(CommandKind::Power, speedMps)), "");
-    ASSERT_EQ(m.apply(cmd(CommandKind::Fire)), "");
-}
+using shots::cmd;
+using shots::level;
+using shots::shoot;
 
 /// Steps the match `ticks` times with the track hearing each tick.
 void run(Match& m, SoundTrack& track, int ticks) {
