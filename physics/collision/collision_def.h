@@ -47,8 +47,8 @@ struct CollisionDef {
     /// and the surface supports the particle for the rest of the step.
     double restingSpeed = 0.01;
     bool sleep = true;          ///< resting particles sleep (kSleeping) until woken
-    double sleepSpeed = 1e-3;   ///< m/s: slower than this in resting contact ...
-    double sleepTime = 0.5;     ///< s: ... for this long puts a particle to sleep
+    double sleepSpeed = 1e-3;   ///< m/s: a mean velocity below this in resting contact ...
+    double sleepTime = 0.5;     ///< s: ... over this long puts a particle to sleep
     double penaltyHertz = 10.0; ///< penalty contact stiffness, cycles per second (k = m (2 pi f)^2)
     int constraintIterations = 4;      ///< most Newton steps of the rod/cable projection, >= 1
     double constraintTolerance = 1e-6; ///< relative length error at which they stop, [0, 1)

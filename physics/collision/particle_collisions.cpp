@@ -880,33 +880,53 @@ void ParticleCollisions::penaltyPhase(ParticleSet& set, const StaticShapes& shap
     }
 }
 
+// A particle in resting contact is still when its velocity is below sleepSpeed, or when
+// its motion is: it has strayed less than sleepSpeed * sleepTime from where its rest
+// window started (restAnchor_), a mean velocity below sleepSpeed. Either alone misses a
+// kind of rest. The velocity misses a particle wedged between sleepers, or a cluster the
+// contact solver leaves with a residual velocity that the position projection undoes
+// every step: they report centimetres per second and go nowhere. The motion misses a
+// particle the projection nudges a fraction of a millimetre a step while it has no
+// velocity at all. After sleepTime still, it sleeps. A steady slide at sleepSpeed or
+// faster fails both; so does any tick without a resting contact.
 void ParticleCollisions::updateSleep(ParticleSet& set, const CollisionDef& def, double dt,
                                      const std::vector<std::uint8_t>& tethered) {
     const std::size_t n = set.slots();
-    growTo(sleepTimer_, n), growTo(resting_, n);
+    growTo(sleepTimer_, n), growTo(resting_, n), growTo(restAnchor_, n);
+    auto restartWindow = [&](std::size_t i) {
+        sleepTimer_[i] = 0.0;
+        restAnchor_[i] = set.position(i);
+    };
     if (restTimersStale_) { // what updateSleep would have done in the ticks without contacts
         for (std::size_t i = 0; i < n; ++i)
-            if (!(set.flags[i] & kSleeping)) sleepTimer_[i] = 0.0;
+            if (!(set.flags[i] & kSleeping)) restartWindow(i);
         restTimersStale_ = false;
     }
+    const double stray = def.sleepSpeed * def.sleepTime; // m: the window's allowed drift
     int asleep = 0;
     for (std::size_t i = 0; i < n; ++i) {
         if (set.flags[i] & kSleeping) {
             asleep += (set.flags[i] & kAlive) ? 1 : 0;
             continue;
         }
-        const bool still = def.sleep && resting_[i] && !(i < tethered.size() && tethered[i]) &&
-                           moving(set, i) &&
-                           lengthSquared(set.velocity(i)) < def.sleepSpeed * def.sleepSpeed;
-        sleepTimer_[i] = still ? sleepTimer_[i] + dt : 0.0;
-        if (still && sleepTimer_[i] >= def.sleepTime) {
+        const bool resting = def.sleep && resting_[i] &&
+                             !(i < tethered.size() && tethered[i]) && moving(set, i);
+        resting_[i] = 0;
+        const bool slow = lengthSquared(set.velocity(i)) < def.sleepSpeed * def.sleepSpeed;
+        const bool stayed = lengthSquared(set.position(i) - restAnchor_[i]) <= stray * stray;
+        if (!resting || !(slow || stayed)) {
+            restartWindow(i);
+            continue;
+        }
+        if (!stayed) restAnchor_[i] = set.position(i); // slow but drifting: measure anew
+        sleepTimer_[i] += dt;
+        if (sleepTimer_[i] >= def.sleepTime) {
             set.flags[i] = (set.flags[i] | kSleeping) & ~kHistory;
             set.vx[i] = set.vy[i] = 0.0;
             set.halfVx[i] = set.halfVy[i] = 0.0;
-            sleepTimer_[i] = 0.0;
+            restartWindow(i);
             ++asleep;
         }
-        resting_[i] = 0;
     }
     stats_.sleeping = asleep;
 }

@@ -26,8 +26,10 @@
 // does not slide. A particle resting on a surface so stays exactly where it is, with no
 // jitter and no creep. A resting pair of free particles (a stack, a pile) goes to the
 // contact solver, which settles a pile in one step where passes would settle it one
-// layer per pass. After sleepTime below sleepSpeed a resting particle sleeps (kSleeping)
-// until an impulse, a blast or a command wakes it; sleepers are immovable to the others.
+// layer per pass. A particle that spends sleepTime in resting contact at a mean velocity
+// below sleepSpeed (it strays less than sleepSpeed * sleepTime from where the time
+// started) sleeps (kSleeping) until an impulse, a blast or a command wakes it; sleepers
+// are immovable to the others.
 // Particles tied to springs or constraints do not sleep.
 //
 // The broad phase runs on fattened boxes and its pairs are kept while every particle's
@@ -151,7 +153,8 @@ class ParticleCollisions {
     std::vector<PathMotion> path_;
     std::vector<Vec2> sv_, sa_;
     std::vector<std::uint8_t> touched_, resting_;
-    std::vector<double> sleepTimer_;
+    std::vector<double> sleepTimer_; ///< s in resting contact within the rest window
+    std::vector<Vec2> restAnchor_;   ///< where the rest window started
     bool restTimersStale_ = false; ///< ticks without contacts passed since updateSleep
     // Broad phase.
     std::vector<Aabb> boxes_;

@@ -55,18 +55,38 @@ TEST(RestartPoints, ASeekBackFromAPointGivesStraightPlaysHashes) {
         ASSERT_GT(player.restartPoints().points(), 0u);
         player.seek(player.lastTick());
         ASSERT_FALSE(player.divergence().has_value());
-        // Back to every stored checkpoint, latest first: each is reached from the parked
-        // match at or before it (tick % spacing re-simulated), and its hash is the
-        // recorded one.
-        for (auto it = g.replay.checkpoints.rbegin(); it != g.replay.checkpoints.rend(); ++it) {
-            player.seek(it->tick);
-            ASSERT_EQ(player.tick(), it->tick);
-            EXPECT_EQ(checkpointOf(player.match()).hash, it->hash) << "tick " << it->tick;
-            EXPECT_EQ(player.lastSeekResimulated(), it->tick % spacing) << "tick " << it->tick;
-            player.prepareRestartPoints(UINT64_MAX); // rebuild the one handed out
-            player.seek(player.lastTick());
-            EXPECT_EQ(player.match().hash(), g.replay.finalHash);
+        // The stored checkpoints a window of restart points at a time, latest window
+        // first, so each seek back finds its point still parked (one handed out is
+        // rebuilt from the start). The window's first checkpoint is reached by a seek
+        // back from the parked match at or before it (tick % spacing re-simulated); the
+        // rest by playing on from there. Every hash is the recorded one.
+        const auto& checkpoints = g.replay.checkpoints;
+        std::size_t end = checkpoints.size();
+        while (end > 0) {
+            const std::uint64_t window = checkpoints[end - 1].tick / spacing;
+            std::size_t first = end - 1;
+            while (first > 0 && checkpoints[first - 1].tick / spacing == window)
+                --first;
+            for (std::size_t k = first; k < end; ++k) {
+                const std::uint64_t tick = checkpoints[k].tick;
+                player.seek(tick);
+                ASSERT_EQ(player.tick(), tick);
+                EXPECT_EQ(checkpointOf(player.match()).hash, checkpoints[k].hash) << "tick " << tick;
+                if (k == first) {
+                    EXPECT_EQ(player.lastSeekResimulated(), tick % spacing) << "tick " << tick;
+                }
+            }
+            end = first;
         }
+        // Played on from the earliest of them, the match ends in the recorded hash; and
+        // the points handed out, made again, serve the next seek back.
+        player.seek(player.lastTick());
+        EXPECT_EQ(player.match().hash(), g.replay.finalHash);
+        EXPECT_TRUE(player.prepareRestartPoints(UINT64_MAX));
+        player.seek(player.restartPoints().points() * spacing);
+        EXPECT_EQ(player.lastSeekResimulated(), 0u);
+        player.seek(player.lastTick());
+        EXPECT_EQ(player.match().hash(), g.replay.finalHash);
         EXPECT_FALSE(player.divergence().has_value());
     }
 }
