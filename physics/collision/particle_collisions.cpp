@@ -413,11 +413,18 @@ ParticleCollisions::Resolution ParticleCollisions::resolvePair(const Candidate& 
     }
     sv_[i] += ci.impulse * wi;
     sv_[j] -= ci.impulse * wj;
+    mi.v = sv_[i];
+    mj.v = sv_[j];
     if (resting) {
-        if (wj == 0.0) { // resting on something immovable: it carries i for the rest of the step
-            mi.a = withoutInward(mi.a, n), sa_[i] = withoutInward(sa_[i], n);
+        // Resting on something immovable (a fixed or sleeping particle): it carries the
+        // other for the rest of the step as a static surface does, normal force and
+        // Coulomb friction both (support). Without the friction a ball came to rest on a
+        // sleeper slid off it however flat the contact.
+        const double remaining = h - *toi;
+        if (wj == 0.0) {
+            support(i, n, sv_[i] - sv_[j], pp, remaining);
         } else if (wi == 0.0) {
-            mj.a = withoutInward(mj.a, -n), sa_[j] = withoutInward(sa_[j], -n);
+            support(j, -n, sv_[j] - sv_[i], pp, remaining);
         } else {
             // Both free: they accelerate together along n (a plastic contact for the
             // rest of the step), sharing the momentum rate, weights m_i, m_j. What then
@@ -432,8 +439,6 @@ ParticleCollisions::Resolution ParticleCollisions::resolvePair(const Candidate& 
             share(sa_[i], sa_[j]);
         }
     }
-    mi.v = sv_[i];
-    mj.v = sv_[j];
     if (wi > 0.0) touched_[i] = 1, resting_[i] = resting_[i] || resting;
     if (wj > 0.0) touched_[j] = 1, resting_[j] = resting_[j] || resting;
     events_.push_back({static_cast<ParticleId>(i),
