@@ -104,28 +104,31 @@ void ParticleCollisions::buildProxies(const ParticleSet& set, const StaticShapes
 // and by a step of its motion) and its pairs are kept: a pass only filters them by the
 // kinds of now and the exact boxes, which gives exactly the pairs a broad phase over the
 // exact boxes would. That holds while every exact box lies in its fat box, no proxy can
-// pair with more than when the cache was built, and nothing else changed (slots, shapes,
-// settings); the first pass where that fails rebuilds the cache. A proxy that went to
-// rest (Moving to Resting: a particle fell asleep) or away (to None) only loses pairs,
-// so a pile whose particles fall asleep a few at a time keeps its broad phase; one more
-// movable than at the build (Resting to Moving, None to anything) may have new pairs. A
-// pile settling through eight passes a step, or resting for many steps, then costs one
-// broad phase instead of one a pass.
-bool ParticleCollisions::pairCacheHolds(const CollisionDef& def) const {
+// pair with more than when its pairs were found, and nothing else changed (slots,
+// shapes, settings). A proxy that went to rest (Moving to Resting: a particle fell
+// asleep) or away (to None) only loses pairs, so a pile whose particles fall asleep a few
+// at a time keeps its broad phase; one more movable than at the build (Resting to Moving,
+// None to anything) may have new pairs, as may one whose box left its fat box: these
+// escaped the cache. A few escaped proxies are patched (patchPairCache); many, or any
+// other change, rebuild the cache. A pile settling through eight passes a step, or
+// resting for many steps, then costs one broad phase instead of one a pass.
+ParticleCollisions::CacheState ParticleCollisions::checkPairCache(const CollisionDef& def) {
     const std::size_t n = boxes_.size();
+    escaped_.clear();
     if (!cacheValid_ || fatBoxes_.size() != n || cachedShapes_ != staticIndex_.version() ||
         cachedBroadPhase_ != def.broadPhase || cachedCellSize_ != def.gridCellSize)
-        return false;
+        return CacheState::Rebuild;
     for (std::size_t i = 0; i < n; ++i) {
         const ProxyKind k = kinds_[i], f0 = fatKinds_[i];
         const bool fewerPairs = k == f0 || k == ProxyKind::None || f0 == ProxyKind::Moving;
-        if (!fewerPairs) return false;
         const Aabb &b = boxes_[i], &f = fatBoxes_[i];
         const bool inside =
             (f.lo.x <= b.lo.x) & (f.lo.y <= b.lo.y) & (b.hi.x <= f.hi.x) & (b.hi.y <= f.hi.y);
-        if (k != ProxyKind::None && !inside) return false;
+        if (fewerPairs && (k == ProxyKind::None || inside)) continue;
+        if (!def.patchPairs || escaped_.size() == kMostPatched) return CacheState::Rebuild;
+        escaped_.push_back(static_cast<std::uint32_t>(i));
     }
-    return true;
+    return escaped_.empty() ? CacheState::Holds : CacheState::Patch;
 }
 
 void ParticleCollisions::buildPairCache(const CollisionDef& def) {
@@ -171,6 +174,68 @@ void ParticleCollisions::buildPairCache(const CollisionDef& def) {
     ++stats_.broadPhases;
 }
 
+// The cache mended where proxies escaped it: each escaped proxy gets a new fat box and
+// kind, loses its kept pairs, and is tested against every proxy's fat box (and looked up
+// in the static index) for new ones. For k escaped proxies of n that is k n box tests,
+// against a rebuild's grid of all n (thousands of instructions a proxy): a ball
+// bouncing out of its box in a resting heap no longer rebuilds the heap's pairs. The
+// cache stays a superset of the overlapping pairs, sorted, so the pairs a pass keeps,
+// and the bits, are those a rebuild would give.
+void ParticleCollisions::patchPairCache() {
+    const auto n = static_cast<std::uint32_t>(boxes_.size());
+    growTo(escapedMark_, n);
+    for (const std::uint32_t e : escaped_) {
+        const Vec2 grow{margin_[e], margin_[e]};
+        fatBoxes_[e] = {boxes_[e].lo - grow, boxes_[e].hi + grow};
+        fatKinds_[e] = kinds_[e];
+        escapedMark_[e] = 1;
+    }
+    auto escaped = [&](const ProxyPair& p) {
+        return escapedMark_[p.first] != 0 || (p.second < n && escapedMark_[p.second] != 0);
+    };
+    std::erase_if(particlePairs_, escaped);
+    std::erase_if(staticPairs_, escaped);
+    fresh_.clear();
+    for (const std::uint32_t e : escaped_) {
+        const ProxyKind ke = fatKinds_[e];
+        if (ke == ProxyKind::None) continue;
+        const Aabb& box = fatBoxes_[e];
+        // Branchless: which proxies overlap is as good as random.
+        std::size_t found = fresh_.size();
+        fresh_.resize(found + n);
+        for (std::uint32_t c = 0; c < n; ++c) {
+            const ProxyKind kc = fatKinds_[c];
+            const Aabb& o = fatBoxes_[c];
+            unsigned hit = (c != e) & (kc != ProxyKind::None) &
+                           ((ke == ProxyKind::Moving) | (kc == ProxyKind::Moving));
+            hit &= !(escapedMark_[c] != 0 && c < e); // a pair of two escaped ones: once
+            hit &= (box.lo.x <= o.hi.x) & (o.lo.x <= box.hi.x) & (box.lo.y <= o.hi.y) &
+                   (o.lo.y <= box.hi.y);
+            fresh_[found] = c < e ? ProxyPair{c, e} : ProxyPair{e, c};
+            found += hit;
+        }
+        fresh_.resize(found);
+        if (ke == ProxyKind::Moving) {
+            staticIndex_.query(box, staticHits_);
+            for (const std::uint32_t s : staticHits_)
+                staticPairs_.push_back({e, n + s});
+        }
+    }
+    for (const std::uint32_t e : escaped_)
+        escapedMark_[e] = 0;
+    std::sort(fresh_.begin(), fresh_.end());
+    // (std::inplace_merge would take a buffer from the heap each time.)
+    mergedPairs_.resize(particlePairs_.size() + fresh_.size());
+    std::merge(particlePairs_.begin(), particlePairs_.end(), fresh_.begin(), fresh_.end(),
+               mergedPairs_.begin());
+    particlePairs_.swap(mergedPairs_);
+    std::sort(staticPairs_.begin(), staticPairs_.end());
+    cachedPairs_.resize(particlePairs_.size() + staticPairs_.size());
+    std::merge(particlePairs_.begin(), particlePairs_.end(), staticPairs_.begin(),
+               staticPairs_.end(), cachedPairs_.begin());
+    ++stats_.cachePatches;
+}
+
 // The cached pairs the proxies can make with the kinds of now (at least one moving, none
 // gone; a shape pairs only with a moving particle), again only when a kind changed: once
 // a tick as particles fall asleep, not once a pass. The full cache is kept, so a
@@ -190,7 +255,17 @@ void ParticleCollisions::selectLivePairs() {
 }
 
 void ParticleCollisions::findPairs(const CollisionDef& def) {
-    if (!pairCacheHolds(def)) buildPairCache(def);
+    switch (checkPairCache(def)) {
+    case CacheState::Rebuild:
+        buildPairCache(def);
+        break;
+    case CacheState::Patch:
+        patchPairCache();
+        selectLivePairs();
+        break;
+    case CacheState::Holds:
+        break;
+    }
     if (kinds_ != liveKinds_) selectLivePairs();
     // Kept pairs whose exact boxes overlap; without branches (which pass is a coin toss).
     const auto n = static_cast<std::uint32_t>(boxes_.size());

@@ -70,6 +70,7 @@ struct CollisionStats {
     int impacts = 0;  ///< contacts resolved (bounces and resting)
     int passes = 0;   ///< detect-and-resolve passes
     int broadPhases = 0; ///< broad phases run (the others reused their pairs)
+    int cachePatches = 0; ///< passes that mended the kept pairs where a few proxies escaped
     int sleeping = 0; ///< particles asleep after the step
 };
 
@@ -120,8 +121,10 @@ class ParticleCollisions {
     void buildProxies(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                       double h, bool atEndOnly, double grow = 0.0);
     void findPairs(const CollisionDef& def);
-    bool pairCacheHolds(const CollisionDef& def) const;
+    enum class CacheState { Holds, Patch, Rebuild };
+    CacheState checkPairCache(const CollisionDef& def);
     void buildPairCache(const CollisionDef& def);
+    void patchPairCache();
     void selectLivePairs();
     void detect(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                 double h);
@@ -169,6 +172,12 @@ class ParticleCollisions {
     // The cached pairs that can pair with the kinds of liveKinds_ (selectLivePairs).
     std::vector<ProxyPair> livePairs_;
     std::vector<ProxyKind> liveKinds_;
+    // Proxies that escaped the cache this pass (checkPairCache), at most kMostPatched:
+    // more rebuild it.
+    static constexpr std::size_t kMostPatched = 64;
+    std::vector<std::uint32_t> escaped_;
+    std::vector<std::uint8_t> escapedMark_;
+    std::vector<ProxyPair> fresh_, mergedPairs_; ///< the escaped proxies' new pairs; scratch
     bool cacheValid_ = false;
     std::uint64_t cachedShapes_ = 0;
     BroadPhase cachedBroadPhase_ = BroadPhase::Grid;
