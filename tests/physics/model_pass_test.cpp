@@ -19,7 +19,8 @@ namespace {
 
 // A set with every kind of particle: drag-free, weightless, fixed, asleep, dead, already
 // on the closed form (some off their parabola), attractors, some under water; an odd
-// number of slots so the paired path has a tail.
+// number of slots so the paired path has a tail; and a run of plain ones (alive, awake,
+// massive, with drag and gravity), which the lane sweeps step without masks.
 ParticleSet mixedSet(unsigned seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -31,6 +32,11 @@ ParticleSet mixedSet(unsigned seed) {
         d.mass = 0.5 + 0.4 * u(rng);
         d.radius = 0.05 + 0.04 * u(rng);
         d.dragCoefficient = 0.47 + 0.2 * u(rng);
+        const bool plain = i >= 200 && i < 264;
+        if (plain) {
+            s.add(d);
+            continue;
+        }
         if (i % 7 == 0) d.flags |= kNoDrag;
         if (i % 11 == 0) d.flags |= kNoGravity;
         if (i % 13 == 0) d.mass = 0.0;
@@ -39,7 +45,7 @@ ParticleSet mixedSet(unsigned seed) {
         s.add(d);
     }
     for (std::size_t i = 0; i < s.slots(); i += 5) { // on the closed form since t = 0.5 s
-        if (s.invMass[i] <= 0.0 || (s.flags[i] & kSleeping)) continue;
+        if (s.invMass[i] <= 0.0 || (s.flags[i] & kSleeping) || (i >= 200 && i < 264)) continue;
         s.flags[i] |= kBallistic;
         s.launchX[i] = s.px[i], s.launchY[i] = s.py[i];
         s.launchVx[i] = s.vx[i], s.launchVy[i] = s.vy[i];
