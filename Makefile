@@ -68,10 +68,15 @@ clean:
 
 # --- Robustness -----------------------------------------------------------
 # make sanitize: the whole suite built with AddressSanitizer + UndefinedBehaviorSanitizer,
-# floating-point exceptions trapped in the physics tests (ARTILLERY_TRAP_FP).
+# floating-point exceptions trapped in the physics tests (ARTILLERY_TRAP_FP). Built at -O1
+# with line tables only (-g1): an instrumented file compiles in half the time of -O2 -g
+# (game/match.cpp 12.9 s against 25.7 s), and line tables are all the sanitizers'
+# stack traces need.
 SAN_BUILD ?= build-asan
+SAN_FLAGS := -O1 -g1 -DNDEBUG
 sanitize: deps
-	cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARTILLERY_SANITIZE=ON
+	cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARTILLERY_SANITIZE=ON \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$(SAN_FLAGS)" -DCMAKE_C_FLAGS_RELWITHDEBINFO="$(SAN_FLAGS)"
 	cmake --build $(SAN_BUILD) -j $(JOBS)
 	cd $(SAN_BUILD) && ARTILLERY_TRAP_FP=1 ASAN_OPTIONS=detect_leaks=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
