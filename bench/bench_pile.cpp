@@ -7,17 +7,18 @@
 //   callgrind_annotate callgrind.out.<pid> | head -40
 //
 // Each side is built and settled for kPileSettleTicks (0.5 s, not counted), then steps
-// `--ticks` more; Ir per tick is the collected total over the ticks. Without valgrind it
-// prints wall ms per tick (meaningful on a quiet machine only; read the ratio) and, for
-// checking that a change gives the same bits, the particle world's hash and what the
-// step did (contacts, pairs, passes, broad phases, sleepers).
+// `--skip` ticks (not counted either; 0 by default), then `--ticks` more; Ir per tick is the
+// collected total over the ticks. Without valgrind it prints wall ms per tick (meaningful on a
+// quiet machine only; read the ratio) and, for checking that a change gives the same bits, the
+// particle world's hash and what the step did (contacts, pairs, passes, broad phases, sleepers).
 //
 // `--heap N --seconds S` instead drops the staggered heap of tests/physics/pile_test.cpp
 // (N balls, each row offset by half a spacing) and prints, every simulated second, how
 // many balls sleep, the kinetic energy and the fastest ball: whether a big heap comes
 // to rest.
 //
-// Usage: bench_pile [--balls N] [--ticks T] [--side particles|rigid|both] [--trace] [--csv]
+// Usage: bench_pile [--balls N] [--skip S] [--ticks T] [--side particles|rigid|both] [--trace]
+// [--csv]
 //        bench_pile --heap N [--seconds S]
 #include "game/bench/scaling.h"
 #include "physics/diagnostics.h"
@@ -64,6 +65,7 @@ int sleepers(const ParticleSet& p) {
 struct Options {
     long balls = 2000;
     int ticks = 60;
+    int skip = 0; ///< ticks stepped after the settling and before the counted ones
     bool particles = true, rigid = true, csv = false, trace = false;
     long heap = 0;
     double seconds = 20.0;
@@ -119,6 +121,8 @@ int main(int argc, char** argv) {
         const bool more = i + 1 < argc;
         if (a == "--balls" && more) {
             o.balls = std::atol(argv[++i]);
+        } else if (a == "--skip" && more) {
+            o.skip = std::atoi(argv[++i]);
         } else if (a == "--ticks" && more) {
             o.ticks = std::atoi(argv[++i]);
         } else if (a == "--side" && more) {
@@ -134,15 +138,17 @@ int main(int argc, char** argv) {
         } else if (a == "--seconds" && more) {
             o.seconds = std::atof(argv[++i]);
         } else {
-            std::fprintf(stderr,
-                         "usage: bench_pile [--balls N] [--ticks T] [--side particles|rigid|both] "
-                         "[--trace] [--csv]\n       bench_pile --heap N [--seconds S]\n");
+            std::fprintf(stderr, "usage: bench_pile [--balls N] [--skip S] [--ticks T] [--side "
+                                 "particles|rigid|both] "
+                                 "[--trace] [--csv]\n       bench_pile --heap N [--seconds S]\n");
             return 2;
         }
     }
-    if (o.balls < 1 || o.ticks < 1 || (!o.particles && !o.rigid) || !(o.seconds > 0.0)) {
-        std::fprintf(stderr, "bench_pile: --balls and --ticks must be >= 1, --side one of "
-                             "particles, rigid, both, --seconds > 0\n");
+    if (o.balls < 1 || o.ticks < 1 || o.skip < 0 || (!o.particles && !o.rigid) ||
+        !(o.seconds > 0.0)) {
+        std::fprintf(stderr,
+                     "bench_pile: --balls and --ticks must be >= 1, --skip >= 0, --side one of "
+                     "particles, rigid, both, --seconds > 0\n");
         return 2;
     }
     if (o.heap > 0) {
@@ -153,17 +159,20 @@ int main(int argc, char** argv) {
     double particleMs = NAN, rigidMs = NAN;
     if (o.particles) {
         auto w = game::bench::particlePile(o.balls);
-        for (int t = 0; t < game::bench::kPileSettleTicks; ++t)
+        for (int t = 0; t < game::bench::kPileSettleTicks + o.skip; ++t)
             w->step();
         const auto t0 = Clock::now();
         if (o.trace) // what each tick did, to see where a window's work falls
             for (int t = 0; t < o.ticks; ++t) {
+                const auto tickStart = Clock::now();
                 stepParticlePile(*w, 1);
+                const double ms = msSince(tickStart);
                 const CollisionStats& s = w->collisionStats();
-                std::printf("tick %d: %zu contacts, %d pairs, %d passes, %d broad phases, "
-                            "%d asleep\n",
-                            game::bench::kPileSettleTicks + t + 1, w->contacts().size(), s.pairs,
-                            s.passes, s.broadPhases, sleepers(w->particles));
+                std::printf("tick %d: %.4f ms, %zu contacts, %d pairs, %d passes, %d broad "
+                            "phases, %d asleep\n",
+                            game::bench::kPileSettleTicks + o.skip + t + 1, ms,
+                            w->contacts().size(), s.pairs, s.passes, s.broadPhases,
+                            sleepers(w->particles));
             }
         else
             stepParticlePile(*w, o.ticks);
@@ -178,10 +187,18 @@ int main(int argc, char** argv) {
     if (o.rigid) {
         auto w = game::bench::rigidPile(o.balls);
         const double tick = WorldDef{}.tickSeconds;
-        for (int t = 0; t < game::bench::kPileSettleTicks; ++t)
+        for (int t = 0; t < game::bench::kPileSettleTicks + o.skip; ++t)
             w->step(tick);
         const auto t0 = Clock::now();
-        stepRigidPile(*w, o.ticks, tick);
+        if (o.trace)
+            for (int t = 0; t < o.ticks; ++t) {
+                const auto tickStart = Clock::now();
+                stepRigidPile(*w, 1, tick);
+                std::printf("box2d tick %d: %.4f ms\n",
+                            game::bench::kPileSettleTicks + o.skip + t + 1, msSince(tickStart));
+            }
+        else
+            stepRigidPile(*w, o.ticks, tick);
         rigidMs = msSince(t0) / o.ticks;
         if (!o.csv)
             std::printf("box2d     %ld balls: %.4f ms/tick; hash %016llx\n", o.balls, rigidMs,
