@@ -35,6 +35,11 @@ struct CollisionDef {
     /// Detect-and-resolve passes per sub-step: each finds the impacts that the previous
     /// pass's bounces lead to later in the same step, >= 1.
     int maxPasses = 8;
+    /// A pass after the first detects again only what the pass before it changed (the
+    /// paths of the particles it bounced, and the resting pairs it left to the solver):
+    /// the same candidates, so the same bits, for the cost of the changes. Off: every
+    /// pass detects over every particle.
+    bool redetectChangesOnly = true;
     /// Resting contacts between two free particles (a pile, a stack) go to the contact
     /// solver at the end of the step, which settles them all at once, instead of pass
     /// after pass settling them one layer at a time. Impacts, and resting contacts with

@@ -75,29 +75,33 @@ void ParticleCollisions::buildProxies(const ParticleSet& set, const StaticShapes
     margin_.resize(n);
     staticIndex_.update(shapes);
     staticHits_.reserve(shapes.count()); // the most a query can return: no growth later
-    for (std::size_t i = 0; i < n; ++i) {
-        if ((set.flags[i] & (kAlive | kNoCollide)) != kAlive) {
-            kinds_[i] = ProxyKind::None;
-            continue;
-        }
-        kinds_[i] = moving(set, i) ? ProxyKind::Moving : ProxyKind::Resting;
-        const PathMotion& m = path_[i];
-        const Vec2 end = m.position(h);
-        // A quadratic path lies in the triangle of its Bezier control points:
-        // start, start + v T/2, end.
-        const Vec2 mid = m.p + m.v * (0.5 * (h - m.t0));
-        Vec2 lo = end, hi = end;
-        if (!atEndOnly)
-            for (const Vec2 q : {m.p, mid}) {
-                lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
-                hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
-            }
-        const double r = set.radius[i] * (1.0 + grow) + def.toiTolerance;
-        boxes_[i] = {lo - Vec2{r, r}, hi + Vec2{r, r}};
-        // For the pair cache: room for a radius of play (contacts push particles by up
-        // to centimetres in a pile) and a step of motion.
-        margin_[i] = set.radius[i] + length(m.v) * h;
+    for (std::size_t i = 0; i < n; ++i)
+        buildProxy(set, def, i, h, atEndOnly, grow);
+}
+
+void ParticleCollisions::buildProxy(const ParticleSet& set, const CollisionDef& def, std::size_t i,
+                                    double h, bool atEndOnly, double grow) {
+    if ((set.flags[i] & (kAlive | kNoCollide)) != kAlive) {
+        kinds_[i] = ProxyKind::None;
+        return;
     }
+    kinds_[i] = moving(set, i) ? ProxyKind::Moving : ProxyKind::Resting;
+    const PathMotion& m = path_[i];
+    const Vec2 end = m.position(h);
+    // A quadratic path lies in the triangle of its Bezier control points:
+    // start, start + v T/2, end.
+    const Vec2 mid = m.p + m.v * (0.5 * (h - m.t0));
+    Vec2 lo = end, hi = end;
+    if (!atEndOnly)
+        for (const Vec2 q : {m.p, mid}) {
+            lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
+            hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
+        }
+    const double r = set.radius[i] * (1.0 + grow) + def.toiTolerance;
+    boxes_[i] = {lo - Vec2{r, r}, hi + Vec2{r, r}};
+    // For the pair cache: room for a radius of play (contacts push particles by up
+    // to centimetres in a pile) and a step of motion.
+    margin_[i] = set.radius[i] + length(m.v) * h;
 }
 
 // The broad phase proper runs on fattened boxes (each particle's box grown by a margin
@@ -167,6 +171,7 @@ void ParticleCollisions::buildPairCache(const CollisionDef& def) {
                staticPairs_.end(), cachedPairs_.begin());
     livePairs_ = cachedPairs_;
     liveKinds_ = fatKinds_;
+    ++livePairsVersion_;
     cacheValid_ = true;
     cachedShapes_ = staticIndex_.version();
     cachedBroadPhase_ = def.broadPhase;
@@ -252,6 +257,7 @@ void ParticleCollisions::selectLivePairs() {
             livePairs_.push_back(p);
     }
     liveKinds_ = kinds_;
+    ++livePairsVersion_;
 }
 
 void ParticleCollisions::findPairs(const CollisionDef& def) {
@@ -287,35 +293,43 @@ void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shap
     findPairs(def);
     stats_.pairs += static_cast<int>(pairs_.size());
     candidates_.clear();
+    for (const ProxyPair& pair : pairs_)
+        addCandidate(set, shapes, def, pair, h);
+    orderCandidates();
+    ++pass_; // paths are as detected until a contact of this pass changes them
+    detectMicros_ +=
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void ParticleCollisions::addCandidate(const ParticleSet& set, const StaticShapes& shapes,
+                                      const CollisionDef& def, ProxyPair pair, double h) {
     const auto n = static_cast<std::uint32_t>(set.slots());
-    for (const ProxyPair& pair : pairs_) {
-        const std::uint32_t a = pair.first, b = pair.second; // (clang 14 cannot capture a structured binding)
-        if (b >= n) {
-            if (!moving(set, a)) continue;
-            const ShapeRef ref = shapes.ref(b - n);
-            const auto t = withShape(shapes, ref, [&](const auto& shape) {
-                return timeOfImpact(shape, set.radius[a], path_[a], h, toi_);
-            });
-            if (t) candidates_.push_back({a, kNoParticle, ref, *t});
-        } else if (def.particlePairs) {
-            const PathMotion rel = path_[a].relativeTo(path_[b]);
-            const auto t =
-                timeOfImpact(Circle{{0.0, 0.0}, set.radius[b]}, set.radius[a], rel, h, toi_);
-            if (t) candidates_.push_back({a, b, {}, *t});
-        }
+    const std::uint32_t a = pair.first,
+                        b = pair.second; // (clang 14 cannot capture a structured binding)
+    if (b >= n) {
+        if (!moving(set, a)) return;
+        const ShapeRef ref = shapes.ref(b - n);
+        const auto t = withShape(shapes, ref, [&](const auto& shape) {
+            return timeOfImpact(shape, set.radius[a], path_[a], h, toi_);
+        });
+        if (t) candidates_.push_back({a, kNoParticle, ref, *t, b, false});
+    } else if (def.particlePairs) {
+        const PathMotion rel = path_[a].relativeTo(path_[b]);
+        const auto t = timeOfImpact(Circle{{0.0, 0.0}, set.radius[b]}, set.radius[a], rel, h, toi_);
+        if (t) candidates_.push_back({a, b, {}, *t, b, false});
     }
-    // Time order; ties in a fixed order so the result never depends on the sort: the
-    // order of the pairs (a, then b, shapes after particles, shapes in ref order), in
-    // which the candidates were made. So a sort of (time, index) keys is enough.
+}
+
+// Time order; ties in a fixed order so the result never depends on the sort: the order of
+// the pairs (a, then b, shapes after particles, shapes in ref order), in which the
+// candidates are listed. So a sort of (time, index) keys is enough.
+void ParticleCollisions::orderCandidates() {
     order_.resize(candidates_.size());
     for (std::size_t k = 0; k < candidates_.size(); ++k)
         order_[k] = {candidates_[k].time, static_cast<std::uint32_t>(k)};
     std::sort(order_.begin(), order_.end(), [](const TimeKey& x, const TimeKey& y) {
         return x.time < y.time || (x.time == y.time && x.index < y.index);
     });
-    ++pass_; // paths are as detected until a contact of this pass changes them
-    detectMicros_ +=
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // Moves particle i's path start to time t (state velocity carried with its own rate).
@@ -394,7 +408,7 @@ ParticleCollisions::resolveStatic(const Candidate& c, ParticleSet& set, const St
                                return timeOfImpact(shape, r, path_[i], h, toi_);
                            });
     if (!toi) return Resolution::None;
-    pathChanged_[i] = pass_;
+    markChanged(i);
     rebase(i, *toi);
     PathMotion& m = path_[i];
     const SurfacePoint sp = shapes.closestPoint(c.shape, m.p);
@@ -451,13 +465,18 @@ ParticleCollisions::Resolution ParticleCollisions::resolvePair(const Candidate& 
         const double vn = dot(vrel, n);
         if (def.restingPairsToSolver && wi > 0.0 && wj > 0.0 &&
             -vn < restingLimit(i, j, an, def, h)) {
-            deferred_.push_back({(std::uint64_t{c.a} << 32) | c.b,
-                                 static_cast<std::uint32_t>(deferred_.size()), tickTime + *toi, -vn,
-                                 n, pi.position(*toi)});
+            // Only its first deferral is reported (reportDeferred), and a carried pair
+            // has one from a pass before.
+            if (!c.carried)
+                deferred_.push_back({(std::uint64_t{c.a} << 32) | c.b,
+                                     static_cast<std::uint32_t>(deferred_.size()), tickTime + *toi,
+                                     -vn, n, pi.position(*toi)});
+            leftToSolver_.push_back(c);
             return Resolution::Deferred;
         }
     }
-    pathChanged_[i] = pathChanged_[j] = pass_;
+    markChanged(i);
+    markChanged(j);
     rebase(i, *toi);
     rebase(j, *toi);
     PathMotion &mi = path_[i], &mj = path_[j];
@@ -547,7 +566,10 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
     bool converged = false;
     deferred_.clear();
     for (int pass = 0; pass < def.maxPasses; ++pass) {
-        detect(set, shapes, def, h);
+        if (pass == 0 || !def.redetectChangesOnly || !detectChanges(set, shapes, def, h))
+            detect(set, shapes, def, h);
+        changed_.clear(); // what this pass changes, for the next one
+        leftToSolver_.clear();
         ++stats_.passes;
         int resolved = 0;
         for (const TimeKey& key : order_) {
@@ -747,7 +769,8 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
             reach += set.radius[c.b];
             smallest = std::min(smallest, set.radius[c.b]);
         }
-        const double depth = crossed ? reach - sp.distance : std::min(reach - sp.distance, 0.2 * smallest);
+        const double depth =
+            crossed ? reach - sp.distance : std::min(reach - sp.distance, 0.2 * smallest);
         if (!(depth > 0.0)) return;
         const Vec2 move = sp.normal * depth;
         const double fa = wa / (wa + wb), fb = wb / (wa + wb);
@@ -989,8 +1012,8 @@ void ParticleCollisions::updateSleep(ParticleSet& set, const CollisionDef& def, 
             asleep += (set.flags[i] & kAlive) ? 1 : 0;
             continue;
         }
-        const bool resting = def.sleep && resting_[i] &&
-                             !(i < tethered.size() && tethered[i]) && moving(set, i);
+        const bool resting =
+            def.sleep && resting_[i] && !(i < tethered.size() && tethered[i]) && moving(set, i);
         resting_[i] = 0;
         const bool slow = lengthSquared(set.velocity(i)) < def.sleepSpeed * def.sleepSpeed;
         const bool stayed = lengthSquared(set.position(i) - restAnchor_[i]) <= stray * stray;

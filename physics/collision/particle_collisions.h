@@ -33,8 +33,10 @@
 // Particles tied to springs or constraints do not sleep.
 //
 // The broad phase runs on fattened boxes and its pairs are kept while every particle's
-// box stays inside its fat one, so most passes, and most steps of a resting pile, only
-// filter the kept pairs by the exact boxes: the same pairs, for a fraction of the cost.
+// box stays inside its fat one, so most steps of a resting pile only filter the kept
+// pairs by the exact boxes: the same pairs, for a fraction of the cost. A pass after the
+// first detects again only what the pass before it changed (later_passes.cpp): the
+// paths it changed, and the resting pairs it left to the solver.
 #pragma once
 
 #include "physics/collision/broadphase.h"
@@ -66,12 +68,13 @@ struct ContactEvent {
 
 /// Per-step statistics.
 struct CollisionStats {
-    int pairs = 0;    ///< broad-phase pairs, summed over passes
-    int impacts = 0;  ///< contacts resolved (bounces and resting)
-    int passes = 0;   ///< detect-and-resolve passes
-    int broadPhases = 0; ///< broad phases run (the others reused their pairs)
+    int pairs = 0;        ///< broad-phase pairs tested, summed over passes
+    int impacts = 0;      ///< contacts resolved (bounces and resting)
+    int passes = 0;       ///< detect-and-resolve passes
+    int broadPhases = 0;  ///< broad phases run (the others reused their pairs)
     int cachePatches = 0; ///< passes that mended the kept pairs where a few proxies escaped
-    int sleeping = 0; ///< particles asleep after the step
+    int changesOnly = 0;  ///< passes that detected only what the pass before changed
+    int sleeping = 0;     ///< particles asleep after the step
 };
 
 class ParticleCollisions {
@@ -115,11 +118,16 @@ class ParticleCollisions {
         std::uint32_t b; // particle, or kNoParticle for shape
         ShapeRef shape;
         double time;
+        std::uint32_t proxy; // b, or slots + the shape's index: the pair order's key
+        bool carried;        // a resting pair the last pass left to the solver, found again
     };
     void buildPaths(const ParticleSet& set, double h);
     /// Boxes of the paths (or of the end positions), radii grown by `grow` of themselves.
     void buildProxies(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                       double h, bool atEndOnly, double grow = 0.0);
+    /// Particle i's proxy: its kind, the box of its path, the margin of its fat box.
+    void buildProxy(const ParticleSet& set, const CollisionDef& def, std::size_t i, double h,
+                    bool atEndOnly, double grow);
     void findPairs(const CollisionDef& def);
     enum class CacheState { Holds, Patch, Rebuild };
     CacheState checkPairCache(const CollisionDef& def);
@@ -128,6 +136,21 @@ class ParticleCollisions {
     void selectLivePairs();
     void detect(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                 double h);
+    /// A pair of the broad phase that meets within the step becomes a candidate.
+    void addCandidate(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
+                      ProxyPair pair, double h);
+    /// Candidates in the order they are resolved: by time, ties in pair order.
+    void orderCandidates();
+    /// The detection of a pass after the first from what the last pass changed; false
+    /// when a changed particle left what the kept pairs cover (detect runs instead).
+    bool detectChanges(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
+                       double h);
+    void indexLivePairs();
+    /// A path changed by a contact of this pass.
+    void markChanged(std::size_t i) {
+        if (pathChanged_[i] != pass_) changed_.push_back(static_cast<std::uint32_t>(i));
+        pathChanged_[i] = pass_;
+    }
     /// What resolving a candidate did: nothing (no contact any more), a resting contact,
     /// an impact, or nothing yet (a resting pair, left to the contact solver).
     enum class Resolution { None, Resting, Impact, Deferred };
@@ -158,7 +181,7 @@ class ParticleCollisions {
     std::vector<std::uint8_t> touched_, resting_;
     std::vector<double> sleepTimer_; ///< s in resting contact within the rest window
     std::vector<Vec2> restAnchor_;   ///< where the rest window started
-    bool restTimersStale_ = false; ///< ticks without contacts passed since updateSleep
+    bool restTimersStale_ = false;   ///< ticks without contacts passed since updateSleep
     // Broad phase.
     std::vector<Aabb> boxes_;
     std::vector<ProxyKind> kinds_;
@@ -194,6 +217,13 @@ class ParticleCollisions {
     std::vector<TimeKey> order_;             ///< candidates in the order they are resolved
     std::uint32_t pass_ = 0;                 ///< counts passes over the world's life
     std::vector<std::uint32_t> pathChanged_; ///< pass_ when a contact last changed the path
+    std::vector<std::uint32_t> changed_;     ///< the particles whose paths this pass changed
+    std::vector<Candidate> leftToSolver_;    ///< the resting pairs this pass deferred
+    std::vector<Candidate> carried_, mergedCandidates_; ///< scratch of detectChanges
+    // The live pairs by particle (offsets into a flat list of their indices), built when a
+    // later pass needs them, for the live pairs of livePairsVersion_.
+    std::vector<std::uint32_t> pairStart_, pairsOf_, pairFill_;
+    std::uint64_t livePairsVersion_ = 0, indexedVersion_ = ~std::uint64_t{0};
     // The end-of-step contact solver (relaxContacts).
     struct RelaxContact {
         std::uint32_t a = 0;

@@ -1,0 +1,111 @@
+// The passes after the first of a sub-step (ParticleCollisions::impulsePhase) detect
+// again only what the pass before them changed.
+//
+// A pass resolves its candidates in time order, and all it changes is the paths of the
+// particles it bounced, stopped or put to rest (markChanged): their kinds, boxes and
+// times of impact. So the next pass's candidates are of two kinds:
+//   changed    pairs with a particle whose path changed: tested again, the kept pairs of
+//              each such particle filtered by its new box, then the time of impact;
+//   carried    pairs of two unchanged particles: their paths, boxes and time of impact
+//              are those of the last pass, so such a pair is a candidate again exactly
+//              when it was one then and its resolution changed neither path. That is a
+//              resting pair the pass left to the contact solver: a static contact, an
+//              impact or a resting contact always changes a path, and a candidate that
+//              came to nothing did so because a path had changed.
+// These are the candidates a detection over every particle finds, at the same times;
+// listed in pair order they keep its tie order too, so the passes resolve the same
+// contacts in the same order, to the bit. A pass then costs what the pass before it
+// changed, not the world: in a heap of 4,000 balls whose last awake ones bounce for all
+// eight passes of a step, a later pass re-tests the pairs of about 15 particles and
+// carries some 460 resting pairs, where a full detection boxed 4,000 particles and
+// filtered 18,000 kept pairs.
+// The kept pairs cover a changed particle while its box stays inside its fat box and it
+// can pair with no more than when they were selected (it did not wake); otherwise the
+// pass runs the full detection.
+#include "physics/collision/particle_collisions.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace phys {
+
+bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShapes& shapes,
+                                       const CollisionDef& def, double h) {
+    const auto t0 = std::chrono::steady_clock::now(); // profile only
+    const auto n = static_cast<std::uint32_t>(set.slots());
+    if (!cacheValid_ || boxes_.size() != n || liveKinds_.size() != n) return false;
+    for (const std::uint32_t i : changed_) {
+        buildProxy(set, def, i, h, false, 0.0);
+        const Aabb &b = boxes_[i], &f = fatBoxes_[i];
+        const bool inside =
+            (f.lo.x <= b.lo.x) & (f.lo.y <= b.lo.y) & (b.hi.x <= f.hi.x) & (b.hi.y <= f.hi.y);
+        if (kinds_[i] != liveKinds_[i] || (kinds_[i] != ProxyKind::None && !inside)) return false;
+    }
+    indexLivePairs();
+
+    // Changed: the kept pairs of each changed particle whose exact boxes overlap; a pair
+    // of two changed particles once, from the lower-numbered one.
+    pairs_.clear();
+    for (const std::uint32_t i : changed_)
+        for (std::uint32_t k = pairStart_[i]; k < pairStart_[i + 1]; ++k) {
+            const ProxyPair p = livePairs_[pairsOf_[k]];
+            const std::uint32_t other = p.first == i ? p.second : p.first;
+            if (other < n && other < i && pathChanged_[other] == pass_) continue;
+            const Aabb& a = boxes_[p.first];
+            const Aabb& b = p.second < n ? boxes_[p.second] : staticIndex_.box(p.second - n);
+            if ((a.lo.x <= b.hi.x) & (b.lo.x <= a.hi.x) & (a.lo.y <= b.hi.y) & (b.lo.y <= a.hi.y))
+                pairs_.push_back(p);
+        }
+    std::sort(pairs_.begin(), pairs_.end());
+    stats_.pairs += static_cast<int>(pairs_.size());
+    candidates_.clear();
+    for (const ProxyPair& pair : pairs_)
+        addCandidate(set, shapes, def, pair, h);
+
+    // Carried: the resting pairs left to the solver that no contact changed since.
+    carried_.clear();
+    for (const Candidate& c : leftToSolver_)
+        if (pathChanged_[c.a] != pass_ && pathChanged_[c.b] != pass_) {
+            carried_.push_back(c);
+            carried_.back().carried = true;
+        }
+    auto pairOrder = [](const Candidate& x, const Candidate& y) {
+        return x.a < y.a || (x.a == y.a && x.proxy < y.proxy);
+    };
+    std::sort(carried_.begin(), carried_.end(), pairOrder);
+    mergedCandidates_.resize(candidates_.size() + carried_.size());
+    std::merge(candidates_.begin(), candidates_.end(), carried_.begin(), carried_.end(),
+               mergedCandidates_.begin(), pairOrder);
+    candidates_.swap(mergedCandidates_);
+
+    orderCandidates();
+    ++pass_;
+    ++stats_.changesOnly;
+    detectMicros_ +=
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+    return true;
+}
+
+// The live pairs by particle, as offsets into a flat list of pair indices: a particle's
+// pairs with the shapes and with the particles on either side of the pair.
+void ParticleCollisions::indexLivePairs() {
+    if (indexedVersion_ == livePairsVersion_) return;
+    const auto n = static_cast<std::uint32_t>(boxes_.size());
+    pairStart_.assign(n + 1, 0u);
+    for (const ProxyPair& p : livePairs_) {
+        ++pairStart_[p.first + 1];
+        if (p.second < n) ++pairStart_[p.second + 1];
+    }
+    for (std::uint32_t i = 0; i < n; ++i)
+        pairStart_[i + 1] += pairStart_[i];
+    pairsOf_.resize(pairStart_[n]);
+    pairFill_.assign(pairStart_.begin(), pairStart_.end() - 1);
+    for (std::uint32_t k = 0; k < livePairs_.size(); ++k) {
+        const ProxyPair& p = livePairs_[k];
+        pairsOf_[pairFill_[p.first]++] = k;
+        if (p.second < n) pairsOf_[pairFill_[p.second]++] = k;
+    }
+    indexedVersion_ = livePairsVersion_;
+}
+
+} // namespace phys
