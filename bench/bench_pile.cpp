@@ -168,10 +168,10 @@ int main(int argc, char** argv) {
                 stepParticlePile(*w, 1);
                 const double ms = msSince(tickStart);
                 const CollisionStats& s = w->collisionStats();
-                std::printf("tick %d: %.4f ms, %zu contacts, %d pairs, %d passes, %d broad "
-                            "phases, %d asleep\n",
+                std::printf("tick %d: %.4f ms, %zu contacts, %d pairs, %d passes (%d of "
+                            "changes only), %d broad phases, %d asleep\n",
                             game::bench::kPileSettleTicks + o.skip + t + 1, ms,
-                            w->contacts().size(), s.pairs, s.passes, s.broadPhases,
+                            w->contacts().size(), s.pairs, s.passes, s.changesOnly, s.broadPhases,
                             sleepers(w->particles));
             }
         else

@@ -20,8 +20,11 @@
 // carries some 460 resting pairs, where a full detection boxed 4,000 particles and
 // filtered 18,000 kept pairs.
 // The kept pairs cover a changed particle while its box stays inside its fat box and it
-// can pair with no more than when they were selected (it did not wake); otherwise the
-// pass runs the full detection.
+// can pair with no more than when they were selected. One that left them (it bounced
+// out of its fat box, or woke) is a stray until the next full detection mends the cache:
+// its pairs are found by testing its box against every other, and a changed particle
+// tests its box against the strays as well as its kept pairs. More than kMostStrays run
+// the full detection instead.
 #include "physics/collision/particle_collisions.h"
 
 #include <algorithm>
@@ -34,29 +37,47 @@ bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShape
     const auto t0 = std::chrono::steady_clock::now(); // profile only
     const auto n = static_cast<std::uint32_t>(set.slots());
     if (!cacheValid_ || boxes_.size() != n || liveKinds_.size() != n) return false;
+    if (strayMark_.size() < n) strayMark_.resize(n, 0);
     for (const std::uint32_t i : changed_) {
         buildProxy(set, def, i, h, false, 0.0);
         const Aabb &b = boxes_[i], &f = fatBoxes_[i];
         const bool inside =
             (f.lo.x <= b.lo.x) & (f.lo.y <= b.lo.y) & (b.hi.x <= f.hi.x) & (b.hi.y <= f.hi.y);
-        if (kinds_[i] != liveKinds_[i] || (kinds_[i] != ProxyKind::None && !inside)) return false;
+        const bool covered = kinds_[i] == liveKinds_[i] && (kinds_[i] == ProxyKind::None || inside);
+        if (covered || strayMark_[i]) continue;
+        if (strays_.size() == kMostStrays) return false;
+        strays_.push_back(i);
+        strayMark_[i] = 1;
     }
     indexLivePairs();
 
-    // Changed: the kept pairs of each changed particle whose exact boxes overlap; a pair
-    // of two changed particles once, from the lower-numbered one.
+    // Changed: the pairs of each changed particle whose exact boxes overlap, from its
+    // kept pairs and the strays, or, for a stray, from every proxy.
     pairs_.clear();
-    for (const std::uint32_t i : changed_)
+    for (const std::uint32_t i : changed_) {
+        if (kinds_[i] == ProxyKind::None) continue;
+        if (strayMark_[i]) {
+            pairsOfStray(i);
+            continue;
+        }
         for (std::uint32_t k = pairStart_[i]; k < pairStart_[i + 1]; ++k) {
             const ProxyPair p = livePairs_[pairsOf_[k]];
-            const std::uint32_t other = p.first == i ? p.second : p.first;
-            if (other < n && other < i && pathChanged_[other] == pass_) continue;
-            const Aabb& a = boxes_[p.first];
-            const Aabb& b = p.second < n ? boxes_[p.second] : staticIndex_.box(p.second - n);
-            if ((a.lo.x <= b.hi.x) & (b.lo.x <= a.hi.x) & (a.lo.y <= b.hi.y) & (b.lo.y <= a.hi.y))
+            if (p.second >= n) {
+                const Aabb &a = boxes_[i], &b = staticIndex_.box(p.second - n);
+                if ((a.lo.x <= b.hi.x) & (b.lo.x <= a.hi.x) & (a.lo.y <= b.hi.y) &
+                    (b.lo.y <= a.hi.y))
+                    pairs_.push_back(p);
+            } else if (overlapping(p.first, p.second)) {
                 pairs_.push_back(p);
+            }
         }
+        for (const std::uint32_t e : strays_)
+            if (e != i && overlapping(i, e))
+                pairs_.push_back(i < e ? ProxyPair{i, e} : ProxyPair{e, i});
+    }
+    // A pair of two changed particles, or found from both sides, once.
     std::sort(pairs_.begin(), pairs_.end());
+    pairs_.erase(std::unique(pairs_.begin(), pairs_.end()), pairs_.end());
     stats_.pairs += static_cast<int>(pairs_.size());
     candidates_.clear();
     for (const ProxyPair& pair : pairs_)
@@ -84,6 +105,31 @@ bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShape
     detectMicros_ +=
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
     return true;
+}
+
+bool ParticleCollisions::overlapping(std::uint32_t i, std::uint32_t j) const {
+    const ProxyKind ki = kinds_[i], kj = kinds_[j];
+    const Aabb &a = boxes_[i], &b = boxes_[j];
+    return (ki != ProxyKind::None) & (kj != ProxyKind::None) &
+           ((ki == ProxyKind::Moving) | (kj == ProxyKind::Moving)) & (a.lo.x <= b.hi.x) &
+           (b.lo.x <= a.hi.x) & (a.lo.y <= b.hi.y) & (b.lo.y <= a.hi.y);
+}
+
+// As patchPairCache tests an escaped proxy, by the exact box: k n tests for k strays,
+// branchless (which proxies overlap is as good as random).
+void ParticleCollisions::pairsOfStray(std::uint32_t i) {
+    const auto n = static_cast<std::uint32_t>(boxes_.size());
+    std::size_t found = pairs_.size();
+    pairs_.resize(found + n);
+    for (std::uint32_t c = 0; c < n; ++c) {
+        pairs_[found] = c < i ? ProxyPair{c, i} : ProxyPair{i, c};
+        found += (c != i) & overlapping(i, c);
+    }
+    pairs_.resize(found);
+    if (kinds_[i] != ProxyKind::Moving) return; // a shape pairs only with a moving particle
+    staticIndex_.query(boxes_[i], staticHits_);
+    for (const std::uint32_t s : staticHits_)
+        pairs_.push_back({i, n + s});
 }
 
 // The live pairs by particle, as offsets into a flat list of pair indices: a particle's

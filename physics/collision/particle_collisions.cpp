@@ -261,6 +261,9 @@ void ParticleCollisions::selectLivePairs() {
 }
 
 void ParticleCollisions::findPairs(const CollisionDef& def) {
+    for (const std::uint32_t i : strays_) // the cache check below covers them
+        strayMark_[i] = 0;
+    strays_.clear();
     switch (checkPairCache(def)) {
     case CacheState::Rebuild:
         buildPairCache(def);

@@ -146,6 +146,10 @@ class ParticleCollisions {
     bool detectChanges(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                        double h);
     void indexLivePairs();
+    /// Proxy i's pairs among all proxies and the shapes, by their exact boxes.
+    void pairsOfStray(std::uint32_t i);
+    /// Proxies i and j (particles) may pair, by their kinds and exact boxes.
+    bool overlapping(std::uint32_t i, std::uint32_t j) const;
     /// A path changed by a contact of this pass.
     void markChanged(std::size_t i) {
         if (pathChanged_[i] != pass_) changed_.push_back(static_cast<std::uint32_t>(i));
@@ -224,6 +228,12 @@ class ParticleCollisions {
     // later pass needs them, for the live pairs of livePairsVersion_.
     std::vector<std::uint32_t> pairStart_, pairsOf_, pairFill_;
     std::uint64_t livePairsVersion_ = 0, indexedVersion_ = ~std::uint64_t{0};
+    // Particles a later pass changed beyond what the live pairs cover (their boxes left
+    // their fat boxes, or they woke), until the next full detection mends the cache: at
+    // most kMostStrays, more run the full detection.
+    static constexpr std::size_t kMostStrays = 32;
+    std::vector<std::uint32_t> strays_;
+    std::vector<std::uint8_t> strayMark_;
     // The end-of-step contact solver (relaxContacts).
     struct RelaxContact {
         std::uint32_t a = 0;
