@@ -37,6 +37,16 @@ bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShape
     const auto t0 = std::chrono::steady_clock::now(); // profile only
     const auto n = static_cast<std::uint32_t>(set.slots());
     if (!cacheValid_ || boxes_.size() != n || liveKinds_.size() != n) return false;
+    // Carried: the resting pairs left to the solver that no contact changed since, in
+    // the pair order of the last pass's candidates.
+    carried_.clear();
+    for (std::size_t k = 0; k < candidates_.size(); ++k) {
+        const Candidate& c = candidates_[k];
+        if (leftToSolver_[k] && pathChanged_[c.a] != pass_ && pathChanged_[c.b] != pass_) {
+            carried_.push_back(c);
+            carried_.back().carried = true;
+        }
+    }
     if (strayMark_.size() < n) strayMark_.resize(n, 0);
     for (const std::uint32_t i : changed_) {
         buildProxy(set, def, i, h, false, 0.0);
@@ -83,17 +93,9 @@ bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShape
     for (const ProxyPair& pair : pairs_)
         addCandidate(set, shapes, def, pair, h);
 
-    // Carried: the resting pairs left to the solver that no contact changed since.
-    carried_.clear();
-    for (const Candidate& c : leftToSolver_)
-        if (pathChanged_[c.a] != pass_ && pathChanged_[c.b] != pass_) {
-            carried_.push_back(c);
-            carried_.back().carried = true;
-        }
     auto pairOrder = [](const Candidate& x, const Candidate& y) {
         return x.a < y.a || (x.a == y.a && x.proxy < y.proxy);
     };
-    std::sort(carried_.begin(), carried_.end(), pairOrder);
     mergedCandidates_.resize(candidates_.size() + carried_.size());
     std::merge(candidates_.begin(), candidates_.end(), carried_.begin(), carried_.end(),
                mergedCandidates_.begin(), pairOrder);

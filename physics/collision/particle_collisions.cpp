@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace phys {
 
@@ -72,7 +73,6 @@ void ParticleCollisions::buildProxies(const ParticleSet& set, const StaticShapes
     const std::size_t n = set.slots();
     boxes_.resize(n);
     kinds_.resize(n);
-    margin_.resize(n);
     staticIndex_.update(shapes);
     staticHits_.reserve(shapes.count()); // the most a query can return: no growth later
     for (std::size_t i = 0; i < n; ++i)
@@ -99,9 +99,13 @@ void ParticleCollisions::buildProxy(const ParticleSet& set, const CollisionDef& 
         }
     const double r = set.radius[i] * (1.0 + grow) + def.toiTolerance;
     boxes_[i] = {lo - Vec2{r, r}, hi + Vec2{r, r}};
-    // For the pair cache: room for a radius of play (contacts push particles by up
-    // to centimetres in a pile) and a step of motion.
-    margin_[i] = set.radius[i] + length(m.v) * h;
+}
+
+// For the pair cache: room for a radius of play (contacts push particles by up to
+// centimetres in a pile) and a step of motion along the path the box was built from.
+Aabb ParticleCollisions::fatBox(const ParticleSet& set, std::size_t i, double h) const {
+    const double margin = set.radius[i] + length(path_[i].v) * h;
+    return {boxes_[i].lo - Vec2{margin, margin}, boxes_[i].hi + Vec2{margin, margin}};
 }
 
 // The broad phase proper runs on fattened boxes (each particle's box grown by a margin
@@ -135,13 +139,11 @@ ParticleCollisions::CacheState ParticleCollisions::checkPairCache(const Collisio
     return escaped_.empty() ? CacheState::Holds : CacheState::Patch;
 }
 
-void ParticleCollisions::buildPairCache(const CollisionDef& def) {
+void ParticleCollisions::buildPairCache(const ParticleSet& set, const CollisionDef& def, double h) {
     const std::size_t n = boxes_.size();
     fatBoxes_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const Vec2 grow{margin_[i], margin_[i]};
-        fatBoxes_[i] = {boxes_[i].lo - grow, boxes_[i].hi + grow};
-    }
+    for (std::size_t i = 0; i < n; ++i)
+        fatBoxes_[i] = fatBox(set, i, h);
     fatKinds_ = kinds_;
     // Particle against particle: the chosen broad phase; each gives the pairs sorted.
     switch (def.broadPhase) {
@@ -186,12 +188,11 @@ void ParticleCollisions::buildPairCache(const CollisionDef& def) {
 // bouncing out of its box in a resting heap no longer rebuilds the heap's pairs. The
 // cache stays a superset of the overlapping pairs, sorted, so the pairs a pass keeps,
 // and the bits, are those a rebuild would give.
-void ParticleCollisions::patchPairCache() {
+void ParticleCollisions::patchPairCache(const ParticleSet& set, double h) {
     const auto n = static_cast<std::uint32_t>(boxes_.size());
     growTo(escapedMark_, n);
     for (const std::uint32_t e : escaped_) {
-        const Vec2 grow{margin_[e], margin_[e]};
-        fatBoxes_[e] = {boxes_[e].lo - grow, boxes_[e].hi + grow};
+        fatBoxes_[e] = fatBox(set, e, h);
         fatKinds_[e] = kinds_[e];
         escapedMark_[e] = 1;
     }
@@ -260,16 +261,16 @@ void ParticleCollisions::selectLivePairs() {
     ++livePairsVersion_;
 }
 
-void ParticleCollisions::findPairs(const CollisionDef& def) {
+void ParticleCollisions::findPairs(const ParticleSet& set, const CollisionDef& def, double h) {
     for (const std::uint32_t i : strays_) // the cache check below covers them
         strayMark_[i] = 0;
     strays_.clear();
     switch (checkPairCache(def)) {
     case CacheState::Rebuild:
-        buildPairCache(def);
+        buildPairCache(set, def, h);
         break;
     case CacheState::Patch:
-        patchPairCache();
+        patchPairCache(set, h);
         selectLivePairs();
         break;
     case CacheState::Holds:
@@ -293,7 +294,7 @@ void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shap
                                 const CollisionDef& def, double h) {
     const auto t0 = std::chrono::steady_clock::now(); // profile only
     buildProxies(set, shapes, def, h, false);
-    findPairs(def);
+    findPairs(set, def, h);
     stats_.pairs += static_cast<int>(pairs_.size());
     candidates_.clear();
     for (const ProxyPair& pair : pairs_)
@@ -474,7 +475,6 @@ ParticleCollisions::Resolution ParticleCollisions::resolvePair(const Candidate& 
                 deferred_.push_back({(std::uint64_t{c.a} << 32) | c.b,
                                      static_cast<std::uint32_t>(deferred_.size()), tickTime + *toi,
                                      -vn, n, pi.position(*toi)});
-            leftToSolver_.push_back(c);
             return Resolution::Deferred;
         }
     }
@@ -572,7 +572,7 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
         if (pass == 0 || !def.redetectChangesOnly || !detectChanges(set, shapes, def, h))
             detect(set, shapes, def, h);
         changed_.clear(); // what this pass changes, for the next one
-        leftToSolver_.clear();
+        leftToSolver_.assign(candidates_.size(), 0);
         ++stats_.passes;
         int resolved = 0;
         for (const TimeKey& key : order_) {
@@ -581,6 +581,7 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
                                      ? resolveStatic(c, set, shapes, mats, def, h, tickTime)
                                      : resolvePair(c, set, mats, def, h, tickTime);
             resolved += r == Resolution::Resting || r == Resolution::Impact ? 1 : 0;
+            leftToSolver_[key.index] = r == Resolution::Deferred ? 1 : 0;
         }
         stats_.impacts += resolved;
         converged = resolved == 0;
@@ -625,7 +626,7 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
         path_[i] = {start, (set.position(static_cast<ParticleId>(i)) - start) / h, {}, 0.0};
     }
     buildProxies(set, shapes, def, h, false, kSpeculative);
-    findPairs(def);
+    findPairs(set, def, h);
     detectMicros_ +=
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
 
@@ -726,7 +727,7 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
 
     // One contact's velocity step: the normal impulse that stops the closing velocity
     // (accumulated, never pulling), and friction along the tangent within mu_s times it.
-    auto impulse = [&](RelaxContact& c, double wa, double wb) {
+    auto impulse = [&](VelocityRow& c, double wa, double wb) {
         if (!(wa + wb > 0.0)) return;
         const Vec2 vb = c.b == kNoParticle ? Vec2{} : set.velocity(c.b);
         const Vec2 vrel = set.velocity(c.a) - vb;
@@ -751,7 +752,8 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
     };
     // One contact's position step: push the overlap apart along the current normal, at most
     // a fifth of the smaller radius at a time.
-    auto project = [&](const RelaxContact& c, double wa, double wb) {
+    auto project = [&](const PositionRow& c) {
+        const double wa = c.wa, wb = c.wb;
         if (!(wa + wb > 0.0)) return;
         SurfacePoint sp;
         double reach = set.radius[c.a], smallest = reach;
@@ -799,35 +801,59 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
     };
     const std::size_t bands = bandStart_.size() - 1; // the last one: unsupported
 
+    // The rows, band by band.
+    const std::size_t count = contacts_.size();
+    velocityRows_.resize(count);
+    projectAll_.resize(count);
+    projectBanded_.resize(count);
+    auto movableFirst = [&](std::uint32_t from, std::uint32_t to, std::uint32_t band,
+                            std::span<PositionRow> out) {
+        std::uint32_t next = from;
+        for (const bool statics : {false, true})
+            for (std::uint32_t k = from; k < to; ++k) {
+                const RelaxContact& c = contacts_[contactOrder_[k]];
+                if (immovableSide(c) != statics) continue;
+                const auto [wa, wb] = band == 0 ? std::pair{c.wa, c.wb} : masses(c, band);
+                out[next++] = {c.a, c.b, c.shape, c.normal, wa, wb};
+            }
+    };
+    for (std::size_t band = 0; band + 1 < bandStart_.size(); ++band)
+        for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k) {
+            const RelaxContact& c = contacts_[contactOrder_[k]];
+            const auto [bandWa, bandWb] = masses(c, static_cast<std::uint32_t>(band));
+            velocityRows_[k] = {c.a,  c.b,    c.normal, c.closing,       c.friction,      c.wa,
+                                c.wb, bandWa, bandWb,   c.normalImpulse, c.tangentImpulse};
+        }
+    movableFirst(0, static_cast<std::uint32_t>(count), 0, projectAll_);
+    for (std::size_t band = 1; band + 1 < bands; ++band)
+        movableFirst(bandStart_[band], bandStart_[band + 1], static_cast<std::uint32_t>(band),
+                     projectBanded_);
+
     // Velocity: sweeps over all contacts, then band by band from the ground up.
     for (int sweep = 0; sweep < def.relaxVelocitySweeps; ++sweep)
-        for (const std::uint32_t k : contactOrder_)
-            impulse(contacts_[k], contacts_[k].wa, contacts_[k].wb);
+        for (VelocityRow& c : velocityRows_)
+            impulse(c, c.wa, c.wb);
     for (std::size_t band = 1; band + 1 < bands; ++band)
         for (int sweep = 0; sweep < kShockSweeps; ++sweep)
             for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k) {
-                RelaxContact& c = contacts_[contactOrder_[k]];
-                const auto [wa, wb] = masses(c, static_cast<std::uint32_t>(band));
-                impulse(c, wa, wb);
+                VelocityRow& c = velocityRows_[k];
+                impulse(c, c.bandWa, c.bandWb);
             }
+    for (std::size_t k = 0; k < count; ++k) {
+        RelaxContact& c = contacts_[contactOrder_[k]];
+        c.normalImpulse = velocityRows_[k].normalImpulse;
+        c.tangentImpulse = velocityRows_[k].tangentImpulse;
+    }
 
-    // Position: the same.
+    // Position: the same, the contacts against what never moves after the others, in the
+    // whole list and in each band.
     for (int sweep = 0; sweep < def.relaxPositionSweeps; ++sweep)
-        for (const bool statics : {false, true})
-            for (const std::uint32_t k : contactOrder_) {
-                const RelaxContact& c = contacts_[k];
-                if (immovableSide(c) != statics) continue;
-                project(c, c.wa, c.wb);
-            }
+        for (const PositionRow& c : projectAll_)
+            project(c);
     for (std::size_t band = 1; band + 1 < bands; ++band)
         for (int sweep = 0; sweep < kShockSweeps; ++sweep)
-            for (const bool statics : {false, true})
-                for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k) {
-                    const RelaxContact& c = contacts_[contactOrder_[k]];
-                    if (immovableSide(c) != statics) continue;
-                    const auto [wa, wb] = masses(c, static_cast<std::uint32_t>(band));
-                    project(c, wa, wb);
-                }
+            for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k)
+                project(projectBanded_[k]);
 
     warm_.clear();
     for (const RelaxContact& c : contacts_)
@@ -936,7 +962,7 @@ void ParticleCollisions::penaltyPhase(ParticleSet& set, const StaticShapes& shap
     const auto t0 = std::chrono::steady_clock::now(); // profile only
     buildPaths(set, h);
     buildProxies(set, shapes, def, h, true);
-    findPairs(def);
+    findPairs(set, def, h);
     stats_.pairs += static_cast<int>(pairs_.size());
     ++stats_.passes;
     detectMicros_ +=

@@ -125,14 +125,16 @@ class ParticleCollisions {
     /// Boxes of the paths (or of the end positions), radii grown by `grow` of themselves.
     void buildProxies(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                       double h, bool atEndOnly, double grow = 0.0);
-    /// Particle i's proxy: its kind, the box of its path, the margin of its fat box.
+    /// Particle i's proxy: its kind and the box of its path.
     void buildProxy(const ParticleSet& set, const CollisionDef& def, std::size_t i, double h,
                     bool atEndOnly, double grow);
-    void findPairs(const CollisionDef& def);
+    void findPairs(const ParticleSet& set, const CollisionDef& def, double h);
     enum class CacheState { Holds, Patch, Rebuild };
     CacheState checkPairCache(const CollisionDef& def);
-    void buildPairCache(const CollisionDef& def);
-    void patchPairCache();
+    void buildPairCache(const ParticleSet& set, const CollisionDef& def, double h);
+    void patchPairCache(const ParticleSet& set, double h);
+    /// Particle i's box grown by a radius and a step of its path's motion.
+    Aabb fatBox(const ParticleSet& set, std::size_t i, double h) const;
     void selectLivePairs();
     void detect(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                 double h);
@@ -190,9 +192,8 @@ class ParticleCollisions {
     std::vector<Aabb> boxes_;
     std::vector<ProxyKind> kinds_;
     std::vector<ProxyPair> pairs_;
-    // The pair cache: broad phase over fat boxes (exact box grown by margin_), kept
+    // The pair cache: broad phase over fat boxes (exact box grown by fatBox), kept
     // while every exact box stays inside its fat box and nothing else changes.
-    std::vector<double> margin_;
     std::vector<Aabb> fatBoxes_;
     std::vector<ProxyKind> fatKinds_;
     std::vector<ProxyPair> cachedPairs_, particlePairs_, staticPairs_;
@@ -222,7 +223,7 @@ class ParticleCollisions {
     std::uint32_t pass_ = 0;                 ///< counts passes over the world's life
     std::vector<std::uint32_t> pathChanged_; ///< pass_ when a contact last changed the path
     std::vector<std::uint32_t> changed_;     ///< the particles whose paths this pass changed
-    std::vector<Candidate> leftToSolver_;    ///< the resting pairs this pass deferred
+    std::vector<std::uint8_t> leftToSolver_; ///< per candidate: a resting pair deferred
     std::vector<Candidate> carried_, mergedCandidates_; ///< scratch of detectChanges
     // The live pairs by particle (offsets into a flat list of their indices), built when a
     // later pass needs them, for the live pairs of livePairsVersion_.
@@ -254,6 +255,26 @@ class ParticleCollisions {
         return c.b == kNoParticle ? level_[c.a] : std::max(level_[c.a], level_[c.b]);
     }
     std::vector<RelaxContact> contacts_;
+    // What the sweeps read and write of a contact, laid out in the order they visit the
+    // contacts, so that a sweep streams through memory: velocity rows in contactOrder_
+    // (band by band), with the inverse masses of the all-contacts sweeps and those under
+    // shock propagation in the contact's band; position rows in projection order, with
+    // the inverse masses that sweep uses.
+    struct VelocityRow {
+        std::uint32_t a = 0, b = kNoParticle;
+        Vec2 normal;
+        double closing = 0.0, friction = 0.0;
+        double wa = 0.0, wb = 0.0, bandWa = 0.0, bandWb = 0.0;
+        double normalImpulse = 0.0, tangentImpulse = 0.0;
+    };
+    struct PositionRow {
+        std::uint32_t a = 0, b = kNoParticle;
+        ShapeRef shape;
+        Vec2 normal;
+        double wa = 0.0, wb = 0.0;
+    };
+    std::vector<VelocityRow> velocityRows_;
+    std::vector<PositionRow> projectAll_, projectBanded_;
     struct WarmStart {
         std::uint64_t key; ///< a << 32 | proxy
         double normalImpulse, tangentImpulse;
