@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace game::bench;
@@ -57,16 +58,32 @@ TEST(Choose, MeasuredChoiceMeetsTheToleranceOnTheSpring) {
 }
 
 TEST(ScalingWorkloads, PileComparisonStepsBothPilesOfTheSameSize) {
-    const PileComparison r = comparePiles(100, 2, 1);
+    const PileComparison r = comparePiles(100, 2, 3);
     EXPECT_EQ(r.balls, 100);
     EXPECT_GT(r.particleMs, 0.0);
     EXPECT_GT(r.rigidMs, 0.0);
     EXPECT_NEAR(r.speedup(), r.rigidMs / r.particleMs, 1e-12);
+    // Three windows of 2 ticks each; the figures are their medians.
+    EXPECT_EQ(r.windowTicks, 2);
+    ASSERT_EQ(r.particleWindowMs.size(), 3u);
+    ASSERT_EQ(r.rigidWindowMs.size(), 3u);
+    ASSERT_EQ(r.asleepAfterWindow.size(), 3u);
+    auto middle = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[1];
+    };
+    EXPECT_EQ(r.particleMs, middle(r.particleWindowMs));
+    EXPECT_EQ(r.rigidMs, middle(r.rigidWindowMs));
+    for (const int asleep : r.asleepAfterWindow) {
+        EXPECT_GE(asleep, 0);
+        EXPECT_LE(asleep, 100);
+    }
 }
 
 TEST(ScalingWorkloads, ExponentOfExactlyLinearCostIsOne) {
     std::vector<ScalingPoint> pts;
-    for (long n : {1000L, 10000L, 100000L}) pts.push_back({"x", n, 0.02 * n, 20.0});
+    for (long n : {1000L, 10000L, 100000L})
+        pts.push_back({"x", n, 0.02 * n, 20.0});
     EXPECT_NEAR(scalingExponent(pts), 1.0, 1e-12);
     pts.back().usPerStep *= 10.0; // quadratic at the end
     EXPECT_GT(scalingExponent(pts), 1.3);
