@@ -7,18 +7,19 @@
 //   callgrind_annotate callgrind.out.<pid> | head -40
 //
 // Each side is built and settled for kPileSettleTicks (0.5 s, not counted), then steps
-// `--skip` ticks (not counted either; 0 by default), then `--ticks` more; Ir per tick is the
-// collected total over the ticks. Without valgrind it prints wall ms per tick (meaningful on a
-// quiet machine only; read the ratio) and, for checking that a change gives the same bits, the
-// particle world's hash and what the step did (contacts, pairs, passes, broad phases, sleepers).
+// `--skip` ticks (not counted either; none by default), then `--ticks` more; Ir per tick
+// is the collected total over the ticks. Without valgrind it prints wall ms per tick
+// (meaningful on a quiet machine only; read the ratio) and, for checking that a change
+// gives the same bits, the particle world's hash and what the step did (contacts, pairs,
+// passes, broad phases, sleepers); `--trace` prints that, and the wall ms, every tick.
 //
 // `--heap N --seconds S` instead drops the staggered heap of tests/physics/pile_test.cpp
 // (N balls, each row offset by half a spacing) and prints, every simulated second, how
 // many balls sleep, the kinetic energy and the fastest ball: whether a big heap comes
 // to rest.
 //
-// Usage: bench_pile [--balls N] [--skip S] [--ticks T] [--side particles|rigid|both] [--trace]
-// [--csv]
+// Usage: bench_pile [--balls N] [--skip S] [--ticks T] [--side particles|rigid|both]
+//                   [--trace] [--csv]
 //        bench_pile --heap N [--seconds S]
 #include "game/bench/scaling.h"
 #include "physics/diagnostics.h"
@@ -138,9 +139,9 @@ int main(int argc, char** argv) {
         } else if (a == "--seconds" && more) {
             o.seconds = std::atof(argv[++i]);
         } else {
-            std::fprintf(stderr, "usage: bench_pile [--balls N] [--skip S] [--ticks T] [--side "
-                                 "particles|rigid|both] "
-                                 "[--trace] [--csv]\n       bench_pile --heap N [--seconds S]\n");
+            std::fprintf(stderr, "usage: bench_pile [--balls N] [--skip S] [--ticks T] "
+                                 "[--side particles|rigid|both] [--trace] [--csv]\n"
+                                 "       bench_pile --heap N [--seconds S]\n");
             return 2;
         }
     }

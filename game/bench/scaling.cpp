@@ -104,7 +104,8 @@ PileLayout pileLayout(long n) {
     return l;
 }
 
-template <class Place> void placeBalls(long n, const PileLayout& l, Place place) {
+template <class Place>
+void placeBalls(long n, const PileLayout& l, Place place) {
     std::mt19937_64 rng(777);
     std::uniform_real_distribution<double> jitter(-0.01, 0.01);
     for (long i = 0; i < n; ++i) {
@@ -158,22 +159,18 @@ std::unique_ptr<RigidWorld> rigidPile(long n) {
 
 double pileWorkload(long n, int steps) {
     auto w = particlePile(n);
-    for (int i = 0; i < kPileSettleTicks; ++i)
-        w->step();
+    for (int i = 0; i < kPileSettleTicks; ++i) w->step();
     const auto t0 = Clock::now();
-    for (int i = 0; i < steps; ++i)
-        w->step();
+    for (int i = 0; i < steps; ++i) w->step();
     return seconds(t0);
 }
 
 double rigidPileWorkload(long n, int steps) {
     auto w = rigidPile(n);
     const double tick = WorldDef{}.tickSeconds;
-    for (int i = 0; i < kPileSettleTicks; ++i)
-        w->step(tick);
+    for (int i = 0; i < kPileSettleTicks; ++i) w->step(tick);
     const auto t0 = Clock::now();
-    for (int i = 0; i < steps; ++i)
-        w->step(tick);
+    for (int i = 0; i < steps; ++i) w->step(tick);
     return seconds(t0);
 }
 
@@ -192,13 +189,11 @@ PileComparison comparePiles(long balls, int steps, int repeats) {
     r.windowTicks = steps;
     for (int k = 0; k < std::max(1, repeats); ++k) {
         auto t0 = Clock::now();
-        for (int i = 0; i < steps; ++i)
-            particles->step();
+        for (int i = 0; i < steps; ++i) particles->step();
         r.particleWindowMs.push_back(1e3 * seconds(t0) / steps);
         r.asleepAfterWindow.push_back(particles->collisionStats().sleeping);
         t0 = Clock::now();
-        for (int i = 0; i < steps; ++i)
-            rigid->step(tick);
+        for (int i = 0; i < steps; ++i) rigid->step(tick);
         r.rigidWindowMs.push_back(1e3 * seconds(t0) / steps);
     }
     r.particleMs = median(r.particleWindowMs);
@@ -212,8 +207,7 @@ double flightWorkload(long n, int steps) {
     w->step();
     w->step();
     const auto t0 = Clock::now();
-    for (int i = 0; i < steps; ++i)
-        w->step();
+    for (int i = 0; i < steps; ++i) w->step();
     return seconds(t0);
 }
 
@@ -222,8 +216,7 @@ double clothWorkload(long n, int steps) {
     auto w = clothWorld(side, 8);
     w->step();
     const auto t0 = Clock::now();
-    for (int i = 0; i < steps; ++i)
-        w->step();
+    for (int i = 0; i < steps; ++i) w->step();
     return seconds(t0);
 }
 
@@ -234,8 +227,7 @@ std::vector<ScalingPoint> measureScaling(const std::string& name, const Workload
     int done = 0;
     for (long n : def.sizes) {
         std::vector<double> t;
-        for (int r = 0; r < std::max(1, def.repeats); ++r)
-            t.push_back(work(n, def.steps));
+        for (int r = 0; r < std::max(1, def.repeats); ++r) t.push_back(work(n, def.steps));
         const double us = 1e6 * median(t) / def.steps;
         out.push_back({name, n, us, 1e3 * us / static_cast<double>(n), loadNow()});
         if (progress) progress(++done, static_cast<int>(def.sizes.size()));
@@ -294,23 +286,16 @@ double gigabytesPerSecond(long n, double ms) {
 }
 } // namespace
 
-double FlightComparison::updateGBs() const {
-    return gigabytesPerSecond(n, updateMs);
-}
-double FlightComparison::referenceGBs() const {
-    return gigabytesPerSecond(n, referenceMs);
-}
-double FlightComparison::copyGBs() const {
-    return gigabytesPerSecond(n, copyMs);
-}
+double FlightComparison::updateGBs() const { return gigabytesPerSecond(n, updateMs); }
+double FlightComparison::referenceGBs() const { return gigabytesPerSecond(n, referenceMs); }
+double FlightComparison::copyGBs() const { return gigabytesPerSecond(n, copyMs); }
 
 FlightComparison compareFlight(long n, bool velocityVerlet, int steps, int repeats) {
     FlightComparison r;
     r.n = n;
     r.integrator = velocityVerlet ? "velocity-verlet" : "symplectic-euler";
     r.referenceLanes = velocityVerlet ? flightReferenceVerletLanes() : flightReferenceLanes();
-    auto w =
-        flightWorld(n, velocityVerlet ? Integrator::VelocityVerlet : Integrator::SymplecticEuler);
+    auto w = flightWorld(n, velocityVerlet ? Integrator::VelocityVerlet : Integrator::SymplecticEuler);
     // The reference steps its own copy of the same particles (same sizes, same state).
     auto ref = flightWorld(n, Integrator::SymplecticEuler);
     const ForceDef& forces = w->def().forces;
@@ -336,16 +321,13 @@ FlightComparison compareFlight(long n, bool velocityVerlet, int steps, int repea
     std::vector<double> ut, rt, ct;
     for (int k = 0; k < std::max(1, repeats); ++k) {
         auto t0 = Clock::now();
-        for (int i = 0; i < steps; ++i)
-            w->step();
+        for (int i = 0; i < steps; ++i) w->step();
         ut.push_back(seconds(t0) / steps);
         t0 = Clock::now();
-        for (int i = 0; i < steps; ++i)
-            reference();
+        for (int i = 0; i < steps; ++i) reference();
         rt.push_back(seconds(t0) / steps);
         t0 = Clock::now();
-        for (int i = 0; i < steps; ++i)
-            copyBytes(to.data(), from.data(), copy);
+        for (int i = 0; i < steps; ++i) copyBytes(to.data(), from.data(), copy);
         ct.push_back(seconds(t0) / steps);
     }
     r.updateMs = 1e3 * median(ut);
@@ -371,8 +353,8 @@ std::string toCsv(const std::vector<ScalingPoint>& points, bool underLoad) {
     std::string out = "workload,items,us_per_step,ns_per_item,load_1min,under_load\n";
     char line[200];
     for (const auto& p : points) {
-        std::snprintf(line, sizeof line, "%s,%ld,%.4g,%.4g,%.2f,%d\n", p.workload.c_str(), p.items,
-                      p.usPerStep, p.nsPerItem, p.load, underLoad ? 1 : 0);
+        std::snprintf(line, sizeof line, "%s,%ld,%.4g,%.4g,%.2f,%d\n", p.workload.c_str(),
+                      p.items, p.usPerStep, p.nsPerItem, p.load, underLoad ? 1 : 0);
         out += line;
     }
     return out;

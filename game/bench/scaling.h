@@ -19,17 +19,17 @@ class RigidWorld;
 namespace game::bench {
 
 struct ScalingPoint {
-    std::string workload; ///< "flight", "cloth", ...
-    long items = 0;       ///< particles (or bodies)
-    double usPerStep = 0; ///< median wall time of one world step, microseconds
-    double nsPerItem = 0; ///< usPerStep / items, nanoseconds
-    double load = NAN;    ///< 1-minute load average when measured
+    std::string workload;  ///< "flight", "cloth", ...
+    long items = 0;        ///< particles (or bodies)
+    double usPerStep = 0;  ///< median wall time of one world step, microseconds
+    double nsPerItem = 0;  ///< usPerStep / items, nanoseconds
+    double load = NAN;     ///< 1-minute load average when measured
 };
 
 struct ScalingDef {
     std::vector<long> sizes{1000, 3000, 10000, 30000, 100000};
-    int steps = 20;  ///< timed steps per size (after 2 warm-up steps)
-    int repeats = 3; ///< median of repeats
+    int steps = 20;   ///< timed steps per size (after 2 warm-up steps)
+    int repeats = 3;  ///< median of repeats
 };
 
 /// A workload: builds a world of about n items and steps it.
@@ -64,7 +64,7 @@ inline constexpr int kPileSettleTicks = 60;
 struct PileComparison {
     long balls = 0;
     double particleMs = 0, rigidMs = 0; ///< ms per step, the median of the windows
-    double load = NAN;                  ///< 1-minute load average when measured
+    double load = NAN; ///< 1-minute load average when measured
     /// The timed windows, consecutive from tick kPileSettleTicks + 1, windowTicks each: ms
     /// per step of either side, and the particles asleep at the window's end. A pile
     /// that falls asleep within them costs far less in the later windows, so they say
@@ -92,16 +92,16 @@ std::string docsFiguresRefusal(double load, bool intoDocs, bool underLoad);
 
 /// Particles in flight (gravity, quadratic drag relative to a wind) under one integrator,
 /// side by side in one process with the reference kernel of that integrator's arithmetic
-/// over the same arrays (flight_reference.h) and a memcpy moving the same number of bytes: per-step
-/// medians of alternating repeats, so a burst of load from elsewhere hits all three.
+/// over the same arrays (flight_reference.h) and a memcpy moving the same number of bytes: per-step medians
+/// of alternating repeats, so a burst of load from elsewhere hits all three.
 struct FlightComparison {
     long n = 0;
-    std::string integrator; ///< "symplectic-euler" (the fused pass) or "velocity-verlet"
-    double updateMs = 0;    ///< World::step
-    double referenceMs = 0; ///< flightReferenceStep (or flightReferenceVerletStep)
-    double copyMs = 0;      ///< memcpy of n * kFlightBytesPerParticle / 2 bytes
-    int referenceLanes = 0; ///< 4 (AVX2), 2 (SSE2) or 1
-    double load = NAN;      ///< 1-minute load average when measured
+    std::string integrator;   ///< "symplectic-euler" (the fused pass) or "velocity-verlet"
+    double updateMs = 0;      ///< World::step
+    double referenceMs = 0;   ///< flightReferenceStep (or flightReferenceVerletStep)
+    double copyMs = 0;        ///< memcpy of n * kFlightBytesPerParticle / 2 bytes
+    int referenceLanes = 0;   ///< 4 (AVX2), 2 (SSE2) or 1
+    double load = NAN;        ///< 1-minute load average when measured
     double bytesPerParticle() const;
     double ratio() const { return referenceMs > 0 ? updateMs / referenceMs : 0; }
     /// Bytes moved per second (read + written), 1e9 B/s.
@@ -117,14 +117,14 @@ double clothFrameMs(int side = 64, int frames = 30);
 
 /// Everything `artillery bench scaling` measures in one run.
 struct ScalingReport {
-    std::vector<ScalingPoint> points;  ///< every workload's sweep
-    PileComparison pile;               ///< the 2,000 balls (or the --quick size)
-    std::vector<PileComparison> piles; ///< every pile size compared, smallest first
+    std::vector<ScalingPoint> points; ///< every workload's sweep
+    PileComparison pile;                 ///< the 2,000 balls (or the --quick size)
+    std::vector<PileComparison> piles;   ///< every pile size compared, smallest first
     std::vector<FlightComparison> flights;
-    double clothMs = 0; ///< clothFrameMs(64)
+    double clothMs = 0;                  ///< clothFrameMs(64)
     double clothLoad = NAN;
-    double loadAtStart = NAN; ///< before anything ran
-    bool underLoad = false;   ///< taken with the load above 1 (--under-load)
+    double loadAtStart = NAN;            ///< before anything ran
+    bool underLoad = false;              ///< taken with the load above 1 (--under-load)
 };
 
 /// The points as CSV, with the load beside each; `underLoad` marks every row as taken

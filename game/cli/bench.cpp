@@ -64,9 +64,7 @@ choose          "accurate enough, fastest": measures the scene's sweep and print
   --json        the key figures as one JSON object on stdout
 )";
 
-std::set<std::string> benchFlags() {
-    return {"full", "quick", "under-load"};
-}
+std::set<std::string> benchFlags() { return {"full", "quick", "under-load"}; }
 
 namespace {
 
@@ -114,8 +112,7 @@ void writeText(const Args& args, const std::string& path, const std::string& tex
 std::optional<AccuracyScene> sceneOption(const Args& args, bool required) {
     const auto name = args.text("scene");
     if (!name) {
-        if (required)
-            args.fail("--scene NAME is required (projectile-drag, spring, orbit, pendulum, cloth)");
+        if (required) args.fail("--scene NAME is required (projectile-drag, spring, orbit, pendulum, cloth)");
         return std::nullopt;
     }
     const auto s = accuracySceneFromName(*name);
@@ -131,22 +128,14 @@ WorkPrecisionDef sweepFor(AccuracyScene scene, Size size) {
     WorkPrecisionDef d = choiceSweep(scene);
     if (scene == AccuracyScene::Cloth || scene == AccuracyScene::PendulumRods) d.largestDt = 0.02;
     switch (size) {
-    case Size::Quick:
-        d.halvings = 3, d.repeats = 1;
-        break;
-    case Size::Default:
-        d.halvings = scene == AccuracyScene::Cloth ? 6 : 7, d.repeats = 3;
-        break;
-    case Size::Full:
-        d.halvings = 10, d.repeats = 5;
-        break;
+    case Size::Quick: d.halvings = 3, d.repeats = 1; break;
+    case Size::Default: d.halvings = scene == AccuracyScene::Cloth ? 6 : 7, d.repeats = 3; break;
+    case Size::Full: d.halvings = 10, d.repeats = 5; break;
     }
     return d;
 }
 
-json jnum(double v) {
-    return std::isfinite(v) ? json(v) : json(nullptr);
-}
+json jnum(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 // ---- work-precision -------------------------------------------------------------------
 
@@ -165,8 +154,8 @@ int runWorkPrecisionCommand(const Args& args, std::ostream& out, const BenchPlot
         points.insert(points.end(), part.begin(), part.end());
     }
     writeText(args, csv, toCsv(points));
-    std::string plotError =
-        plots && plots->workPrecision ? plots->workPrecision(points, png) : "no renderer for --png";
+    std::string plotError = plots && plots->workPrecision ? plots->workPrecision(points, png)
+                                                          : "no renderer for --png";
 
     json j;
     j["csv"] = csv;
@@ -179,8 +168,7 @@ int runWorkPrecisionCommand(const Args& args, std::ostream& out, const BenchPlot
             if (p.scene == s.id) ofScene.push_back(p);
         if (!asJson) {
             out << "\n" << s.name << " (" << s.reference << ", " << s.seconds << " s)\n";
-            out << "  integrator        order  slope   best error m   cost at best  cheapest <= "
-                   "1e-4 m\n";
+            out << "  integrator        order  slope   best error m   cost at best  cheapest <= 1e-4 m\n";
         }
         json js;
         js["scene"] = s.name;
@@ -202,23 +190,21 @@ int runWorkPrecisionCommand(const Args& args, std::ostream& out, const BenchPlot
             const WorkPrecisionPoint* within = cheapestWithin(mine, 1e-4);
             if (!asJson) {
                 char line[200];
-                std::snprintf(
-                    line, sizeof line, "  %-17s %5d  %6.2f  %12.3g  %10.3g s/s  %s\n", m.name,
-                    m.order, slope, best ? best->error : NAN,
-                    best ? best->cpuSecondsPerSimSecond : NAN,
-                    within ? (std::to_string(within->cpuSecondsPerSimSecond * 1e3).substr(0, 6) +
-                              " ms/s at dt " + std::to_string(within->dt).substr(0, 8))
-                                 .c_str()
-                           : "-");
+                std::snprintf(line, sizeof line, "  %-17s %5d  %6.2f  %12.3g  %10.3g s/s  %s\n",
+                              m.name, m.order, slope, best ? best->error : NAN,
+                              best ? best->cpuSecondsPerSimSecond : NAN,
+                              within ? (std::to_string(within->cpuSecondsPerSimSecond * 1e3).substr(0, 6) +
+                                        " ms/s at dt " + std::to_string(within->dt).substr(0, 8))
+                                           .c_str()
+                                     : "-");
                 out << line;
             }
-            js["integrators"].push_back(
-                {{"integrator", m.name},
-                 {"order", m.order},
-                 {"slope", jnum(slope)},
-                 {"best_error_m", best ? jnum(best->error) : json(nullptr)},
-                 {"cpu_s_per_sim_s_at_best",
-                  best ? jnum(best->cpuSecondsPerSimSecond) : json(nullptr)}});
+            js["integrators"].push_back({{"integrator", m.name},
+                                         {"order", m.order},
+                                         {"slope", jnum(slope)},
+                                         {"best_error_m", best ? jnum(best->error) : json(nullptr)},
+                                         {"cpu_s_per_sim_s_at_best",
+                                          best ? jnum(best->cpuSecondsPerSimSecond) : json(nullptr)}});
         }
         js["cheapest"] = json::array();
         for (double tol : {1e-2, 1e-4, 1e-6}) {
@@ -232,23 +218,21 @@ int runWorkPrecisionCommand(const Args& args, std::ostream& out, const BenchPlot
                                   tol, phys::info(c->integrator).name, c->dt, c->error,
                                   1e3 * c->cpuSecondsPerSimSecond);
                 else
-                    std::snprintf(line, sizeof line,
-                                  "  cheapest within %.0e m: none in this sweep\n", tol);
+                    std::snprintf(line, sizeof line, "  cheapest within %.0e m: none in this sweep\n", tol);
                 out << line;
             }
-            js["cheapest"].push_back(c ? json{{"tolerance_m", tol},
-                                              {"integrator", phys::info(c->integrator).name},
-                                              {"dt_s", c->dt},
-                                              {"error_m", jnum(c->error)},
-                                              {"cpu_s_per_sim_s", jnum(c->cpuSecondsPerSimSecond)}}
-                                       : json{{"tolerance_m", tol}, {"integrator", nullptr}});
+            js["cheapest"].push_back(
+                c ? json{{"tolerance_m", tol},
+                         {"integrator", phys::info(c->integrator).name},
+                         {"dt_s", c->dt},
+                         {"error_m", jnum(c->error)},
+                         {"cpu_s_per_sim_s", jnum(c->cpuSecondsPerSimSecond)}}
+                  : json{{"tolerance_m", tol}, {"integrator", nullptr}});
         }
         j["scenes"].push_back(js);
     }
-    if (asJson)
-        out << j.dump() << "\n";
-    else
-        out << "\nwrote " << csv << (plotError.empty() ? " and " + png : "") << "\n";
+    if (asJson) out << j.dump() << "\n";
+    else out << "\nwrote " << csv << (plotError.empty() ? " and " + png : "") << "\n";
     if (!plotError.empty()) {
         std::cerr << "artillery bench: cannot draw " << png << ": " << plotError << "\n";
         return kCheckFailed;
@@ -281,19 +265,18 @@ int runStabilityCommand(const Args& args, std::ostream& out, const BenchPlots* p
             text += line;
         }
     writeText(args, csv, text);
-    std::string plotError =
-        plots && plots->stability ? plots->stability(report, png) : "no renderer for --png";
+    std::string plotError = plots && plots->stability ? plots->stability(report, png)
+                                                      : "no renderer for --png";
 
     json j;
     j["csv"] = csv;
     j["png"] = png;
     j["integrators"] = json::array();
     if (!asJson)
-        out << "integrator         max stable w dt   theory    off by   stiffest rope spring at "
-               "1/120 s\n";
+        out << "integrator         max stable w dt   theory    off by   stiffest rope spring at 1/120 s\n";
     for (const auto& r : report.rows) {
-        const bool bothFinite =
-            std::isfinite(r.maxOmegaDt) && std::isfinite(r.theoryOmegaDt) && r.theoryOmegaDt > 0;
+        const bool bothFinite = std::isfinite(r.maxOmegaDt) && std::isfinite(r.theoryOmegaDt) &&
+                                r.theoryOmegaDt > 0;
         const double off = bothFinite ? 100.0 * (r.maxOmegaDt / r.theoryOmegaDt - 1.0) : NAN;
         if (!asJson) {
             std::snprintf(line, sizeof line, "%-18s %15.4g %8.4g %8s %14.3g N/m\n",
@@ -310,13 +293,11 @@ int runStabilityCommand(const Args& args, std::ostream& out, const BenchPlots* p
                                     {"theory_omega_dt", jnum(r.theoryOmegaDt)},
                                     {"rope_max_stiffness_n_per_m", jnum(r.ropeStiffness)}});
     }
-    if (asJson)
-        out << j.dump() << "\n";
-    else
-        out << "(0: unstable at any dt; inf: never unstable; * theory says unstable at any dt, "
-               "but below this w dt the growth per step, e.g. (w dt)^4/4 for midpoint, stays "
-               "under the 0.3 % test over the run)\nwrote "
-            << csv << (plotError.empty() ? " and " + png : "") << "\n";
+    if (asJson) out << j.dump() << "\n";
+    else out << "(0: unstable at any dt; inf: never unstable; * theory says unstable at any dt, "
+                "but below this w dt the growth per step, e.g. (w dt)^4/4 for midpoint, stays "
+                "under the 0.3 % test over the run)\nwrote " << csv
+             << (plotError.empty() ? " and " + png : "") << "\n";
     if (!plotError.empty()) {
         std::cerr << "artillery bench: cannot draw " << png << ": " << plotError << "\n";
         return kCheckFailed;
@@ -336,10 +317,8 @@ bool intoDocs(const std::string& path) {
 /// "[load 0.42]": the 1-minute load average beside a figure.
 std::string loadNote(double load) {
     char t[40];
-    if (std::isfinite(load))
-        std::snprintf(t, sizeof t, "  [load %.2f]", load);
-    else
-        std::snprintf(t, sizeof t, "  [load unknown]");
+    if (std::isfinite(load)) std::snprintf(t, sizeof t, "  [load %.2f]", load);
+    else std::snprintf(t, sizeof t, "  [load unknown]");
     return t;
 }
 
@@ -362,9 +341,7 @@ std::string pileWindows(const game::bench::PileComparison& p) {
            std::to_string(p.balls);
 }
 
-const char* verdict(bool met) {
-    return met ? "met" : "NOT met";
-}
+const char* verdict(bool met) { return met ? "met" : "NOT met"; }
 
 int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plots) {
     const Size size = sizeOption(args);
@@ -449,8 +426,8 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
     }
 
     writeText(args, csv, toCsv(report.points, report.underLoad));
-    std::string plotError =
-        plots && plots->scaling ? plots->scaling(report, png) : "no renderer for --png";
+    std::string plotError = plots && plots->scaling ? plots->scaling(report, png)
+                                                    : "no renderer for --png";
 
     json j;
     j["csv"] = csv;
@@ -507,28 +484,23 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
     for (const auto& f : report.flights) {
         if (!asJson) {
             std::snprintf(line, sizeof line,
-                          "%ld in flight, %s: update %.4g ms/step, reference of its arithmetic (%d "
-                          "lanes) %.4g ms: "
+                          "%ld in flight, %s: update %.4g ms/step, reference of its arithmetic (%d lanes) %.4g ms: "
                           "%.2fx (target <= 1.5: %s)\n"
                           "  %.0f B/particle moved: update %.3g GB/s, reference %.3g GB/s, "
                           "memcpy of as many bytes %.3g GB/s (%.4g ms)",
                           f.n, f.integrator.c_str(), f.updateMs, f.referenceLanes, f.referenceMs,
-                          f.ratio(), verdict(f.ratio() <= 1.5), f.bytesPerParticle(), f.updateGBs(),
-                          f.referenceGBs(), f.copyGBs(), f.copyMs);
+                          f.ratio(), verdict(f.ratio() <= 1.5), f.bytesPerParticle(),
+                          f.updateGBs(), f.referenceGBs(), f.copyGBs(), f.copyMs);
             out << line << loadNote(f.load) << "\n";
         }
-        j["flights"].push_back({{"particles", f.n},
-                                {"integrator", f.integrator},
-                                {"update_ms", f.updateMs},
-                                {"reference_ms", f.referenceMs},
-                                {"copy_ms", f.copyMs},
-                                {"ratio", f.ratio()},
+        j["flights"].push_back({{"particles", f.n}, {"integrator", f.integrator},
+                                {"update_ms", f.updateMs}, {"reference_ms", f.referenceMs},
+                                {"copy_ms", f.copyMs}, {"ratio", f.ratio()},
                                 {"reference_lanes", f.referenceLanes},
                                 {"bytes_per_particle", f.bytesPerParticle()},
                                 {"update_gb_s", f.updateGBs()},
                                 {"reference_gb_s", f.referenceGBs()},
-                                {"copy_gb_s", f.copyGBs()},
-                                {"load", jnum(f.load)}});
+                                {"copy_gb_s", f.copyGBs()}, {"load", jnum(f.load)}});
     }
     j["replays"] = json::array();
     for (const auto& r : seeks) {
@@ -542,10 +514,8 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
                           verdict(r.restartSeekMs <= 100.0));
             out << line << loadNote(r.load) << "\n";
         }
-        j["replays"].push_back({{"file", r.file},
-                                {"ticks", r.ticks},
-                                {"worst_seek_ms", r.worstSeekMs},
-                                {"ms_per_tick", r.msPerTick()},
+        j["replays"].push_back({{"file", r.file}, {"ticks", r.ticks},
+                                {"worst_seek_ms", r.worstSeekMs}, {"ms_per_tick", r.msPerTick()},
                                 {"restart_points", r.restartPoints},
                                 {"restart_seek_ms", r.restartSeekMs},
                                 {"restart_build_ms", r.buildMs},
@@ -583,12 +553,11 @@ int runChooseCommand(const Args& args, std::ostream& out) {
     const Size size = sizeOption(args);
     const bool asJson = args.flag("json");
     args.rejectUnknown();
-    const auto points = runWorkPrecision(
-        sweepFor(scene, size), progressLine(std::string("measuring ") + info(scene).name));
+    const auto points = runWorkPrecision(sweepFor(scene, size),
+                                         progressLine(std::string("measuring ") + info(scene).name));
     const auto c = chooseCheapest(scene, tol, points);
     double bestError = std::numeric_limits<double>::infinity();
-    for (const auto& p : points)
-        bestError = std::min(bestError, p.error);
+    for (const auto& p : points) bestError = std::min(bestError, p.error);
     if (asJson) {
         json j{{"scene", info(scene).name}, {"tolerance_m", tol}};
         if (c) {
@@ -612,8 +581,7 @@ int runChooseCommand(const Args& args, std::ostream& out) {
         out << line;
     } else {
         out << info(scene).name << ": no integrator and dt of the sweep is within " << tol
-            << " m (best error measured: " << bestError
-            << " m); try --full or a looser tolerance\n";
+            << " m (best error measured: " << bestError << " m); try --full or a looser tolerance\n";
     }
     // No setting meets the tolerance: the check the user asked for failed.
     return c ? kOk : kCheckFailed;
@@ -632,8 +600,7 @@ int runBench(const Args& args, std::ostream& out, const BenchPlots* plots) {
     if (what == "stability") return runStabilityCommand(args, out, plots);
     if (what == "scaling") return runScalingCommand(args, out, plots);
     if (what == "choose") return runChooseCommand(args, out);
-    args.fail("unknown bench '" + what +
-              "': expected work-precision, stability, scaling or choose");
+    args.fail("unknown bench '" + what + "': expected work-precision, stability, scaling or choose");
 }
 
 } // namespace game::cli

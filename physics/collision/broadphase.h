@@ -34,6 +34,12 @@ enum class ProxyKind : std::uint8_t { None, Moving, Resting };
 
 using ProxyPair = std::pair<std::uint32_t, std::uint32_t>; ///< first < second
 
+/// Two proxies may pair: neither is gone and at least one moves (without branches).
+inline bool pairable(ProxyKind a, ProxyKind b) {
+    return (a != ProxyKind::None) & (b != ProxyKind::None) &
+           ((a == ProxyKind::Moving) | (b == ProxyKind::Moving));
+}
+
 /// The reference: every overlapping pair by testing all of them, sorted.
 void allPairs(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds,
               std::vector<ProxyPair>& out);

@@ -50,10 +50,8 @@ bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShape
     if (strayMark_.size() < n) strayMark_.resize(n, 0);
     for (const std::uint32_t i : changed_) {
         buildProxy(set, def, i, h, false, 0.0);
-        const Aabb &b = boxes_[i], &f = fatBoxes_[i];
-        const bool inside =
-            (f.lo.x <= b.lo.x) & (f.lo.y <= b.lo.y) & (b.hi.x <= f.hi.x) & (b.hi.y <= f.hi.y);
-        const bool covered = kinds_[i] == liveKinds_[i] && (kinds_[i] == ProxyKind::None || inside);
+        const bool covered = kinds_[i] == liveKinds_[i] &&
+                             (kinds_[i] == ProxyKind::None || fatBoxes_[i].contains(boxes_[i]));
         if (covered || strayMark_[i]) continue;
         if (strays_.size() == kMostStrays) return false;
         strays_.push_back(i);
@@ -73,9 +71,7 @@ bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShape
         for (std::uint32_t k = pairStart_[i]; k < pairStart_[i + 1]; ++k) {
             const ProxyPair p = livePairs_[pairsOf_[k]];
             if (p.second >= n) {
-                const Aabb &a = boxes_[i], &b = staticIndex_.box(p.second - n);
-                if ((a.lo.x <= b.hi.x) & (b.lo.x <= a.hi.x) & (a.lo.y <= b.hi.y) &
-                    (b.lo.y <= a.hi.y))
+                if (boxes_[i].overlapsBranchless(staticIndex_.box(p.second - n)))
                     pairs_.push_back(p);
             } else if (overlapping(p.first, p.second)) {
                 pairs_.push_back(p);
@@ -110,11 +106,7 @@ bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShape
 }
 
 bool ParticleCollisions::overlapping(std::uint32_t i, std::uint32_t j) const {
-    const ProxyKind ki = kinds_[i], kj = kinds_[j];
-    const Aabb &a = boxes_[i], &b = boxes_[j];
-    return (ki != ProxyKind::None) & (kj != ProxyKind::None) &
-           ((ki == ProxyKind::Moving) | (kj == ProxyKind::Moving)) & (a.lo.x <= b.hi.x) &
-           (b.lo.x <= a.hi.x) & (a.lo.y <= b.hi.y) & (b.lo.y <= a.hi.y);
+    return pairable(kinds_[i], kinds_[j]) & boxes_[i].overlapsBranchless(boxes_[j]);
 }
 
 // As patchPairCache tests an escaped proxy, by the exact box: k n tests for k strays,

@@ -129,10 +129,7 @@ ParticleCollisions::CacheState ParticleCollisions::checkPairCache(const Collisio
     for (std::size_t i = 0; i < n; ++i) {
         const ProxyKind k = kinds_[i], f0 = fatKinds_[i];
         const bool fewerPairs = k == f0 || k == ProxyKind::None || f0 == ProxyKind::Moving;
-        const Aabb &b = boxes_[i], &f = fatBoxes_[i];
-        const bool inside =
-            (f.lo.x <= b.lo.x) & (f.lo.y <= b.lo.y) & (b.hi.x <= f.hi.x) & (b.hi.y <= f.hi.y);
-        if (fewerPairs && (k == ProxyKind::None || inside)) continue;
+        if (fewerPairs && (k == ProxyKind::None || fatBoxes_[i].contains(boxes_[i]))) continue;
         if (!def.patchPairs || escaped_.size() == kMostPatched) return CacheState::Rebuild;
         escaped_.push_back(static_cast<std::uint32_t>(i));
     }
@@ -212,11 +209,9 @@ void ParticleCollisions::patchPairCache(const ParticleSet& set, double h) {
         for (std::uint32_t c = 0; c < n; ++c) {
             const ProxyKind kc = fatKinds_[c];
             const Aabb& o = fatBoxes_[c];
-            unsigned hit = (c != e) & (kc != ProxyKind::None) &
-                           ((ke == ProxyKind::Moving) | (kc == ProxyKind::Moving));
+            unsigned hit = (c != e) & pairable(ke, kc);
             hit &= !(escapedMark_[c] != 0 && c < e); // a pair of two escaped ones: once
-            hit &= (box.lo.x <= o.hi.x) & (o.lo.x <= box.hi.x) & (box.lo.y <= o.hi.y) &
-                   (o.lo.y <= box.hi.y);
+            hit &= box.overlapsBranchless(o);
             fresh_[found] = c < e ? ProxyPair{c, e} : ProxyPair{e, c};
             found += hit;
         }
@@ -253,9 +248,7 @@ void ParticleCollisions::selectLivePairs() {
     for (const ProxyPair& p : cachedPairs_) {
         const ProxyKind a = kinds_[p.first];
         const ProxyKind b = p.second < n ? kinds_[p.second] : ProxyKind::Resting;
-        if (a != ProxyKind::None && b != ProxyKind::None &&
-            (a == ProxyKind::Moving || b == ProxyKind::Moving))
-            livePairs_.push_back(p);
+        if (pairable(a, b)) livePairs_.push_back(p);
     }
     liveKinds_ = kinds_;
     ++livePairsVersion_;
@@ -285,7 +278,7 @@ void ParticleCollisions::findPairs(const ParticleSet& set, const CollisionDef& d
         const Aabb& a = boxes_[p.first];
         const Aabb& b = p.second < n ? boxes_[p.second] : staticIndex_.box(p.second - n);
         pairs_[kept] = p;
-        kept += (a.lo.x <= b.hi.x) & (b.lo.x <= a.hi.x) & (a.lo.y <= b.hi.y) & (b.lo.y <= a.hi.y);
+        kept += a.overlapsBranchless(b);
     }
     pairs_.resize(kept);
 }
@@ -727,7 +720,7 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
 
     // One contact's velocity step: the normal impulse that stops the closing velocity
     // (accumulated, never pulling), and friction along the tangent within mu_s times it.
-    auto impulse = [&](VelocityRow& c, double wa, double wb) {
+    auto impulse = [&](RelaxContact& c, double wa, double wb) {
         if (!(wa + wb > 0.0)) return;
         const Vec2 vb = c.b == kNoParticle ? Vec2{} : set.velocity(c.b);
         const Vec2 vrel = set.velocity(c.a) - vb;
@@ -752,8 +745,7 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
     };
     // One contact's position step: push the overlap apart along the current normal, at most
     // a fifth of the smaller radius at a time.
-    auto project = [&](const PositionRow& c) {
-        const double wa = c.wa, wb = c.wb;
+    auto project = [&](const RelaxContact& c, double wa, double wb) {
         if (!(wa + wb > 0.0)) return;
         SurfacePoint sp;
         double reach = set.radius[c.a], smallest = reach;
@@ -774,8 +766,7 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
             reach += set.radius[c.b];
             smallest = std::min(smallest, set.radius[c.b]);
         }
-        const double depth =
-            crossed ? reach - sp.distance : std::min(reach - sp.distance, 0.2 * smallest);
+        const double depth = crossed ? reach - sp.distance : std::min(reach - sp.distance, 0.2 * smallest);
         if (!(depth > 0.0)) return;
         const Vec2 move = sp.normal * depth;
         const double fa = wa / (wa + wb), fb = wb / (wa + wb);
@@ -801,59 +792,45 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
     };
     const std::size_t bands = bandStart_.size() - 1; // the last one: unsupported
 
-    // The rows, band by band.
-    const std::size_t count = contacts_.size();
-    velocityRows_.resize(count);
-    projectAll_.resize(count);
-    projectBanded_.resize(count);
-    auto movableFirst = [&](std::uint32_t from, std::uint32_t to, std::uint32_t band,
-                            std::span<PositionRow> out) {
-        std::uint32_t next = from;
-        for (const bool statics : {false, true})
-            for (std::uint32_t k = from; k < to; ++k) {
-                const RelaxContact& c = contacts_[contactOrder_[k]];
-                if (immovableSide(c) != statics) continue;
-                const auto [wa, wb] = band == 0 ? std::pair{c.wa, c.wb} : masses(c, band);
-                out[next++] = {c.a, c.b, c.shape, c.normal, wa, wb};
-            }
-    };
-    for (std::size_t band = 0; band + 1 < bandStart_.size(); ++band)
-        for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k) {
-            const RelaxContact& c = contacts_[contactOrder_[k]];
-            const auto [bandWa, bandWb] = masses(c, static_cast<std::uint32_t>(band));
-            velocityRows_[k] = {c.a,  c.b,    c.normal, c.closing,       c.friction,      c.wa,
-                                c.wb, bandWa, bandWb,   c.normalImpulse, c.tangentImpulse};
-        }
-    movableFirst(0, static_cast<std::uint32_t>(count), 0, projectAll_);
-    for (std::size_t band = 1; band + 1 < bands; ++band)
-        movableFirst(bandStart_[band], bandStart_[band + 1], static_cast<std::uint32_t>(band),
-                     projectBanded_);
-
     // Velocity: sweeps over all contacts, then band by band from the ground up.
     for (int sweep = 0; sweep < def.relaxVelocitySweeps; ++sweep)
-        for (VelocityRow& c : velocityRows_)
-            impulse(c, c.wa, c.wb);
+        for (const std::uint32_t k : contactOrder_)
+            impulse(contacts_[k], contacts_[k].wa, contacts_[k].wb);
     for (std::size_t band = 1; band + 1 < bands; ++band)
         for (int sweep = 0; sweep < kShockSweeps; ++sweep)
             for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k) {
-                VelocityRow& c = velocityRows_[k];
-                impulse(c, c.bandWa, c.bandWb);
+                RelaxContact& c = contacts_[contactOrder_[k]];
+                const auto [wa, wb] = masses(c, static_cast<std::uint32_t>(band));
+                impulse(c, wa, wb);
             }
-    for (std::size_t k = 0; k < count; ++k) {
-        RelaxContact& c = contacts_[contactOrder_[k]];
-        c.normalImpulse = velocityRows_[k].normalImpulse;
-        c.tangentImpulse = velocityRows_[k].tangentImpulse;
-    }
 
-    // Position: the same, the contacts against what never moves after the others, in the
-    // whole list and in each band.
+    // Position: the same, with the contacts against what never moves after the others in
+    // each sweep: projectOrder_ is contactOrder_ so arranged, in the whole list (its first
+    // half) and within each band (its second half).
+    const std::size_t count = contacts_.size();
+    projectOrder_.resize(2 * count);
+    const std::span<std::uint32_t> whole(projectOrder_.data(), count),
+        banded(projectOrder_.data() + count, count);
+    auto movableFirst = [&](std::uint32_t from, std::uint32_t to, std::span<std::uint32_t> out) {
+        std::uint32_t next = from;
+        for (const bool statics : {false, true})
+            for (std::uint32_t k = from; k < to; ++k)
+                if (immovableSide(contacts_[contactOrder_[k]]) == statics)
+                    out[next++] = contactOrder_[k];
+    };
+    movableFirst(0, static_cast<std::uint32_t>(count), whole);
+    for (std::size_t band = 1; band + 1 < bands; ++band)
+        movableFirst(bandStart_[band], bandStart_[band + 1], banded);
     for (int sweep = 0; sweep < def.relaxPositionSweeps; ++sweep)
-        for (const PositionRow& c : projectAll_)
-            project(c);
+        for (const std::uint32_t k : whole)
+            project(contacts_[k], contacts_[k].wa, contacts_[k].wb);
     for (std::size_t band = 1; band + 1 < bands; ++band)
         for (int sweep = 0; sweep < kShockSweeps; ++sweep)
-            for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k)
-                project(projectBanded_[k]);
+            for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k) {
+                const RelaxContact& c = contacts_[banded[k]];
+                const auto [wa, wb] = masses(c, static_cast<std::uint32_t>(band));
+                project(c, wa, wb);
+            }
 
     warm_.clear();
     for (const RelaxContact& c : contacts_)
@@ -1041,8 +1018,8 @@ void ParticleCollisions::updateSleep(ParticleSet& set, const CollisionDef& def, 
             asleep += (set.flags[i] & kAlive) ? 1 : 0;
             continue;
         }
-        const bool resting =
-            def.sleep && resting_[i] && !(i < tethered.size() && tethered[i]) && moving(set, i);
+        const bool resting = def.sleep && resting_[i] &&
+                             !(i < tethered.size() && tethered[i]) && moving(set, i);
         resting_[i] = 0;
         const bool slow = lengthSquared(set.velocity(i)) < def.sleepSpeed * def.sleepSpeed;
         const bool stayed = lengthSquared(set.position(i) - restAnchor_[i]) <= stray * stray;

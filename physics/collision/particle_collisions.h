@@ -255,26 +255,6 @@ class ParticleCollisions {
         return c.b == kNoParticle ? level_[c.a] : std::max(level_[c.a], level_[c.b]);
     }
     std::vector<RelaxContact> contacts_;
-    // What the sweeps read and write of a contact, laid out in the order they visit the
-    // contacts, so that a sweep streams through memory: velocity rows in contactOrder_
-    // (band by band), with the inverse masses of the all-contacts sweeps and those under
-    // shock propagation in the contact's band; position rows in projection order, with
-    // the inverse masses that sweep uses.
-    struct VelocityRow {
-        std::uint32_t a = 0, b = kNoParticle;
-        Vec2 normal;
-        double closing = 0.0, friction = 0.0;
-        double wa = 0.0, wb = 0.0, bandWa = 0.0, bandWb = 0.0;
-        double normalImpulse = 0.0, tangentImpulse = 0.0;
-    };
-    struct PositionRow {
-        std::uint32_t a = 0, b = kNoParticle;
-        ShapeRef shape;
-        Vec2 normal;
-        double wa = 0.0, wb = 0.0;
-    };
-    std::vector<VelocityRow> velocityRows_;
-    std::vector<PositionRow> projectAll_, projectBanded_;
     struct WarmStart {
         std::uint64_t key; ///< a << 32 | proxy
         double normalImpulse, tangentImpulse;
@@ -289,7 +269,7 @@ class ParticleCollisions {
     };
     std::vector<Deferred> deferred_;
     void reportDeferred(const ParticleSet& set);
-    std::vector<std::uint32_t> contactOrder_, level_, bandStart_;
+    std::vector<std::uint32_t> contactOrder_, level_, bandStart_, projectOrder_;
     /// Sweeps over each band, from the ground up, with the bands below immovable.
     static constexpr int kShockSweeps = 4;
     /// Contacts up to this gap, in radii (of the pair's sum), are constraints too.

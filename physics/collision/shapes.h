@@ -24,6 +24,14 @@ struct Aabb {
     bool overlaps(const Aabb& o) const {
         return lo.x <= o.hi.x && o.lo.x <= hi.x && lo.y <= o.hi.y && o.lo.y <= hi.y;
     }
+    /// overlaps() without branches, for loops where which boxes overlap is a coin toss.
+    bool overlapsBranchless(const Aabb& o) const {
+        return (lo.x <= o.hi.x) & (o.lo.x <= hi.x) & (lo.y <= o.hi.y) & (o.lo.y <= hi.y);
+    }
+    /// `o` lies inside this box, edges included (without branches).
+    bool contains(const Aabb& o) const {
+        return (lo.x <= o.lo.x) & (lo.y <= o.lo.y) & (o.hi.x <= hi.x) & (o.hi.y <= hi.y);
+    }
 };
 
 /// A two-sided line segment a-b (a zero-thickness wall; a polyline is a chain of them).

@@ -82,8 +82,7 @@ TEST(ScalingWorkloads, PileComparisonStepsBothPilesOfTheSameSize) {
 
 TEST(ScalingWorkloads, ExponentOfExactlyLinearCostIsOne) {
     std::vector<ScalingPoint> pts;
-    for (long n : {1000L, 10000L, 100000L})
-        pts.push_back({"x", n, 0.02 * n, 20.0});
+    for (long n : {1000L, 10000L, 100000L}) pts.push_back({"x", n, 0.02 * n, 20.0});
     EXPECT_NEAR(scalingExponent(pts), 1.0, 1e-12);
     pts.back().usPerStep *= 10.0; // quadratic at the end
     EXPECT_GT(scalingExponent(pts), 1.3);

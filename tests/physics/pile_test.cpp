@@ -52,9 +52,7 @@ Heap droppedBalls(int n, bool staggered) {
 
 // n wooden balls on a staggered grid 0.12 m apart (each row offset by half a spacing, so
 // they settle into a heap, not columns), dropped into an open box.
-Heap staggeredHeap(int n) {
-    return droppedBalls(n, true);
-}
+Heap staggeredHeap(int n) { return droppedBalls(n, true); }
 
 // The deepest overlap between two balls, or of a ball with the floor or a wall, m.
 double worstOverlap(const ParticleSet& p, double width) {
