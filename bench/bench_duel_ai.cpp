@@ -7,6 +7,7 @@
 //
 // N duels per pair (default 100), spread evenly over K maps (default 5: the shipped
 // duel and K - 1 generated at normal difficulty, seeds 1..K-1).
+#include "bench/options.h"
 #include "game/bench/duel_ai.h"
 #include "game/generate/level_generator.h"
 
@@ -35,14 +36,18 @@ int main(int argc, char** argv) {
     std::string pairList =
         "easy-normal,easy-hard,normal-hard,easy-solver,normal-solver,hard-solver";
     for (int i = 1; i < argc; ++i) {
+        bool ok = true;
         if (!std::strcmp(argv[i], "--duels") && i + 1 < argc)
-            duels = std::atoi(argv[++i]);
+            ok = bench_args::countOption("bench_duel_ai", "--duels", argv[++i], duels, 2, 1e6);
         else if (!std::strcmp(argv[i], "--maps") && i + 1 < argc)
-            mapCount = std::atoi(argv[++i]);
+            ok = bench_args::countOption("bench_duel_ai", "--maps", argv[++i], mapCount, 1, 1e4);
         else if (!std::strcmp(argv[i], "--pairs") && i + 1 < argc)
             pairList = argv[++i];
-        else {
-            std::fprintf(stderr, "usage: bench_duel_ai [--duels N] [--maps K] [--pairs A-B,...]\n");
+        else
+            ok = false;
+        if (!ok) {
+            std::fprintf(stderr,
+                         "usage: bench_duel_ai [--duels N >= 2] [--maps K >= 1] [--pairs A-B,...]\n");
             return 2;
         }
     }
@@ -61,10 +66,6 @@ int main(int argc, char** argv) {
             return 2;
         }
         pairs.emplace_back(*a, *b);
-    }
-    if (duels < 2 || mapCount < 1) {
-        std::fprintf(stderr, "bench_duel_ai: --duels expects >= 2, --maps >= 1\n");
-        return 2;
     }
 
     std::vector<game::Level> maps = {game::loadLevel("levels/10_duel.json")};

@@ -8,6 +8,7 @@
 // Also the effects' own cost per tick (Effects::observe), which the window pays per tick.
 //
 //   bench_effects_frame [LEVEL.json] [--frames N] [--after TICKS]
+#include "bench/options.h"
 #include "game/files/json_reader.h"
 #include "game/level.h"
 #include "game/match.h"
@@ -48,14 +49,14 @@ int main(int argc, char** argv) {
     std::string file = "levels/05_castle.json";
     int frames = 30, after = 20;
     for (int i = 1; i < argc; ++i) {
+        bool ok = true;
         if (!std::strcmp(argv[i], "--frames") && i + 1 < argc)
-            frames = std::atoi(argv[++i]);
+            ok = bench_args::countOption("bench_effects_frame", "--frames", argv[++i], frames, 1);
         else if (!std::strcmp(argv[i], "--after") && i + 1 < argc)
-            after = std::atoi(argv[++i]);
+            ok = bench_args::countOption("bench_effects_frame", "--after", argv[++i], after, 0);
         else
             file = argv[i];
-    }
-    if (frames < 1 || after < 0) {
+        if (ok) continue;
         std::fprintf(
             stderr,
             "usage: bench_effects_frame [LEVEL.json] [--frames N >= 1] [--after TICKS >= 0]\n");

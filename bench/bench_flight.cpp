@@ -12,6 +12,7 @@
 // mean something on a quiet machine only.
 //
 // Usage: bench_flight [--particles N] [--steps S] [--verlet]
+#include "bench/options.h"
 #include "game/bench/scaling.h"
 
 #include <cstdio>
@@ -24,20 +25,21 @@ int main(int argc, char** argv) {
     bool verlet = false;
     for (int i = 1; i < argc; ++i) {
         const bool more = i + 1 < argc;
+        bool ok = true;
         if (std::strcmp(argv[i], "--particles") == 0 && more) {
-            particles = std::atol(argv[++i]);
+            ok = bench_args::countOption("bench_flight", "--particles", argv[++i], particles, 1);
         } else if (std::strcmp(argv[i], "--steps") == 0 && more) {
-            steps = std::atoi(argv[++i]);
+            ok = bench_args::countOption("bench_flight", "--steps", argv[++i], steps, 1);
         } else if (std::strcmp(argv[i], "--verlet") == 0) {
             verlet = true;
         } else {
-            std::fprintf(stderr, "usage: bench_flight [--particles N] [--steps S] [--verlet]\n");
+            ok = false;
+        }
+        if (!ok) {
+            std::fprintf(stderr,
+                         "usage: bench_flight [--particles N >= 1] [--steps S >= 1] [--verlet]\n");
             return 2;
         }
-    }
-    if (particles < 1 || steps < 1) {
-        std::fprintf(stderr, "bench_flight: --particles and --steps must be >= 1\n");
-        return 2;
     }
     const game::bench::FlightComparison r =
         game::bench::compareFlight(particles, verlet, steps, 1);

@@ -21,6 +21,7 @@
 // Usage: bench_pile [--balls N] [--skip S] [--ticks T] [--side particles|rigid|both]
 //                   [--trace] [--csv]
 //        bench_pile --heap N [--seconds S]
+#include "bench/options.h"
 #include "game/bench/scaling.h"
 #include "physics/diagnostics.h"
 #include "physics/rigid/rigid_world.h"
@@ -117,40 +118,43 @@ void runHeap(long n, double seconds) {
 
 int main(int argc, char** argv) {
     Options o;
+    using bench_args::countOption, bench_args::realOption;
+    constexpr const char* kName = "bench_pile";
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool more = i + 1 < argc;
+        bool ok = true;
         if (a == "--balls" && more) {
-            o.balls = std::atol(argv[++i]);
+            ok = countOption(kName, "--balls", argv[++i], o.balls, 1);
         } else if (a == "--skip" && more) {
-            o.skip = std::atoi(argv[++i]);
+            ok = countOption(kName, "--skip", argv[++i], o.skip, 0, 1e7);
         } else if (a == "--ticks" && more) {
-            o.ticks = std::atoi(argv[++i]);
+            ok = countOption(kName, "--ticks", argv[++i], o.ticks, 1, 1e7);
         } else if (a == "--side" && more) {
             const std::string side = argv[++i];
             o.particles = side == "particles" || side == "both";
             o.rigid = side == "rigid" || side == "both";
+            ok = o.particles || o.rigid;
+            if (!ok)
+                std::fprintf(stderr, "%s: --side expects particles, rigid or both, got '%s'\n",
+                             kName, side.c_str());
         } else if (a == "--trace") {
             o.trace = true;
         } else if (a == "--csv") {
             o.csv = true;
         } else if (a == "--heap" && more) {
-            o.heap = std::atol(argv[++i]);
+            ok = countOption(kName, "--heap", argv[++i], o.heap, 1);
         } else if (a == "--seconds" && more) {
-            o.seconds = std::atof(argv[++i]);
+            ok = realOption(kName, "--seconds", argv[++i], o.seconds, 1e-3, 1e6);
         } else {
-            std::fprintf(stderr, "usage: bench_pile [--balls N] [--skip S] [--ticks T] "
+            ok = false;
+        }
+        if (!ok) {
+            std::fprintf(stderr, "usage: bench_pile [--balls N >= 1] [--skip S >= 0] [--ticks T >= 1] "
                                  "[--side particles|rigid|both] [--trace] [--csv]\n"
-                                 "       bench_pile --heap N [--seconds S]\n");
+                                 "       bench_pile --heap N >= 1 [--seconds S > 0]\n");
             return 2;
         }
-    }
-    if (o.balls < 1 || o.ticks < 1 || o.skip < 0 || (!o.particles && !o.rigid) ||
-        !(o.seconds > 0.0)) {
-        std::fprintf(stderr,
-                     "bench_pile: --balls and --ticks must be >= 1, --skip >= 0, --side one of "
-                     "particles, rigid, both, --seconds > 0\n");
-        return 2;
     }
     if (o.heap > 0) {
         runHeap(o.heap, o.seconds);

@@ -3,6 +3,7 @@
 // and how many times faster than real time that is. One core: nothing here is threaded.
 //
 //   bench_replay [LEVEL.json] [--seconds S] [--repeats N]
+#include "bench/options.h"
 #include "game/files/json_reader.h"
 #include "game/headless.h"
 #include "game/replay.h"
@@ -20,11 +21,14 @@ int main(int argc, char** argv) {
     double seconds = 120.0;
     int repeats = 5;
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--seconds") && i + 1 < argc) seconds = std::atof(argv[++i]);
-        else if (!std::strcmp(argv[i], "--repeats") && i + 1 < argc) repeats = std::atoi(argv[++i]);
-        else file = argv[i];
-    }
-    if (!(seconds > 0.0) || repeats < 1) {
+        bool ok = true;
+        if (!std::strcmp(argv[i], "--seconds") && i + 1 < argc)
+            ok = bench_args::realOption("bench_replay", "--seconds", argv[++i], seconds, 1e-3, 1e6);
+        else if (!std::strcmp(argv[i], "--repeats") && i + 1 < argc)
+            ok = bench_args::countOption("bench_replay", "--repeats", argv[++i], repeats, 1);
+        else
+            file = argv[i];
+        if (ok) continue;
         std::fprintf(stderr, "usage: bench_replay [LEVEL.json] [--seconds S > 0] [--repeats N >= 1]\n");
         return 2;
     }

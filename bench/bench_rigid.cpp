@@ -6,6 +6,7 @@
 //      preset (the lecture notes' presets), at dt = 1/120 s with 1 and 4 sub-steps.
 // Usage: bench_rigid [--csv] [--ticks N]. Times are wall clock, so they vary from run
 // to run; the ratio is the figure to read.
+#include "bench/options.h"
 #include "physics/rigid/rigid_drop.h"
 #include "physics/rigid/rigid_scenes.h"
 
@@ -86,10 +87,11 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--csv") == 0) {
             csv = true;
-        } else if (std::strcmp(argv[i], "--ticks") == 0 && i + 1 < argc) {
-            ticks = std::max(1, std::atoi(argv[++i]));
+        } else if (std::strcmp(argv[i], "--ticks") == 0 && i + 1 < argc &&
+                   bench_args::countOption("bench_rigid", "--ticks", argv[i + 1], ticks, 1, 1e7)) {
+            ++i;
         } else {
-            std::fprintf(stderr, "usage: bench_rigid [--csv] [--ticks N]\n");
+            std::fprintf(stderr, "usage: bench_rigid [--csv] [--ticks N >= 1]\n");
             return 2;
         }
     }

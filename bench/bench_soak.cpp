@@ -19,6 +19,7 @@
 //
 //   bench_soak [--seconds S] [--scenes busy,oscillators,gas,bodies] [--report S]
 //              [--particles N] [--crates M] [--oscillators N] [--gas N] [--bodies M]
+#include "bench/options.h"
 #include "soak_scenes.h"
 
 #include <algorithm>
@@ -70,44 +71,37 @@ constexpr const char* kUsage =
     "                  [--bodies M >= 1 (1000)]\n";
 
 bool parse(int argc, char** argv, Options& o) {
+    using bench_args::countOption, bench_args::realOption;
+    constexpr const char* kName = "bench_soak";
     for (int i = 1; i < argc; i += 2) {
         if (i + 1 >= argc) return false;
         const char* flag = argv[i];
         const char* value = argv[i + 1];
-        char* end = nullptr;
-        const double number = std::strtod(value, &end);
-        const bool numeric = end != value && *end == '\0';
-        const auto count = [&](int& out, int least) {
-            if (!numeric || number < least || number > 1e6 || number != std::floor(number))
-                return false;
-            out = static_cast<int>(number);
-            return true;
-        };
         bool ok = true;
         if (!std::strcmp(flag, "--seconds"))
-            ok = numeric && number > 0, o.seconds = number;
+            ok = realOption(kName, flag, value, o.seconds, 1e-3, 1e7);
         else if (!std::strcmp(flag, "--report"))
-            ok = numeric && number > 0, o.report = number;
+            ok = realOption(kName, flag, value, o.report, 1e-3, 1e7);
         else if (!std::strcmp(flag, "--scenes")) {
             o.scenes = value;
             for (const std::string_view name : names(value))
                 ok = ok && std::ranges::count(names(kScenes), name) > 0;
+            if (!ok)
+                std::fprintf(stderr, "%s: --scenes expects names from %.*s, got '%s'\n", kName,
+                             static_cast<int>(kScenes.size()), kScenes.data(), value);
         } else if (!std::strcmp(flag, "--particles"))
-            ok = count(o.particles, 1);
+            ok = countOption(kName, flag, value, o.particles, 1, 1e6);
         else if (!std::strcmp(flag, "--crates"))
-            ok = count(o.crates, 0);
+            ok = countOption(kName, flag, value, o.crates, 0, 1e6);
         else if (!std::strcmp(flag, "--oscillators"))
-            ok = count(o.oscillators, 1);
+            ok = countOption(kName, flag, value, o.oscillators, 1, 1e6);
         else if (!std::strcmp(flag, "--gas"))
-            ok = count(o.gas, 1);
+            ok = countOption(kName, flag, value, o.gas, 1, 1e6);
         else if (!std::strcmp(flag, "--bodies"))
-            ok = count(o.bodies, 1);
+            ok = countOption(kName, flag, value, o.bodies, 1, 1e6);
         else
-            ok = false;
-        if (!ok) {
-            std::fprintf(stderr, "bench_soak: bad option %s %s\n", flag, value);
-            return false;
-        }
+            ok = false, std::fprintf(stderr, "%s: unknown option %s\n", kName, flag);
+        if (!ok) return false;
     }
     return true;
 }
