@@ -202,6 +202,12 @@ PileComparison comparePiles(long balls, int steps, int repeats) {
     return r;
 }
 
+const PileComparison* firstLeadThatDoesNotGrow(const std::vector<PileComparison>& piles) {
+    for (std::size_t k = 1; k < piles.size(); ++k)
+        if (!(piles[k].speedup() > piles[k - 1].speedup())) return &piles[k];
+    return nullptr;
+}
+
 double flightWorkload(long n, int steps) {
     auto w = flightWorld(n);
     w->step();

@@ -76,6 +76,10 @@ struct PileComparison {
 };
 PileComparison comparePiles(long balls = 2000, int steps = 60, int repeats = 3);
 
+/// The first pile (of `piles`, smallest first) whose lead over Box2D is not above the
+/// lead of the pile before it, or nullptr when the lead grows at every size.
+const PileComparison* firstLeadThatDoesNotGrow(const std::vector<PileComparison>& piles);
+
 /// Least-squares slope of log(cost) against log(n): 1 is linear scaling.
 double scalingExponent(const std::vector<ScalingPoint>& points);
 

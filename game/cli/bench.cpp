@@ -343,6 +343,25 @@ std::string pileWindows(const game::bench::PileComparison& p) {
 
 const char* verdict(bool met) { return met ? "met" : "NOT met"; }
 
+/// "lead over Box2D growing with N (14.0x, 11.7x, 19.6x at 1000, 2000, 4000 balls): NOT
+/// met from 1000 to 2000 balls": `stalls` is the first pile whose lead did not grow.
+std::string leadGrowth(const std::vector<game::bench::PileComparison>& piles,
+                       const game::bench::PileComparison* stalls) {
+    std::string leads, sizes;
+    char t[32];
+    for (const auto& p : piles) {
+        std::snprintf(t, sizeof t, "%.1fx", p.speedup());
+        leads += (leads.empty() ? "" : ", ") + std::string(t);
+        sizes += (sizes.empty() ? "" : ", ") + std::to_string(p.balls);
+    }
+    std::string s = "lead over Box2D growing with N (" + leads + " at " + sizes + " balls): " +
+                    verdict(stalls == nullptr);
+    if (stalls != nullptr)
+        s += " from " + std::to_string((stalls - 1)->balls) + " to " +
+             std::to_string(stalls->balls) + " balls";
+    return s;
+}
+
 int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plots) {
     const Size size = sizeOption(args);
     const bool asJson = args.flag("json");
@@ -479,6 +498,11 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
                               {"box2d_window_ms", p.rigidWindowMs},
                               {"asleep_after_window", p.asleepAfterWindow},
                               {"load", jnum(p.load)}});
+    }
+    if (report.piles.size() > 1) {
+        const PileComparison* stalls = firstLeadThatDoesNotGrow(report.piles);
+        j["pile_lead_grows_with_n"] = stalls == nullptr;
+        if (!asJson) out << leadGrowth(report.piles, stalls) << "\n";
     }
     j["flights"] = json::array();
     for (const auto& f : report.flights) {

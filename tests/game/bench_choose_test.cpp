@@ -80,6 +80,26 @@ TEST(ScalingWorkloads, PileComparisonStepsBothPilesOfTheSameSize) {
     }
 }
 
+TEST(ScalingWorkloads, TheLeadGrowsOnlyIfEveryLargerPileLeadsByMore) {
+    auto pile = [](long balls, double particleMs, double rigidMs) {
+        PileComparison p;
+        p.balls = balls, p.particleMs = particleMs, p.rigidMs = rigidMs;
+        return p;
+    };
+    EXPECT_EQ(firstLeadThatDoesNotGrow({}), nullptr);
+    EXPECT_EQ(firstLeadThatDoesNotGrow({pile(1000, 1, 14)}), nullptr);
+    const std::vector<PileComparison> growing{pile(1000, 1, 4), pile(2000, 1, 6),
+                                              pile(4000, 1, 17)};
+    EXPECT_EQ(firstLeadThatDoesNotGrow(growing), nullptr);
+    // 14.0x, 11.7x, 19.6x: the 2,000 balls are where it stops growing.
+    const std::vector<PileComparison> dips{pile(1000, 0.108, 1.51), pile(2000, 0.319, 3.72),
+                                           pile(4000, 1.34, 26.3)};
+    EXPECT_EQ(firstLeadThatDoesNotGrow(dips), &dips[1]);
+    // Equal leads do not grow.
+    const std::vector<PileComparison> flat{pile(1000, 1, 5), pile(2000, 2, 10)};
+    EXPECT_EQ(firstLeadThatDoesNotGrow(flat), &flat[1]);
+}
+
 TEST(ScalingWorkloads, ExponentOfExactlyLinearCostIsOne) {
     std::vector<ScalingPoint> pts;
     for (long n : {1000L, 10000L, 100000L}) pts.push_back({"x", n, 0.02 * n, 20.0});
