@@ -188,10 +188,15 @@ PileComparison comparePiles(long balls, int steps, int repeats) {
     }
     r.windowTicks = steps;
     for (int k = 0; k < std::max(1, repeats); ++k) {
+        long awake = 0;
         auto t0 = Clock::now();
-        for (int i = 0; i < steps; ++i) particles->step();
+        for (int i = 0; i < steps; ++i) {
+            particles->step();
+            awake += balls - particles->collisionStats().sleeping;
+        }
         r.particleWindowMs.push_back(1e3 * seconds(t0) / steps);
         r.asleepAfterWindow.push_back(particles->collisionStats().sleeping);
+        r.awakeBallTicks.push_back(awake);
         t0 = Clock::now();
         for (int i = 0; i < steps; ++i) rigid->step(tick);
         r.rigidWindowMs.push_back(1e3 * seconds(t0) / steps);

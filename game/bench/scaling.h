@@ -66,12 +66,14 @@ struct PileComparison {
     double particleMs = 0, rigidMs = 0; ///< ms per step, the median of the windows
     double load = NAN; ///< 1-minute load average when measured
     /// The timed windows, consecutive from tick kPileSettleTicks + 1, windowTicks each: ms
-    /// per step of either side, and the particles asleep at the window's end. A pile
-    /// that falls asleep within them costs far less in the later windows, so they say
-    /// which stage of the drop the median timed.
+    /// per step of either side, the particles asleep at the window's end, and the awake
+    /// particles summed over the window's ticks (the work a step costs scales with them).
+    /// A pile that falls asleep within them costs far less in the later windows, so they
+    /// say which stage of the drop the median timed.
     int windowTicks = 0;
     std::vector<double> particleWindowMs, rigidWindowMs;
     std::vector<int> asleepAfterWindow;
+    std::vector<long> awakeBallTicks;
     double speedup() const { return particleMs > 0 ? rigidMs / particleMs : 0; }
 };
 PileComparison comparePiles(long balls = 2000, int steps = 60, int repeats = 3);

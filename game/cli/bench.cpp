@@ -323,7 +323,8 @@ std::string loadNote(double load) {
 }
 
 /// "windows of 30 ticks from tick 61: particles 0.74, 0.31, 0.12 ms; Box2D ...; particles
-/// asleep after each: 0, 1936, 1936 of 2000": which stage of the drop each window timed.
+/// asleep after each: 408, 1936, 1896 of 2000; awake ball-ticks in each: 57866, 17498,
+/// 2229": which stage of the drop each window timed.
 std::string pileWindows(const game::bench::PileComparison& p) {
     auto list = [](const auto& values, const char* format) {
         std::string s;
@@ -338,7 +339,8 @@ std::string pileWindows(const game::bench::PileComparison& p) {
            std::to_string(game::bench::kPileSettleTicks + 1) + ": particles " +
            list(p.particleWindowMs, "%.3g") + " ms; Box2D " + list(p.rigidWindowMs, "%.3g") +
            " ms; particles asleep after each: " + list(p.asleepAfterWindow, "%d") + " of " +
-           std::to_string(p.balls);
+           std::to_string(p.balls) + "; awake ball-ticks in each: " +
+           list(p.awakeBallTicks, "%ld");
 }
 
 const char* verdict(bool met) { return met ? "met" : "NOT met"; }
@@ -497,6 +499,7 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
                               {"particle_window_ms", p.particleWindowMs},
                               {"box2d_window_ms", p.rigidWindowMs},
                               {"asleep_after_window", p.asleepAfterWindow},
+                              {"awake_ball_ticks", p.awakeBallTicks},
                               {"load", jnum(p.load)}});
     }
     if (report.piles.size() > 1) {

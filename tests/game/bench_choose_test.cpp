@@ -3,6 +3,7 @@
 // helpers report what they measured.
 #include "game/bench/choose.h"
 #include "game/bench/scaling.h"
+#include "physics/world.h"
 
 #include <gtest/gtest.h>
 
@@ -58,13 +59,13 @@ TEST(Choose, MeasuredChoiceMeetsTheToleranceOnTheSpring) {
 }
 
 TEST(ScalingWorkloads, PileComparisonStepsBothPilesOfTheSameSize) {
-    const PileComparison r = comparePiles(100, 2, 3);
+    const PileComparison r = comparePiles(100, 20, 3);
     EXPECT_EQ(r.balls, 100);
     EXPECT_GT(r.particleMs, 0.0);
     EXPECT_GT(r.rigidMs, 0.0);
     EXPECT_NEAR(r.speedup(), r.rigidMs / r.particleMs, 1e-12);
-    // Three windows of 2 ticks each; the figures are their medians.
-    EXPECT_EQ(r.windowTicks, 2);
+    // Three windows of 20 ticks each; the figures are their medians.
+    EXPECT_EQ(r.windowTicks, 20);
     ASSERT_EQ(r.particleWindowMs.size(), 3u);
     ASSERT_EQ(r.rigidWindowMs.size(), 3u);
     ASSERT_EQ(r.asleepAfterWindow.size(), 3u);
@@ -78,6 +79,24 @@ TEST(ScalingWorkloads, PileComparisonStepsBothPilesOfTheSameSize) {
         EXPECT_GE(asleep, 0);
         EXPECT_LE(asleep, 100);
     }
+    // Each window's awake ball-ticks, counted again from the particles' sleep flags of
+    // the same deterministic drop.
+    ASSERT_EQ(r.awakeBallTicks.size(), 3u);
+    auto pile = particlePile(100);
+    for (int i = 0; i < kPileSettleTicks; ++i) pile->step();
+    for (std::size_t k = 0; k < 3; ++k) {
+        long awake = 0;
+        for (int i = 0; i < 20; ++i) {
+            pile->step();
+            for (const auto flags : pile->particles.flags)
+                awake += (flags & phys::kAlive) && !(flags & phys::kSleeping) ? 1 : 0;
+        }
+        EXPECT_EQ(r.awakeBallTicks[k], awake) << "window " << k;
+    }
+    // The pile falls asleep within these windows: most of it is awake in the first and
+    // asleep in the last.
+    EXPECT_GT(r.awakeBallTicks.front(), 20 * 100 / 2);
+    EXPECT_LT(r.awakeBallTicks.back(), 20 * 100 / 2);
 }
 
 TEST(ScalingWorkloads, TheLeadGrowsOnlyIfEveryLargerPileLeadsByMore) {
