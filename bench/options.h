@@ -1,13 +1,17 @@
-// The numbers the bench programs take on their command lines. std::atoi reads "abc" as 0
-// and "12x" as 12, so a mistyped option ran another benchmark than the one asked for; here
-// the whole text must be a number in range, or the program says which option, what it
-// got and what it expected.
+// The numbers the bench programs take on their command lines, read as the verbs read
+// theirs (game/cli/args.h): std::atoi reads "abc" as 0 and "12x" as 12, so a mistyped
+// option ran another benchmark than the one asked for; here the whole text must be a
+// decimal number in range (a whole one: digits only), or the program says which option,
+// what it got and what it expected.
 #pragma once
+
+#include "game/cli/args.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <string>
 
 namespace bench_args {
 
@@ -17,10 +21,12 @@ namespace bench_args {
 inline std::optional<double> numberOption(const char* program, const char* name,
                                           const char* text, double lo, double hi,
                                           bool whole) {
-    char* end = nullptr;
-    const double v = std::strtod(text, &end);
-    const bool number = end != text && *end == '\0' && std::isfinite(v);
-    if (number && v >= lo && v <= hi && (!whole || v == std::floor(v))) return v;
+    const std::string s = text;
+    const bool digitsOnly = s.find_first_not_of("0123456789", s[0] == '-' ? 1 : 0) ==
+                            std::string::npos;
+    const bool number = game::cli::isDecimal(s) && (!whole || digitsOnly);
+    const double v = number ? std::strtod(text, nullptr) : NAN;
+    if (std::isfinite(v) && v >= lo && v <= hi) return v;
     if (whole)
         std::fprintf(stderr, "%s: %s expects a whole number in %.0f..%.0f, got '%s'\n", program,
                      name, lo, hi, text);

@@ -68,11 +68,7 @@ std::string Args::text(const std::string& name, const std::string& fallback) con
     return text(name).value_or(fallback);
 }
 
-namespace {
-
-/// Decimal notation only: [+-] digits [. digits] [e [+-] digits], at least one digit in
-/// the mantissa. strtod alone would also take "0x10", "inf", "nan" and leading spaces.
-bool decimal(const std::string& s) {
+bool isDecimal(const std::string& s) {
     std::size_t i = 0, digits = 0;
     auto isDigit = [&](std::size_t k) { return k < s.size() && s[k] >= '0' && s[k] <= '9'; };
     if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
@@ -91,8 +87,6 @@ bool decimal(const std::string& s) {
     return i == s.size();
 }
 
-} // namespace
-
 double Args::parseNumber(const std::string& name, const std::string& raw, double lo, double hi,
                          const char* what) const {
     const char* s = raw.c_str();
@@ -102,7 +96,7 @@ double Args::parseNumber(const std::string& name, const std::string& raw, double
     std::ostringstream range;
     range << "a number in [" << lo << ", " << hi << "]" << (what && *what ? " " : "")
           << (what ? what : "");
-    if (!decimal(raw) || end != s + raw.size() || !std::isfinite(v))
+    if (!isDecimal(raw) || end != s + raw.size() || !std::isfinite(v))
         fail("--" + name + " expects " + range.str() + ", got '" + raw + "'");
     if (v < lo || v > hi)
         fail("--" + name + " expects " + range.str() + ", got " + raw);

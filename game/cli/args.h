@@ -22,6 +22,10 @@ struct UsageError : std::runtime_error {
 /// Exit codes shared by every verb.
 enum Exit { kOk = 0, kCheckFailed = 1, kBadInput = 2 };
 
+/// Decimal notation only: [+-] digits [. digits] [e [+-] digits], at least one digit in
+/// the mantissa. strtod alone would also take "0x10", "inf", "nan" and leading spaces.
+bool isDecimal(const std::string& s);
+
 class Args {
   public:
     /// Parses argv[first..argc). `flags` are options that take no value.
