@@ -99,8 +99,10 @@ bool parse(int argc, char** argv, Options& o) {
             ok = countOption(kName, flag, value, o.gas, 1, 1e6);
         else if (!std::strcmp(flag, "--bodies"))
             ok = countOption(kName, flag, value, o.bodies, 1, 1e6);
-        else
-            ok = false, std::fprintf(stderr, "%s: unknown option %s\n", kName, flag);
+        else {
+            std::fprintf(stderr, "%s: unknown option %s\n", kName, flag);
+            ok = false;
+        }
         if (!ok) return false;
     }
     return true;

@@ -322,25 +322,28 @@ std::string loadNote(double load) {
     return t;
 }
 
+/// The values printed with `format` and joined by ", ".
+template <class T>
+std::string joined(const std::vector<T>& values, const char* format) {
+    std::string s;
+    char t[32];
+    for (const T v : values) {
+        std::snprintf(t, sizeof t, format, v);
+        s += (s.empty() ? "" : ", ") + std::string(t);
+    }
+    return s;
+}
+
 /// "windows of 30 ticks from tick 61: particles 0.74, 0.31, 0.12 ms; Box2D ...; particles
 /// asleep after each: 408, 1936, 1896 of 2000; awake ball-ticks in each: 57866, 17498,
 /// 2229": which stage of the drop each window timed.
 std::string pileWindows(const game::bench::PileComparison& p) {
-    auto list = [](const auto& values, const char* format) {
-        std::string s;
-        char t[32];
-        for (const auto v : values) {
-            std::snprintf(t, sizeof t, format, v);
-            s += (s.empty() ? "" : ", ") + std::string(t);
-        }
-        return s;
-    };
     return "windows of " + std::to_string(p.windowTicks) + " ticks from tick " +
            std::to_string(game::bench::kPileSettleTicks + 1) + ": particles " +
-           list(p.particleWindowMs, "%.3g") + " ms; Box2D " + list(p.rigidWindowMs, "%.3g") +
-           " ms; particles asleep after each: " + list(p.asleepAfterWindow, "%d") + " of " +
+           joined(p.particleWindowMs, "%.3g") + " ms; Box2D " + joined(p.rigidWindowMs, "%.3g") +
+           " ms; particles asleep after each: " + joined(p.asleepAfterWindow, "%d") + " of " +
            std::to_string(p.balls) + "; awake ball-ticks in each: " +
-           list(p.awakeBallTicks, "%ld");
+           joined(p.awakeBallTicks, "%ld");
 }
 
 const char* verdict(bool met) { return met ? "met" : "NOT met"; }
@@ -349,15 +352,11 @@ const char* verdict(bool met) { return met ? "met" : "NOT met"; }
 /// met from 1000 to 2000 balls": `stalls` is the first pile whose lead did not grow.
 std::string leadGrowth(const std::vector<game::bench::PileComparison>& piles,
                        const game::bench::PileComparison* stalls) {
-    std::string leads, sizes;
-    char t[32];
-    for (const auto& p : piles) {
-        std::snprintf(t, sizeof t, "%.1fx", p.speedup());
-        leads += (leads.empty() ? "" : ", ") + std::string(t);
-        sizes += (sizes.empty() ? "" : ", ") + std::to_string(p.balls);
-    }
-    std::string s = "lead over Box2D growing with N (" + leads + " at " + sizes + " balls): " +
-                    verdict(stalls == nullptr);
+    std::vector<double> leads;
+    std::vector<long> sizes;
+    for (const auto& p : piles) leads.push_back(p.speedup()), sizes.push_back(p.balls);
+    std::string s = "lead over Box2D growing with N (" + joined(leads, "%.1fx") + " at " +
+                    joined(sizes, "%ld") + " balls): " + verdict(stalls == nullptr);
     if (stalls != nullptr)
         s += " from " + std::to_string((stalls - 1)->balls) + " to " +
              std::to_string(stalls->balls) + " balls";
