@@ -124,7 +124,10 @@ long long Args::integer(const std::string& name, long long fallback, long long l
     char* end = nullptr;
     errno = 0;
     const long long v = std::strtoll(s, &end, 10);
-    if (t->empty() || end != s + t->size() || errno == ERANGE || v < lo || v > hi)
+    // Digits only, with an optional minus: strtoll alone would also take " 12" and "+12".
+    const bool digits =
+        t->find_first_not_of("0123456789", t->starts_with('-') ? 1 : 0) == std::string::npos;
+    if (!digits || t->empty() || end != s + t->size() || errno == ERANGE || v < lo || v > hi)
         fail("--" + name + " expects a whole number in [" + std::to_string(lo) + ", " +
              std::to_string(hi) + "], got '" + *t + "'");
     return v;

@@ -16,6 +16,10 @@ cli_test(robust_check_fullest_level 0 "ok +.*max_every_collection.json"
          "check;${PROJECT_SOURCE_DIR}/tests/data/max_every_collection.json")
 cli_test(robust_speed_hex 2 "--speed expects a number in \\[1e-09, 1e\\+06\\] m/s, got '0x10'"
          "solve;--from;0,0;--to;10,0;--speed;0x10")
+cli_test(robust_ticks_leading_space 2 "--ticks expects a whole number in \\[1, [0-9]+\\], got ' 12'"
+         "run;${PROJECT_SOURCE_DIR}/levels/01_earth_basics.json;--ticks; 12")
+cli_test(robust_ticks_plus_sign 2 "--ticks expects a whole number in \\[1, [0-9]+\\], got '\\+12'"
+         "run;${PROJECT_SOURCE_DIR}/levels/01_earth_basics.json;--ticks;+12")
 cli_test(robust_gravity_underflow 2 "flight time does not fit in a double"
          "solve;--from;0,0;--to;10,0;--speed;20;--gravity;1e-300")
 cli_test(robust_record_empty 2 "--record needs a value, got an empty one"
