@@ -44,7 +44,9 @@ stability       per integrator: the largest stable w dt on an undamped spring (e
                 w dt, and the stiffest spring a 20-link rope survives at 1/120 s.
 scaling         step cost against N: particles in flight, a particle pile with contacts,
                 cloth springs, Box2D circles; the same piles of 1,000-4,000 balls as
-                particles and as Box2D circles; 10k and 1M particles in flight (symplectic
+                particles and as Box2D circles (three windows each, with the balls
+                asleep after each and its awake ball-ticks, and whether the lead grows
+                with N); 10k and 1M particles in flight (symplectic
                 Euler and velocity Verlet) against a vectorized reference kernel of the
                 same arithmetic over the same arrays, with bytes per particle, GB/s and a
                 memcpy of as many bytes;
