@@ -22,9 +22,7 @@ inline std::optional<double> numberOption(const char* program, const char* name,
                                           const char* text, double lo, double hi,
                                           bool whole) {
     const std::string s = text;
-    const bool digitsOnly = s.find_first_not_of("0123456789", s[0] == '-' ? 1 : 0) ==
-                            std::string::npos;
-    const bool number = game::cli::isDecimal(s) && (!whole || digitsOnly);
+    const bool number = whole ? game::cli::isWholeNumber(s) : game::cli::isDecimal(s);
     const double v = number ? std::strtod(text, nullptr) : NAN;
     if (std::isfinite(v) && v >= lo && v <= hi) return v;
     if (whole)

@@ -87,6 +87,11 @@ bool isDecimal(const std::string& s) {
     return i == s.size();
 }
 
+bool isWholeNumber(const std::string& s) {
+    const std::size_t first = s.starts_with('-') ? 1 : 0;
+    return s.size() > first && s.find_first_not_of("0123456789", first) == std::string::npos;
+}
+
 double Args::parseNumber(const std::string& name, const std::string& raw, double lo, double hi,
                          const char* what) const {
     const char* s = raw.c_str();
@@ -124,10 +129,7 @@ long long Args::integer(const std::string& name, long long fallback, long long l
     char* end = nullptr;
     errno = 0;
     const long long v = std::strtoll(s, &end, 10);
-    // Digits only, with an optional minus: strtoll alone would also take " 12" and "+12".
-    const bool digits =
-        t->find_first_not_of("0123456789", t->starts_with('-') ? 1 : 0) == std::string::npos;
-    if (!digits || t->empty() || end != s + t->size() || errno == ERANGE || v < lo || v > hi)
+    if (!isWholeNumber(*t) || end != s + t->size() || errno == ERANGE || v < lo || v > hi)
         fail("--" + name + " expects a whole number in [" + std::to_string(lo) + ", " +
              std::to_string(hi) + "], got '" + *t + "'");
     return v;

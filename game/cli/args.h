@@ -25,6 +25,9 @@ enum Exit { kOk = 0, kCheckFailed = 1, kBadInput = 2 };
 /// Decimal notation only: [+-] digits [. digits] [e [+-] digits], at least one digit in
 /// the mantissa. strtod alone would also take "0x10", "inf", "nan" and leading spaces.
 bool isDecimal(const std::string& s);
+/// Whole-number notation only: digits, with an optional minus (strtoll alone would also
+/// take " 12" and "+12").
+bool isWholeNumber(const std::string& s);
 
 class Args {
   public:

@@ -65,3 +65,14 @@ TEST(Args, OutOfRangeAndUnknownOptionsAreRefused) {
     EXPECT_NE(errorOf([] { make({"--a", "1", "--a", "2"}); }).find("given twice"),
               std::string::npos);
 }
+
+TEST(Args, NumberNotationIsPlainDecimalAndWholeNumbersAreDigits) {
+    using game::cli::isDecimal, game::cli::isWholeNumber;
+    for (const char* good : {"12", "-3", "+0.5", "1e-3", "2.", ".5", "6.02E23"})
+        EXPECT_TRUE(isDecimal(good)) << good;
+    for (const char* bad : {"", " 1", "1 ", "0x10", "inf", "nan", "1e", ".", "-", "1,5"})
+        EXPECT_FALSE(isDecimal(bad)) << "'" << bad << "'";
+    for (const char* good : {"0", "12", "-3", "007"}) EXPECT_TRUE(isWholeNumber(good)) << good;
+    for (const char* bad : {"", "-", "+12", " 12", "12 ", "1e3", "2.0", "0x1"})
+        EXPECT_FALSE(isWholeNumber(bad)) << "'" << bad << "'";
+}
