@@ -65,7 +65,7 @@ Cost towerCost(int columns, int height, Mode mode, int ticks) {
     c.box2dUs = median(box2d);
     c.stepUs = median(whole);
     c.awake = world.profile().awakeBodies;
-    c.solved = world.profile().solvedContacts;
+    c.solved = world.solvedContacts();
     return c;
 }
 

@@ -186,9 +186,6 @@ struct RigidProfile {
     int awakeBodies = 0;    ///< non-static bodies awake after the step
     int sleepingBodies = 0; ///< non-static bodies asleep after the step
     int contacts = 0;       ///< contacts Box2D keeps (AABB pairs), touching or not
-    /// Touching contacts with an awake body: the ones the solver iterates over. Sleeping
-    /// islands cost nothing here; this is the deterministic proxy for their cost.
-    int solvedContacts = 0;
     int jointsBroken = 0; ///< joints destroyed by breakForce / breakTorque this step
     bool skipped = false; ///< Box2D was not stepped: everything asleep, nothing changed
 };

@@ -747,11 +747,16 @@ void RigidWorld::step(double dt) {
     }
     quiet_ = profile_.awakeBodies == 0;
     profile_.contacts = world_->GetContactCount();
+}
+
+int RigidWorld::solvedContacts() const {
+    int solved = 0;
     for (const b2Contact* c = world_->GetContactList(); c; c = c->GetNext()) {
         if (!c->IsTouching() || !c->IsEnabled()) continue;
         if (c->GetFixtureA()->GetBody()->IsAwake() || c->GetFixtureB()->GetBody()->IsAwake())
-            ++profile_.solvedContacts;
+            ++solved;
     }
+    return solved;
 }
 
 std::uint64_t RigidWorld::hash(std::uint64_t h) const {

@@ -164,6 +164,10 @@ class RigidWorld {
     /// (RigidWorldDef::skipQuiescentSteps; same results).
     void step(double dt);
     const RigidProfile& profile() const { return profile_; }
+    /// Touching contacts with an awake body: the ones the solver iterates over. Sleeping
+    /// islands cost nothing there; this is the deterministic proxy for their cost. Counted
+    /// when asked (a walk of Box2D's contact list), not every step.
+    int solvedContacts() const;
     std::uint64_t tick() const { return tick_; }
     /// Joints broken since the world was made.
     int brokenJoints() const { return brokenJoints_; }
