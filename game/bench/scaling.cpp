@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <numeric>
 #include <random>
 
 namespace game::bench {
@@ -26,6 +27,11 @@ double seconds(Clock::time_point t0) {
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+double mean(const std::vector<double>& v) {
+    return v.empty() ? 0.0
+                     : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
 }
 
 std::unique_ptr<World> flightWorld(long n, Integrator integrator = Integrator::SymplecticEuler) {
@@ -136,23 +142,28 @@ std::unique_ptr<World> particlePile(long n) {
     return w;
 }
 
-std::unique_ptr<RigidWorld> rigidPile(long n) {
+std::unique_ptr<RigidWorld> rigidPile(long n, RigidPileSetup setup) {
     const PileLayout l = pileLayout(n);
-    auto w = std::make_unique<RigidWorld>(RigidWorldDef{});
-    const double top = kBallSpacing * static_cast<double>(l.rows + 4);
+    const double s = setup.scale;
+    RigidWorldDef def;
+    def.gravity = def.gravity * s;
+    def.restitutionThreshold *= s; // a speed: the same bounces are lost at every scale
+    def.continuousPhysics = setup.continuous;
+    auto w = std::make_unique<RigidWorld>(def);
+    const double width = l.width * s, top = kBallSpacing * static_cast<double>(l.rows + 4) * s;
     const RigidMaterial wood{1000.0, 0.6, kWoodenRestitution};
     // Solid inside the loop would trap the balls, so three open chains: floor (drawn
     // left to right, solid below) and the walls (solid outside).
-    const Vec2 floor[] = {{0.0, 0.0}, {l.width, 0.0}};
+    const Vec2 floor[] = {{0.0, 0.0}, {width, 0.0}};
     const Vec2 left[] = {{0.0, top}, {0.0, 0.0}};
-    const Vec2 right[] = {{l.width, 0.0}, {l.width, top}};
+    const Vec2 right[] = {{width, 0.0}, {width, top}};
     w->createTerrain(floor, wood);
     w->createTerrain(left, wood);
     w->createTerrain(right, wood);
     placeBalls(n, l, [&](Vec2 p) {
         BodyDef bd;
-        bd.position = p;
-        w->createCircle(bd, kBallRadius, wood);
+        bd.position = p * s;
+        w->createCircle(bd, kBallRadius * s, wood);
     });
     return w;
 }
@@ -174,42 +185,53 @@ double rigidPileWorkload(long n, int steps) {
     return seconds(t0);
 }
 
-PileComparison comparePiles(long balls, int steps, int repeats) {
-    // Both piles are built and settled once; the repeats then time consecutive windows
-    // of the same run, alternating so a burst of load from elsewhere hits both.
+PileComparison comparePiles(long balls, int windowTicks, int windows) {
+    // Both piles are built and settled once, then step through the same span of the drop
+    // in windows, alternately. The windows are not repeats: the pile lands, settles and
+    // falls asleep across them, so each side's figure is its cost of the whole span, not
+    // the median of its windows (which would time whichever stage fell in the middle).
     PileComparison r;
     r.balls = balls;
     auto particles = particlePile(balls);
     auto rigid = rigidPile(balls);
+    auto tuned = rigidPile(balls, kTunedBox2D);
     const double tick = WorldDef{}.tickSeconds;
     for (int i = 0; i < kPileSettleTicks; ++i) {
         particles->step();
         rigid->step(tick);
+        tuned->step(tick);
     }
-    r.windowTicks = steps;
-    for (int k = 0; k < std::max(1, repeats); ++k) {
+    r.windowTicks = windowTicks;
+    for (int k = 0; k < std::max(1, windows); ++k) {
         long awake = 0;
         auto t0 = Clock::now();
-        for (int i = 0; i < steps; ++i) {
+        for (int i = 0; i < windowTicks; ++i) {
             particles->step();
             awake += balls - particles->collisionStats().sleeping;
         }
-        r.particleWindowMs.push_back(1e3 * seconds(t0) / steps);
+        r.particleWindowMs.push_back(1e3 * seconds(t0) / windowTicks);
         r.asleepAfterWindow.push_back(particles->collisionStats().sleeping);
         r.awakeBallTicks.push_back(awake);
         t0 = Clock::now();
-        for (int i = 0; i < steps; ++i) rigid->step(tick);
-        r.rigidWindowMs.push_back(1e3 * seconds(t0) / steps);
+        for (int i = 0; i < windowTicks; ++i)
+            rigid->step(tick);
+        r.rigidWindowMs.push_back(1e3 * seconds(t0) / windowTicks);
+        t0 = Clock::now();
+        for (int i = 0; i < windowTicks; ++i)
+            tuned->step(tick);
+        r.tunedRigidWindowMs.push_back(1e3 * seconds(t0) / windowTicks);
     }
-    r.particleMs = median(r.particleWindowMs);
-    r.rigidMs = median(r.rigidWindowMs);
+    r.particleMs = mean(r.particleWindowMs);
+    r.rigidMs = mean(r.rigidWindowMs);
+    r.tunedRigidMs = mean(r.tunedRigidWindowMs);
     r.load = loadNow();
     return r;
 }
 
-const PileComparison* firstLeadThatDoesNotGrow(const std::vector<PileComparison>& piles) {
+const PileComparison* firstLeadThatDoesNotGrow(const std::vector<PileComparison>& piles,
+                                               PileLead lead) {
     for (std::size_t k = 1; k < piles.size(); ++k)
-        if (!(piles[k].speedup() > piles[k - 1].speedup())) return &piles[k];
+        if (!((piles[k].*lead)() > (piles[k - 1].*lead)())) return &piles[k];
     return nullptr;
 }
 
