@@ -239,7 +239,7 @@ std::vector<Chart> scalingCharts(const game::bench::ScalingReport& report) {
         ratios.bars.push_back({format("pile of %.0f: particles", balls), pile.particleMs,
                                pile.rigidMs / 10.0, particle, note});
         ratios.bars.push_back({format("pile of %.0f: Box2D", balls), pile.rigidMs, NAN, rigid,
-                               format("%.3g ms, as the game sets it up", pile.rigidMs)});
+                               format("%.3g ms, the game's setup", pile.rigidMs)});
         ratios.bars.push_back({format("pile of %.0f: Box2D tuned", balls), pile.tunedRigidMs, NAN,
                                rigid, format("%.3g ms, lengths x10, no TOI", pile.tunedRigidMs)});
     }
