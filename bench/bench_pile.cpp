@@ -18,11 +18,12 @@
 // `--heap N --seconds S` instead drops the staggered heap of tests/physics/pile_test.cpp
 // (N balls, each row offset by half a spacing) and prints, every simulated second, how
 // many balls sleep, the kinetic energy and the fastest ball: whether a big heap comes
-// to rest.
+// to rest. `--drop N --seconds S` does the same for the bench's own pile of N balls.
 //
 // Usage: bench_pile [--balls N] [--skip S] [--ticks T] [--side particles|rigid|both]
 //                   [--tuned] [--trace] [--csv]
 //        bench_pile --heap N [--seconds S]
+//        bench_pile --drop N [--seconds S]
 #include "bench/options.h"
 #include "game/bench/scaling.h"
 #include "physics/diagnostics.h"
@@ -71,9 +72,29 @@ struct Options {
     int ticks = 60;
     int skip = 0; ///< ticks stepped after the settling and before the counted ones
     bool particles = true, rigid = true, csv = false, trace = false, tuned = false;
-    long heap = 0;
+    long heap = 0, drop = 0; ///< balls of the staggered heap, of the bench's pile
     double seconds = 20.0;
 };
+
+// Every simulated second until `seconds`: how many balls sleep, the kinetic energy, the
+// fastest ball, the wall ms per tick and the hash: whether a big pile comes to rest.
+void printSettling(World& w, double seconds) {
+    const int perSecond = static_cast<int>(std::lround(1.0 / w.def().tickSeconds));
+    std::printf("%8s %9s %12s %12s %10s %16s\n", "time_s", "asleep", "kinetic_J", "fastest_m_s",
+                "ms_per_tick", "hash");
+    for (int s = 1; s <= static_cast<int>(std::lround(seconds)); ++s) {
+        const auto t0 = Clock::now();
+        stepParticlePile(w, perSecond);
+        const double ms = msSince(t0) / perSecond;
+        double fastest = 0.0;
+        const ParticleSet& p = w.particles;
+        for (std::size_t i = 0; i < p.slots(); ++i)
+            fastest = std::max(fastest, std::hypot(p.vx[i], p.vy[i]));
+        std::printf("%8d %9d %12.4g %12.4g %10.3f %016llx\n", s, sleepers(p),
+                    energy(p, w.springs, w.def().forces).kinetic, fastest, ms,
+                    static_cast<unsigned long long>(w.hash()));
+    }
+}
 
 // The heap of tests/physics/pile_test.cpp (staggeredHeap): n balls on a grid 0.12 m apart,
 // each row offset by half a spacing, in an open box.
@@ -98,22 +119,16 @@ void runHeap(long n, double seconds) {
         pd.material = material::kWooden;
         w.particles.add(pd);
     }
-    const int perSecond = static_cast<int>(std::lround(1.0 / w.def().tickSeconds));
     std::printf("heap of %ld balls, %d columns\n", n, columns);
-    std::printf("%8s %9s %12s %12s %10s %16s\n", "time_s", "asleep", "kinetic_J", "fastest_m_s",
-                "ms_per_tick", "hash");
-    for (int s = 1; s <= static_cast<int>(std::lround(seconds)); ++s) {
-        const auto t0 = Clock::now();
-        stepParticlePile(w, perSecond);
-        const double ms = msSince(t0) / perSecond;
-        double fastest = 0.0;
-        const ParticleSet& p = w.particles;
-        for (std::size_t i = 0; i < p.slots(); ++i)
-            fastest = std::max(fastest, std::hypot(p.vx[i], p.vy[i]));
-        std::printf("%8d %9d %12.4g %12.4g %10.3f %016llx\n", s, sleepers(p),
-                    energy(p, w.springs, w.def().forces).kinetic, fastest, ms,
-                    static_cast<unsigned long long>(w.hash()));
-    }
+    printSettling(w, seconds);
+}
+
+// The scaling bench's own pile (rows straight above each other, so it lands in columns
+// that topple for seconds), from the drop.
+void runDrop(long n, double seconds) {
+    auto w = game::bench::particlePile(n);
+    std::printf("the bench's pile of %ld balls, from the drop\n", n);
+    printSettling(*w, seconds);
 }
 
 } // namespace
@@ -148,6 +163,8 @@ int main(int argc, char** argv) {
             o.csv = true;
         } else if (a == "--heap" && more) {
             ok = countOption(kName, "--heap", argv[++i], o.heap, 1);
+        } else if (a == "--drop" && more) {
+            ok = countOption(kName, "--drop", argv[++i], o.drop, 1);
         } else if (a == "--seconds" && more) {
             ok = realOption(kName, "--seconds", argv[++i], o.seconds, 1e-3, 1e6);
         } else {
@@ -157,12 +174,17 @@ int main(int argc, char** argv) {
             std::fprintf(stderr,
                          "usage: bench_pile [--balls N >= 1] [--skip S >= 0] [--ticks T >= 1] "
                          "[--side particles|rigid|both] [--tuned] [--trace] [--csv]\n"
-                         "       bench_pile --heap N >= 1 [--seconds S > 0]\n");
+                         "       bench_pile --heap N >= 1 [--seconds S > 0]\n"
+                         "       bench_pile --drop N >= 1 [--seconds S > 0]\n");
             return 2;
         }
     }
     if (o.heap > 0) {
         runHeap(o.heap, o.seconds);
+        return 0;
+    }
+    if (o.drop > 0) {
+        runDrop(o.drop, o.seconds);
         return 0;
     }
 
