@@ -58,8 +58,9 @@ std::unique_ptr<phys::World> particlePile(long n);
 /// How the Box2D pile is built. The game's way is metres with continuous collision on.
 /// Box2D's own tolerances are fixed lengths tuned for bodies about 1 m across (in the
 /// Debian build: a 0.1 m margin on every broad-phase box, 5 mm of linear slop, a 1 cm
-/// skin on edges), so for balls 0.1 m across its boxes overlap some fifteen neighbours
-/// each and its pile stands on a skin a fifth of a radius thick. Scaling every length
+/// skin on edges), so for balls 0.1 m across it keeps a contact for each of some twenty
+/// neighbours whose boxes overlap, and its pile stands on a skin a tenth of a radius
+/// thick. Scaling every length
 /// (and gravity with it) gives the same motion in Box2D's own units at the size it is
 /// tuned for.
 struct RigidPileSetup {
@@ -83,8 +84,8 @@ struct PileComparison {
     /// of simulating those ticks of the drop.
     double particleMs = 0, rigidMs = 0;
     double load = NAN; ///< 1-minute load average when measured
-    /// The span's consecutive windows, windowTicks each, timed alternately (particles, then
-    /// Box2D) so a burst of other work hits both: ms per step of either side, the
+    /// The span's consecutive windows, windowTicks each, timed in turn (particles, Box2D,
+    /// the tuned Box2D) so a burst of other work hits all three: ms per step of either side, the
     /// particles asleep at the window's end, and the awake particles summed over the
     /// window's ticks (the work a step costs scales with them). A pile that falls asleep
     /// costs far less in the later windows: they say which stage of the drop cost what.
