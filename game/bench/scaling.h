@@ -60,9 +60,8 @@ std::unique_ptr<phys::World> particlePile(long n);
 /// Debian build: a 0.1 m margin on every broad-phase box, 5 mm of linear slop, a 1 cm
 /// skin on edges), so for balls 0.1 m across it keeps a contact for each of some twenty
 /// neighbours whose boxes overlap, and its pile stands on a skin a tenth of a radius
-/// thick. Scaling every length
-/// (and gravity with it) gives the same motion in Box2D's own units at the size it is
-/// tuned for.
+/// thick. Scaling every length (and gravity with it) gives the same motion in Box2D's
+/// own units at the size it is tuned for.
 struct RigidPileSetup {
     double scale = 1.0;     ///< every length and gravity times this
     bool continuous = true; ///< Box2D's time of impact against the static box
@@ -85,10 +84,10 @@ struct PileComparison {
     double particleMs = 0, rigidMs = 0;
     double load = NAN; ///< 1-minute load average when measured
     /// The span's consecutive windows, windowTicks each, timed in turn (particles, Box2D,
-    /// the tuned Box2D) so a burst of other work hits all three: ms per step of either side, the
-    /// particles asleep at the window's end, and the awake particles summed over the
-    /// window's ticks (the work a step costs scales with them). A pile that falls asleep
-    /// costs far less in the later windows: they say which stage of the drop cost what.
+    /// the tuned Box2D) so a burst of other work hits all three: ms per step of each
+    /// side, the particles asleep at the window's end, and the awake particles summed
+    /// over the window's ticks (the work a step costs scales with them). A pile that falls
+    /// asleep costs far less in the later windows: they say which stage cost what.
     int windowTicks = 0;
     std::vector<double> particleWindowMs, rigidWindowMs;
     std::vector<int> asleepAfterWindow;
