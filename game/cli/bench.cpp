@@ -488,21 +488,24 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
     j["piles"] = json::array();
     for (const auto& p : report.piles) {
         if (!asJson) {
-            std::snprintf(
-                line, sizeof line,
-                "pile of %ld balls, ticks %d-%d: particles %.3g ms/step, Box2D "
-                "%.3g ms/step: particles %.2fx faster%s",
-                p.balls, p.firstTick(), p.lastTick(), p.particleMs, p.rigidMs, p.speedup(),
-                p.balls == 2000
-                    ? (p.speedup() >= 10 ? " (target >= 10x: met)" : " (target >= 10x: NOT met)")
-                    : "");
+            // The target is set at 2,000 balls; the bench judges both leads by it.
+            auto target = [&](double lead) {
+                return p.balls != 2000 ? "" : lead >= 10 ? " (target >= 10x: met)"
+                                                         : " (target >= 10x: NOT met)";
+            };
+            std::snprintf(line, sizeof line,
+                          "pile of %ld balls, ticks %d-%d: particles %.3g ms/step, Box2D "
+                          "%.3g ms/step: particles %.2fx faster%s",
+                          p.balls, p.firstTick(), p.lastTick(), p.particleMs, p.rigidMs,
+                          p.speedup(), target(p.speedup()));
             out << line << loadNote(p.load) << "\n";
             out << "  " << pileWindows(p) << "\n";
             std::snprintf(line, sizeof line,
                           "  against Box2D at the size it is tuned for (every length x%g, no "
-                          "time of impact): %.3g ms/step (windows %s): particles %.2fx faster",
+                          "time of impact): %.3g ms/step (windows %s): particles %.2fx faster%s",
                           kTunedBox2D.scale, p.tunedRigidMs,
-                          joined(p.tunedRigidWindowMs, "%.3g").c_str(), p.speedupOverTuned());
+                          joined(p.tunedRigidWindowMs, "%.3g").c_str(), p.speedupOverTuned(),
+                          target(p.speedupOverTuned()));
             out << line << "\n";
         }
         j["piles"].push_back({{"balls", p.balls},
