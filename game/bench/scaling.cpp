@@ -176,13 +176,25 @@ double pileWorkload(long n, int steps) {
     return seconds(t0);
 }
 
-double rigidPileWorkload(long n, int steps) {
-    auto w = rigidPile(n);
+namespace {
+
+double rigidPileSeconds(long n, int steps, RigidPileSetup setup) {
+    auto w = rigidPile(n, setup);
     const double tick = WorldDef{}.tickSeconds;
     for (int i = 0; i < kPileSettleTicks; ++i) w->step(tick);
     const auto t0 = Clock::now();
     for (int i = 0; i < steps; ++i) w->step(tick);
     return seconds(t0);
+}
+
+} // namespace
+
+double rigidPileWorkload(long n, int steps) {
+    return rigidPileSeconds(n, steps, {});
+}
+
+double tunedRigidPileWorkload(long n, int steps) {
+    return rigidPileSeconds(n, steps, kTunedBox2D);
 }
 
 PileComparison comparePiles(long balls, int windowTicks, int windows) {

@@ -49,8 +49,10 @@ double clothWorkload(long n, int steps);
 /// three static segments, in the particle layer with the default collision settings.
 /// The first `settleTicks` ticks (the balls falling and landing) are not timed.
 double pileWorkload(long n, int steps);
-/// The same pile as Box2D circles in a RigidWorld (same box, radius, restitution).
+/// The same pile as Box2D circles in a RigidWorld (same box, radius, restitution), as
+/// the game sets Box2D up, and at the size Box2D is tuned for (kTunedBox2D, below).
 double rigidPileWorkload(long n, int steps);
+double tunedRigidPileWorkload(long n, int steps);
 /// The two piles themselves, unsettled, for programs that step them on their own
 /// (bench/bench_pile.cpp counts their instructions under callgrind).
 std::unique_ptr<phys::World> particlePile(long n);

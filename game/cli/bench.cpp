@@ -426,6 +426,7 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
     add("cloth", clothWorkload, light);
     add("pile", pileWorkload, heavy);
     add("box2d", rigidPileWorkload, heavy);
+    add("box2d-tuned", tunedRigidPileWorkload, heavy);
     for (long balls : pileSizes) {
         std::fprintf(stderr, "pile of %ld balls, particles and Box2D side by side...\n", balls);
         report.piles.push_back(comparePiles(balls, pileSteps, 3));
@@ -467,15 +468,15 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
     if (!asJson) {
         out << "1-minute load average before the run" << loadNote(report.loadAtStart)
             << (underLoad ? "  (taken under load: --under-load)" : "") << "\n";
-        out << "workload   scaling exponent (1 = linear)   us/step at largest N\n";
+        out << "workload    scaling exponent (1 = linear)   us/step at largest N\n";
     }
-    for (const char* name : {"flight", "cloth", "pile", "box2d"}) {
+    for (const char* name : {"flight", "cloth", "pile", "box2d", "box2d-tuned"}) {
         std::vector<ScalingPoint> pts;
         for (const auto& p : report.points)
             if (p.workload == name) pts.push_back(p);
         const double e = scalingExponent(pts);
         if (!asJson) {
-            std::snprintf(line, sizeof line, "%-10s %10.2f over N = %ld..%ld %18.4g", name, e,
+            std::snprintf(line, sizeof line, "%-11s %10.2f over N = %ld..%ld %18.4g", name, e,
                           pts.front().items, pts.back().items, pts.back().usPerStep);
             out << line << loadNote(pts.back().load) << "\n";
         }

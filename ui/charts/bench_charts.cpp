@@ -24,6 +24,7 @@ Color workloadColor(const std::string& name) {
     if (name == "pile") return Color::hex(0xf0b429);
     if (name == "cloth") return Color::hex(0x57c46a);
     if (name == "box2d") return Color::hex(0xff6b6b);
+    if (name == "box2d-tuned") return Color::hex(0xc678dd);
     return Color::hex(0xb0b7c3);
 }
 
@@ -39,6 +40,7 @@ std::string workloadName(const std::string& name) {
     if (name == "pile") return "particle pile (contacts)";
     if (name == "cloth") return "cloth springs (8 sub-steps)";
     if (name == "box2d") return "Box2D circles pile";
+    if (name == "box2d-tuned") return "Box2D pile at its tuned size";
     return name;
 }
 
@@ -241,7 +243,8 @@ std::vector<Chart> scalingCharts(const game::bench::ScalingReport& report) {
         ratios.bars.push_back({format("pile of %.0f: Box2D", balls), pile.rigidMs, NAN, rigid,
                                format("%.3g ms, the game's setup", pile.rigidMs)});
         ratios.bars.push_back({format("pile of %.0f: Box2D tuned", balls), pile.tunedRigidMs, NAN,
-                               rigid, format("%.3g ms, lengths x10, no TOI", pile.tunedRigidMs)});
+                               workloadColor("box2d-tuned"),
+                               format("%.3g ms, lengths x10, no TOI", pile.tunedRigidMs)});
     }
     for (const auto& f : report.flights) {
         if (f.n < 1000000) continue; // the 1M figures: out of cache, the memory's limit

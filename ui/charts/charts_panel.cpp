@@ -57,6 +57,8 @@ void measure(ChartsPanelState& s) {
         s.scaling.points.insert(s.scaling.points.end(), p.begin(), p.end());
         p = measureScaling("box2d", rigidPileWorkload, piles);
         s.scaling.points.insert(s.scaling.points.end(), p.begin(), p.end());
+        p = measureScaling("box2d-tuned", tunedRigidPileWorkload, piles);
+        s.scaling.points.insert(s.scaling.points.end(), p.begin(), p.end());
         s.scaling.pile = comparePiles(1000, 10, 1);
         s.scaling.clothMs = clothFrameMs(64, 5);
         break;
