@@ -198,8 +198,8 @@ double tunedRigidPileWorkload(long n, int steps) {
 }
 
 PileComparison comparePiles(long balls, int windowTicks, int windows) {
-    // Both piles are built and settled once, then step through the same span of the drop
-    // in windows, alternately. The windows are not repeats: the pile lands, settles and
+    // The three piles are built and settled once, then step through the same span of the
+    // drop in windows, in turn. The windows are not repeats: the pile lands, settles and
     // falls asleep across them, so each side's figure is its cost of the whole span, not
     // the median of its windows (which would time whichever stage fell in the middle).
     PileComparison r;
@@ -213,10 +213,17 @@ PileComparison comparePiles(long balls, int windowTicks, int windows) {
         rigid->step(tick);
         tuned->step(tick);
     }
+    // ms per step of one window of a Box2D pile.
+    auto rigidWindowMs = [&](RigidWorld& w) {
+        const auto t0 = Clock::now();
+        for (int i = 0; i < windowTicks; ++i)
+            w.step(tick);
+        return 1e3 * seconds(t0) / windowTicks;
+    };
     r.windowTicks = windowTicks;
     for (int k = 0; k < std::max(1, windows); ++k) {
         long awake = 0;
-        auto t0 = Clock::now();
+        const auto t0 = Clock::now();
         for (int i = 0; i < windowTicks; ++i) {
             particles->step();
             awake += balls - particles->collisionStats().sleeping;
@@ -224,14 +231,8 @@ PileComparison comparePiles(long balls, int windowTicks, int windows) {
         r.particleWindowMs.push_back(1e3 * seconds(t0) / windowTicks);
         r.asleepAfterWindow.push_back(particles->collisionStats().sleeping);
         r.awakeBallTicks.push_back(awake);
-        t0 = Clock::now();
-        for (int i = 0; i < windowTicks; ++i)
-            rigid->step(tick);
-        r.rigidWindowMs.push_back(1e3 * seconds(t0) / windowTicks);
-        t0 = Clock::now();
-        for (int i = 0; i < windowTicks; ++i)
-            tuned->step(tick);
-        r.tunedRigidWindowMs.push_back(1e3 * seconds(t0) / windowTicks);
+        r.rigidWindowMs.push_back(rigidWindowMs(*rigid));
+        r.tunedRigidWindowMs.push_back(rigidWindowMs(*tuned));
     }
     r.particleMs = mean(r.particleWindowMs);
     r.rigidMs = mean(r.rigidWindowMs);

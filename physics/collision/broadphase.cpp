@@ -235,12 +235,14 @@ void StaticShapeIndex::update(const StaticShapes& shapes) {
         }
         cellsOf(boxes_[i], [&](std::size_t c) { ++count[c + 1]; });
     }
-    for (std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
+    for (std::size_t c = 1; c < count.size(); ++c)
+        count[c] += count[c - 1];
     cellStart_ = count;
     items_.resize(count.back());
     for (std::size_t i = 0; i < count_; ++i) {
         if (cellCount(boxes_[i]) > UniformGrid::kMaxCellsPerBox) continue;
-        cellsOf(boxes_[i], [&](std::size_t c) { items_[count[c]++] = static_cast<std::uint32_t>(i); });
+        cellsOf(boxes_[i],
+                [&](std::size_t c) { items_[count[c]++] = static_cast<std::uint32_t>(i); });
     }
 }
 
@@ -249,10 +251,14 @@ void StaticShapeIndex::query(const Aabb& box, std::vector<std::uint32_t>& out) c
     for (const std::uint32_t s : oversize_)
         if (boxes_[s].overlaps(box)) out.push_back(s);
     if (nx_ > 0) {
-        const std::int64_t x0 = static_cast<std::int64_t>(std::floor((box.lo.x - origin_.x) / cell_));
-        const std::int64_t x1 = static_cast<std::int64_t>(std::floor((box.hi.x - origin_.x) / cell_));
-        const std::int64_t y0 = static_cast<std::int64_t>(std::floor((box.lo.y - origin_.y) / cell_));
-        const std::int64_t y1 = static_cast<std::int64_t>(std::floor((box.hi.y - origin_.y) / cell_));
+        const std::int64_t x0 =
+            static_cast<std::int64_t>(std::floor((box.lo.x - origin_.x) / cell_));
+        const std::int64_t x1 =
+            static_cast<std::int64_t>(std::floor((box.hi.x - origin_.x) / cell_));
+        const std::int64_t y0 =
+            static_cast<std::int64_t>(std::floor((box.lo.y - origin_.y) / cell_));
+        const std::int64_t y1 =
+            static_cast<std::int64_t>(std::floor((box.hi.y - origin_.y) / cell_));
         for (std::int64_t y = std::max<std::int64_t>(0, y0); y <= std::min(ny_ - 1, y1); ++y)
             for (std::int64_t x = std::max<std::int64_t>(0, x0); x <= std::min(nx_ - 1, x1); ++x) {
                 const std::size_t c = static_cast<std::size_t>(y * nx_ + x);
