@@ -27,6 +27,14 @@ std::int64_t cellOf(double x, double inv) {
     const double c = std::floor(x * inv);
     return static_cast<std::int64_t>(std::clamp(c, -1e15, 1e15));
 }
+// More than `most` cells in the range x0..x1, y0..y1; in doubles, as a box that reached
+// far out spans up to 2e15 cells a side, whose product would overflow.
+bool coversMoreThan(std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int64_t y1,
+                    std::int64_t most) {
+    const double cells = (static_cast<double>(x1) - static_cast<double>(x0) + 1.0) *
+                         (static_cast<double>(y1) - static_cast<double>(y0) + 1.0);
+    return !(cells <= static_cast<double>(most));
+}
 // Bucket of a cell: two large odd multipliers, then the high half folded onto the low
 // half (the low bits of a product depend on the low bits of the factors only).
 std::uint64_t cellHash(std::int64_t cx, std::int64_t cy) {
@@ -61,7 +69,7 @@ void UniformGrid::findPairs(std::span<const Aabb> boxes, std::span<const ProxyKi
         if (kinds[i] == ProxyKind::None) continue;
         const CellRange r{cellOf(boxes[i].lo.x, inv), cellOf(boxes[i].lo.y, inv),
                           cellOf(boxes[i].hi.x, inv), cellOf(boxes[i].hi.y, inv)};
-        if ((r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) > kMaxCellsPerBox) {
+        if (coversMoreThan(r.x0, r.y0, r.x1, r.y1, kMaxCellsPerBox)) {
             oversize_.push_back(i);
             continue;
         }
@@ -183,6 +191,86 @@ void SortAndSweep::findPairs(std::span<const Aabb> boxes, std::span<const ProxyK
         active_.push_back(i);
     }
     std::sort(out.begin(), out.end());
+}
+
+void BoxQueryGrid::build(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds) {
+    const auto n = static_cast<std::uint32_t>(boxes.size());
+    double sum = 0.0;
+    int count = 0;
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (kinds[i] != ProxyKind::None) {
+            sum += (boxes[i].hi.x - boxes[i].lo.x) + (boxes[i].hi.y - boxes[i].lo.y);
+            ++count;
+        }
+    const double cell = count > 0 && sum > 0.0 ? sum / (2.0 * count) : 1.0;
+    inv_ = 1.0 / cell;
+    entries_.clear();
+    oversize_.clear();
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (kinds[i] == ProxyKind::None) continue;
+        const std::int64_t x0 = cellOf(boxes[i].lo.x, inv_), y0 = cellOf(boxes[i].lo.y, inv_),
+                           x1 = cellOf(boxes[i].hi.x, inv_), y1 = cellOf(boxes[i].hi.y, inv_);
+        if (coversMoreThan(x0, y0, x1, y1, UniformGrid::kMaxCellsPerBox)) {
+            oversize_.push_back(i);
+            continue;
+        }
+        for (std::int64_t cx = x0; cx <= x1; ++cx)
+            for (std::int64_t cy = y0; cy <= y1; ++cy)
+                entries_.push_back({cx, cy, i});
+    }
+    const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(2 * entries_.size(), 16));
+    bucketStart_.assign(buckets + 1, 0);
+    bucketOf_.resize(entries_.size());
+    for (std::size_t k = 0; k < entries_.size(); ++k) {
+        bucketOf_[k] =
+            static_cast<std::uint32_t>(cellHash(entries_[k].cx, entries_[k].cy) & (buckets - 1));
+        ++bucketStart_[bucketOf_[k] + 1];
+    }
+    for (std::size_t b = 0; b < buckets; ++b)
+        bucketStart_[b + 1] += bucketStart_[b];
+    sorted_.resize(entries_.size());
+    for (std::size_t k = 0; k < entries_.size(); ++k)
+        sorted_[bucketStart_[bucketOf_[k]]++] = entries_[k];
+    // bucketStart_[b] now holds the end of bucket b, which is where bucket b + 1 starts.
+    movedMark_.assign(n, 0);
+    moved_.clear();
+    listed_.assign(n, 0);
+    queries_ = 0;
+}
+
+void BoxQueryGrid::moved(std::uint32_t i) {
+    if (movedMark_[i]) return;
+    movedMark_[i] = 1;
+    moved_.push_back(i);
+}
+
+bool BoxQueryGrid::query(const Aabb& box, std::vector<std::uint32_t>& out) {
+    const std::int64_t x0 = cellOf(box.lo.x, inv_), y0 = cellOf(box.lo.y, inv_),
+                       x1 = cellOf(box.hi.x, inv_), y1 = cellOf(box.hi.y, inv_);
+    if (bucketStart_.empty() || coversMoreThan(x0, y0, x1, y1, kMaxQueryCells)) return false;
+    if (++queries_ == 0) { // the marks wrapped: clear them
+        std::fill(listed_.begin(), listed_.end(), 0u);
+        queries_ = 1;
+    }
+    auto list = [&](std::uint32_t i) {
+        if (listed_[i] == queries_) return;
+        listed_[i] = queries_;
+        out.push_back(i);
+    };
+    const std::uint64_t mask = bucketStart_.size() - 2;
+    for (std::int64_t cx = x0; cx <= x1; ++cx)
+        for (std::int64_t cy = y0; cy <= y1; ++cy) {
+            const std::size_t b = cellHash(cx, cy) & mask;
+            for (std::uint32_t k = b == 0 ? 0 : bucketStart_[b - 1]; k < bucketStart_[b]; ++k) {
+                const Entry& e = sorted_[k];
+                if (e.cx == cx && e.cy == cy && !movedMark_[e.box]) list(e.box);
+            }
+        }
+    for (const std::uint32_t i : oversize_)
+        if (!movedMark_[i]) list(i);
+    for (const std::uint32_t i : moved_)
+        list(i);
+    return true;
 }
 
 void StaticShapeIndex::update(const StaticShapes& shapes) {

@@ -70,6 +70,40 @@ class UniformGrid {
     std::vector<std::uint32_t> partners_; ///< one proxy's partners, before sorting
 };
 
+/// Which of many boxes may overlap one box: the boxes entered in a uniform grid (cells
+/// hashed into buckets by a counting sort, as in UniformGrid), for the broad phase's kept
+/// pairs, where a few proxies that escaped their fat boxes need their partners among
+/// thousands: a query costs the boxes near it, not a test of every box. A box may change
+/// after the build; it is then set aside (moved) and every query lists it, until the
+/// next build.
+class BoxQueryGrid {
+  public:
+    /// Enters boxes[i] for every i whose kind is not None, in cells of about the mean box
+    /// size; forgets what moved.
+    void build(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds);
+    /// Box i (or its kind) changed since the build.
+    void moved(std::uint32_t i);
+    std::size_t movedCount() const { return moved_.size(); }
+    /// Appends to `out` each box that may overlap `box`, once: those of the build that
+    /// share a cell with it (moved ones aside) and every moved one; the caller tests them.
+    /// False, with `out` unchanged, when `box` covers more than kMaxQueryCells cells:
+    /// testing every box is then as cheap.
+    bool query(const Aabb& box, std::vector<std::uint32_t>& out);
+    static constexpr std::int64_t kMaxQueryCells = 256;
+
+  private:
+    struct Entry {
+        std::int64_t cx, cy;
+        std::uint32_t box;
+    };
+    double inv_ = 1.0; ///< 1 / cell size
+    std::vector<Entry> entries_, sorted_;
+    std::vector<std::uint32_t> bucketOf_, bucketStart_, oversize_, moved_;
+    std::vector<std::uint8_t> movedMark_;
+    std::vector<std::uint32_t> listed_; ///< per box: the query that last listed it
+    std::uint32_t queries_ = 0;
+};
+
 /// The static shapes in a grid of their own, built once per StaticShapes::version():
 /// shapes never move, so only the moving particles' boxes are looked up each pass,
 /// instead of entering hundreds of terrain segments into the broad phase every pass.

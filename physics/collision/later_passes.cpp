@@ -109,15 +109,24 @@ bool ParticleCollisions::overlapping(std::uint32_t i, std::uint32_t j) const {
     return pairable(kinds_[i], kinds_[j]) & boxes_[i].overlapsBranchless(boxes_[j]);
 }
 
-// As patchPairCache tests an escaped proxy, by the exact box: k n tests for k strays,
-// branchless (which proxies overlap is as good as random).
+// As patchPairCache tests an escaped proxy, by the exact box, branchless (which proxies
+// overlap is as good as random). Every other proxy that is not a stray has its exact box
+// inside its fat box, so its pair with i is among the fat boxes near i's box; the other
+// strays are tested as well (a pair found twice is kept once by detectChanges).
 void ParticleCollisions::pairsOfStray(std::uint32_t i) {
     const auto n = static_cast<std::uint32_t>(boxes_.size());
     std::size_t found = pairs_.size();
-    pairs_.resize(found + n);
-    for (std::uint32_t c = 0; c < n; ++c) {
+    auto test = [&](std::uint32_t c) {
         pairs_[found] = c < i ? ProxyPair{c, i} : ProxyPair{i, c};
         found += (c != i) & overlapping(i, c);
+    };
+    if (nearFatBoxes(boxes_[i])) {
+        pairs_.resize(found + near_.size() + strays_.size());
+        for (const std::uint32_t c : near_) test(c);
+        for (const std::uint32_t c : strays_) test(c);
+    } else {
+        pairs_.resize(found + n);
+        for (std::uint32_t c = 0; c < n; ++c) test(c);
     }
     pairs_.resize(found);
     if (kinds_[i] != ProxyKind::Moving) return; // a shape pairs only with a moving particle

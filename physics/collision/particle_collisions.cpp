@@ -175,16 +175,25 @@ void ParticleCollisions::buildPairCache(const ParticleSet& set, const CollisionD
     cachedShapes_ = staticIndex_.version();
     cachedBroadPhase_ = def.broadPhase;
     cachedCellSize_ = def.gridCellSize;
+    fatGridStale_ = true;
     ++stats_.broadPhases;
 }
 
+bool ParticleCollisions::nearFatBoxes(const Aabb& box) {
+    if (fatGridStale_ || fatGrid_.movedCount() > kMostMovedInGrid) {
+        fatGrid_.build(fatBoxes_, fatKinds_);
+        fatGridStale_ = false;
+    }
+    near_.clear();
+    return fatGrid_.query(box, near_);
+}
+
 // The cache mended where proxies escaped it: each escaped proxy gets a new fat box and
-// kind, loses its kept pairs, and is tested against every proxy's fat box (and looked up
-// in the static index) for new ones. For k escaped proxies of n that is k n box tests,
-// against a rebuild's grid of all n (thousands of instructions a proxy): a ball
-// bouncing out of its box in a resting heap no longer rebuilds the heap's pairs. The
-// cache stays a superset of the overlapping pairs, sorted, so the pairs a pass keeps,
-// and the bits, are those a rebuild would give.
+// kind, loses its kept pairs, and is tested against the fat boxes near it (fatGrid_, or
+// every proxy's if its box is too big for the grid) and looked up in the static index
+// for new ones: a ball bouncing out of its box in a resting heap no longer rebuilds the
+// heap's pairs, nor tests all of them. The cache stays a superset of the overlapping
+// pairs, sorted, so the pairs a pass keeps, and the bits, are those a rebuild would give.
 void ParticleCollisions::patchPairCache(const ParticleSet& set, double h) {
     const auto n = static_cast<std::uint32_t>(boxes_.size());
     growTo(escapedMark_, n);
@@ -192,6 +201,7 @@ void ParticleCollisions::patchPairCache(const ParticleSet& set, double h) {
         fatBoxes_[e] = fatBox(set, e, h);
         fatKinds_[e] = kinds_[e];
         escapedMark_[e] = 1;
+        if (!fatGridStale_) fatGrid_.moved(e);
     }
     auto escaped = [&](const ProxyPair& p) {
         return escapedMark_[p.first] != 0 || (p.second < n && escapedMark_[p.second] != 0);
@@ -204,16 +214,20 @@ void ParticleCollisions::patchPairCache(const ParticleSet& set, double h) {
         if (ke == ProxyKind::None) continue;
         const Aabb& box = fatBoxes_[e];
         // Branchless: which proxies overlap is as good as random.
-        std::size_t found = fresh_.size();
-        fresh_.resize(found + n);
-        for (std::uint32_t c = 0; c < n; ++c) {
-            const ProxyKind kc = fatKinds_[c];
-            const Aabb& o = fatBoxes_[c];
-            unsigned hit = (c != e) & pairable(ke, kc);
+        auto test = [&](std::uint32_t c, std::size_t& found) {
+            unsigned hit = (c != e) & pairable(ke, fatKinds_[c]);
             hit &= !(escapedMark_[c] != 0 && c < e); // a pair of two escaped ones: once
-            hit &= box.overlapsBranchless(o);
+            hit &= box.overlapsBranchless(fatBoxes_[c]);
             fresh_[found] = c < e ? ProxyPair{c, e} : ProxyPair{e, c};
             found += hit;
+        };
+        std::size_t found = fresh_.size();
+        if (nearFatBoxes(box)) {
+            fresh_.resize(found + near_.size());
+            for (const std::uint32_t c : near_) test(c, found);
+        } else {
+            fresh_.resize(found + n);
+            for (std::uint32_t c = 0; c < n; ++c) test(c, found);
         }
         fresh_.resize(found);
         if (ke == ProxyKind::Moving) {

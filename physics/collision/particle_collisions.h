@@ -206,6 +206,14 @@ class ParticleCollisions {
     std::vector<std::uint32_t> escaped_;
     std::vector<std::uint8_t> escapedMark_;
     std::vector<ProxyPair> fresh_, mergedPairs_; ///< the escaped proxies' new pairs; scratch
+    // The fat boxes in a grid, for the partners of an escaped proxy or a stray: built
+    // when first needed after the cache is rebuilt, and again when many have moved.
+    BoxQueryGrid fatGrid_;
+    bool fatGridStale_ = true;
+    static constexpr std::size_t kMostMovedInGrid = 128;
+    std::vector<std::uint32_t> near_; ///< a query's answer
+    /// The proxies whose fat boxes may overlap `box` (near_), or false: test them all.
+    bool nearFatBoxes(const Aabb& box);
     bool cacheValid_ = false;
     std::uint64_t cachedShapes_ = 0;
     BroadPhase cachedBroadPhase_ = BroadPhase::Grid;

@@ -73,6 +73,75 @@ TEST(BroadPhase, GridAndSortAndSweepFindExactlyTheAllPairsPairs) {
     EXPECT_GT(total, 1000u); // the scenes do have overlaps to find
 }
 
+// The query grid lists every box that overlaps a query box (those of the build, and those
+// changed since, as moved), each once; or it refuses a box too big for it.
+TEST(BroadPhase, QueryGridListsEveryOverlappingBoxOnce) {
+    std::mt19937_64 rng(20261126);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    BoxQueryGrid grid; // reused across scenes, as the collisions reuse it
+    std::vector<std::uint32_t> listed;
+    std::size_t overlaps = 0;
+    for (int scene = 0; scene < 40; ++scene) {
+        const double w = scene % 2 ? 10.0 : 100.0;
+        Scene s = randomScene(rng, 1 + scene * 11, w);
+        if (scene % 3 == 0) // a floor too big for the grid's cells
+            s.boxes.push_back({{-1.0, 2.0}, {200.0, 2.5}}), s.kinds.push_back(ProxyKind::Resting);
+        grid.build(s.boxes, s.kinds);
+        // Some boxes move (or change kind) after the build; the grid is told.
+        const Scene built = s;
+        for (std::uint32_t i = 0; i < s.boxes.size(); ++i)
+            if (unit(rng) < 0.1) {
+                const Vec2 shift{20.0 * unit(rng) - 10.0, 20.0 * unit(rng) - 10.0};
+                s.boxes[i] = {s.boxes[i].lo + shift, s.boxes[i].hi + shift};
+                s.kinds[i] = unit(rng) < 0.5 ? ProxyKind::Moving : built.kinds[i];
+                grid.moved(i);
+            }
+        for (int q = 0; q < 30; ++q) {
+            const Aabb& box = s.boxes[static_cast<std::size_t>(q) % s.boxes.size()];
+            listed.clear();
+            if (!grid.query(box, listed)) continue; // (the floor)
+            std::vector<std::uint32_t> sorted = listed;
+            std::sort(sorted.begin(), sorted.end());
+            ASSERT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end())
+                << "scene " << scene << ": a box listed twice";
+            for (std::uint32_t i = 0; i < s.boxes.size(); ++i) {
+                if (s.kinds[i] == ProxyKind::None || !box.overlaps(s.boxes[i])) continue;
+                ++overlaps;
+                EXPECT_TRUE(std::binary_search(sorted.begin(), sorted.end(), i))
+                    << "scene " << scene << " query " << q << ": box " << i << " missed";
+            }
+        }
+        // A box over the whole field of a hundred boxes or more covers too many cells to
+        // look up.
+        if (scene < 10) continue;
+        listed.clear();
+        EXPECT_FALSE(grid.query({{-w, -w}, {2.0 * w, 2.0 * w}}, listed)) << "scene " << scene;
+        EXPECT_TRUE(listed.empty());
+    }
+    EXPECT_GT(overlaps, 2000u); // the queries do have boxes to find
+}
+
+// A box that reached far out (a particle an unstable integrator threw away) can span
+// 2^32 cells a side, or, clamped, 2e15: counted in 64-bit integers its cells wrap round
+// to 0. It is too big for either grid, not a loop over the cells it covers.
+TEST(BroadPhase, BoxesFarOutAreTooBigForTheGridsNotAHang) {
+    const double wrap = 4294967295.5; // unit cells 0 .. 2^32 - 1 a side: 2^64 in all
+    for (const Aabb far : {Aabb{{0.0, 0.0}, {wrap, wrap}}, Aabb{{-1e300, -1e300}, {1e300, 1e300}}}) {
+        const std::vector<Aabb> boxes{{{0.0, 0.0}, {1.0, 1.0}}, {{0.5, 0.5}, {1.5, 1.5}}, far};
+        const std::vector<ProxyKind> kinds(boxes.size(), ProxyKind::Moving);
+        std::vector<ProxyPair> pairs;
+        UniformGrid().findPairs(boxes, kinds, pairs, 1.0);
+        EXPECT_EQ(pairs, (std::vector<ProxyPair>{{0, 1}, {0, 2}, {1, 2}}));
+        // The query grid's cells are about the mean box (here 1 m), so it is built without
+        // the far box, which would make one cell of everything, and then asked about it.
+        BoxQueryGrid grid;
+        grid.build(std::span(boxes).first(2), std::span(kinds).first(2));
+        std::vector<std::uint32_t> listed;
+        EXPECT_FALSE(grid.query(far, listed));
+        EXPECT_TRUE(listed.empty());
+    }
+}
+
 // Two resting proxies never pair, and None is skipped; touching boxes do pair.
 TEST(BroadPhase, PairingRules) {
     const std::vector<Aabb> boxes{
