@@ -169,3 +169,37 @@ TEST(BenchCharts, WorkPrecisionDrawsOneChartPerSceneWithALinePerIntegrator) {
     // Blown-up runs are kept (drawn off the top) and the axis stops at 100 m.
     EXPECT_EQ(charts[1].y.max, 1e2);
 }
+
+// In a panel too narrow for three charts side by side (the in-game one is some 850 px
+// wide), the scaling view puts the line charts on top and the bars below, beside the
+// workloads' legend: the Box2D bar gets a real length, not the sliver of a third column
+// whose labels take its width.
+TEST(BenchCharts, ScalingInANarrowPanelGivesTheBarsTheLowerLeftAndTheLegendTheLowerRight) {
+    game::bench::ScalingReport report;
+    for (const char* w : {"flight", "pile", "box2d", "box2d-tuned"})
+        for (long n : {250L, 1000L, 4000L})
+            report.points.push_back({w, n, 0.4 * n, 400.0, 0.5});
+    report.pile.balls = 1000;
+    report.pile.particleMs = 0.3, report.pile.rigidMs = 1.5, report.pile.tunedRigidMs = 1.0;
+    report.clothMs = 0.6;
+    const int w = 845, h = 396;
+    std::string error;
+    const ui::Image img = renderChartImage(
+        w, h, [&](ui::Renderer2D& r, Rect a) { drawScaling(r, a, report); }, error);
+    ASSERT_EQ(error, "");
+    // The longest run of a colour along a row, within x0..x1 and the lower part (bars are
+    // drawn a little translucent, so within 40 of it).
+    auto longestRun = [&](Rgb c, int x0, int x1) {
+        int best = 0;
+        for (int y = static_cast<int>(0.56 * h); y < h; ++y)
+            for (int x = x0, run = 0; x < x1; ++x) {
+                run = near(at(img, {double(x), double(y)}), c, 40) ? run + 1 : 0;
+                best = std::max(best, run);
+            }
+        return best;
+    };
+    const Rgb box2d = rgb(Color::hex(0xff6b6b)), tuned = rgb(Color::hex(0xc678dd));
+    EXPECT_GT(longestRun(box2d, 0, w / 2), 60) << "the Box2D bar, lower left";
+    EXPECT_GT(longestRun(tuned, w / 2, w), 10) << "the legend's line, lower right";
+    EXPECT_LT(longestRun(tuned, w / 2, w), 60) << "and no bar there";
+}

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <span>
 
 namespace ui::charts {
 
@@ -302,7 +303,24 @@ void drawScaling(Renderer2D& r, Rect area, const game::bench::ScalingReport& rep
         title += format(" (taken under load %.2f)", report.loadAtStart);
     else if (report.underLoad)
         title += " (taken under load)";
-    drawChartGrid(r, charts, area, 3, {}, title);
+    // Side by side the three need about kRoomy pixels each: the bars' labels and notes
+    // alone take some 330. Narrower (the in-game panel), the two line charts share the
+    // top, and the bars share the bottom with the legend, which would cover most of a
+    // line chart that small.
+    constexpr double kRoomy = 380.0;
+    if (charts.size() < 3 || area.w >= 3.0 * kRoomy) {
+        drawChartGrid(r, charts, area, 3, {}, title);
+        return;
+    }
+    std::vector<Chart> lines(charts.begin(), charts.begin() + 2);
+    std::vector<Series> legend;
+    for (const Series& s : lines.front().series)
+        if (!s.name.empty()) legend.push_back(s); // (the dashed guides have none)
+    lines.front().legend = false;
+    const double top = std::round(0.56 * area.h);
+    drawChartGrid(r, lines, {area.x, area.y, area.w, top}, 2, {}, title);
+    drawChartGrid(r, std::span(charts).subspan(2), {area.x, area.y + top, area.w, area.h - top},
+                  2, legend, "", "workloads");
 }
 
 } // namespace ui::charts

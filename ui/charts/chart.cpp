@@ -414,7 +414,7 @@ void drawLegend(Renderer2D& r, std::span<const Series> series, Rect area, const 
 
 void drawChartGrid(Renderer2D& r, std::span<const Chart> charts, Rect area, int columns,
                    std::span<const Series> legend, const std::string& heading,
-                   const ChartStyle& st) {
+                   const std::string& legendTitle, const ChartStyle& st) {
     Pen pen{r};
     pen.rect(area, st.background);
     double top = area.y;
@@ -438,7 +438,7 @@ void drawChartGrid(Renderer2D& r, std::span<const Chart> charts, Rect area, int 
             const double h = lineHeight(st) * (legend.size() + 1.3) + 14.0;
             const double w = widest + 60.0;
             drawLegend(r, legend, {cell.x + 0.5 * (cell.w - w), cell.y + 0.5 * (cell.h - h), w, h}, st,
-                       "integrators");
+                       legendTitle);
         }
     }
 }

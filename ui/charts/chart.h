@@ -120,9 +120,10 @@ void drawLegend(Renderer2D& r, std::span<const Series> series, Rect area,
                 const ChartStyle& style = {}, const std::string& title = "");
 
 /// Several charts in a grid of `columns`, with an optional legend taking the next free
-/// cell (or none when `legend` is empty) and a heading above the grid.
+/// cell (or none when `legend` is empty), titled `legendTitle`, and a heading above the
+/// grid.
 void drawChartGrid(Renderer2D& r, std::span<const Chart> charts, Rect area, int columns,
                    std::span<const Series> legend = {}, const std::string& heading = "",
-                   const ChartStyle& style = {});
+                   const std::string& legendTitle = "integrators", const ChartStyle& style = {});
 
 } // namespace ui::charts

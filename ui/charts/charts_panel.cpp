@@ -76,6 +76,11 @@ void choose(ChartsPanelState& s) {
 ChartsPanelRequests chartsPanel(ChartsPanelState& s) {
     ChartsPanelRequests req;
     if (!s.open) return req;
+    const ImVec2 screen = ImGui::GetIO().DisplaySize;
+    const Rect charts = chartsArea(screen.x, screen.y);
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(charts.x),
+                                   static_cast<float>(charts.y + charts.h + 8.0)),
+                            ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Charts", &s.open)) {
         ImGui::End();

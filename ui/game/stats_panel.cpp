@@ -179,14 +179,14 @@ void StatsPanel::drawWorld(Renderer2D& r, const game::Match& match) {
         }
     }
     if (charts_.open) {
-        // The charts (left half) map pixels (chart.h), so they are drawn through a camera whose units
+        // The charts (chartsArea) map pixels (chart.h), so they are drawn through a camera whose units
         // are pixels; the match's labels are kept and the match's camera restored after.
         r.flush();
         const Camera world = r.camera();
         std::vector<Label> labels = r.labels();
         const double w = world.width, h = world.height;
         r.begin(Camera::framing({0.0, 0.0}, {w, h}, world.width, world.height));
-        charts::drawChartsPanel(r, charts_, {0.02 * w, 0.12 * h, 0.5 * w, 0.55 * h});
+        charts::drawChartsPanel(r, charts_, charts::chartsArea(w, h));
         r.flush();
         labels.insert(labels.end(), r.labels().begin(), r.labels().end());
         r.begin(world);
