@@ -338,9 +338,7 @@ void ParticleCollisions::orderCandidates() {
     order_.resize(candidates_.size());
     for (std::size_t k = 0; k < candidates_.size(); ++k)
         order_[k] = {candidates_[k].time, static_cast<std::uint32_t>(k)};
-    std::sort(order_.begin(), order_.end(), [](const TimeKey& x, const TimeKey& y) {
-        return x.time < y.time || (x.time == y.time && x.index < y.index);
-    });
+    orderByTime(order_, orderScratch_);
 }
 
 // Moves particle i's path start to time t (state velocity carried with its own rate).

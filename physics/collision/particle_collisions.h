@@ -43,6 +43,7 @@
 #include "physics/collision/collision_def.h"
 #include "physics/collision/narrowphase.h"
 #include "physics/collision/shapes.h"
+#include "physics/collision/time_order.h"
 #include "physics/materials.h"
 #include "physics/particles.h"
 
@@ -223,11 +224,8 @@ class ParticleCollisions {
     SortAndSweep sweep_;
     UniformGrid grid_;
     std::vector<Candidate> candidates_;
-    struct TimeKey {
-        double time;
-        std::uint32_t index; // into candidates_
-    };
     std::vector<TimeKey> order_;             ///< candidates in the order they are resolved
+    std::vector<TimeKey> orderScratch_;      ///< orderByTime's other buffer
     std::uint32_t pass_ = 0;                 ///< counts passes over the world's life
     std::vector<std::uint32_t> pathChanged_; ///< pass_ when a contact last changed the path
     std::vector<std::uint32_t> changed_;     ///< the particles whose paths this pass changed
