@@ -44,6 +44,29 @@ std::uint64_t cellHash(std::int64_t cx, std::int64_t cy) {
 }
 } // namespace
 
+void CellBuckets::bucket() {
+    const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(2 * entries_.size(), 16));
+    bucketStart_.assign(buckets + 1, 0);
+    bucketOf_.resize(entries_.size());
+    for (std::size_t k = 0; k < entries_.size(); ++k) {
+        bucketOf_[k] =
+            static_cast<std::uint32_t>(cellHash(entries_[k].cx, entries_[k].cy) & (buckets - 1));
+        ++bucketStart_[bucketOf_[k] + 1];
+    }
+    for (std::size_t b = 0; b < buckets; ++b)
+        bucketStart_[b + 1] += bucketStart_[b];
+    sorted_.resize(entries_.size());
+    for (std::size_t k = 0; k < entries_.size(); ++k)
+        sorted_[bucketStart_[bucketOf_[k]]++] = entries_[k];
+    // bucketStart_[b] now holds the end of bucket b, which is where bucket b + 1 starts.
+}
+
+std::span<const CellBuckets::Entry> CellBuckets::bucketOf(std::int64_t cx, std::int64_t cy) const {
+    const std::size_t b = cellHash(cx, cy) & (bucketStart_.size() - 2);
+    const std::uint32_t begin = b == 0 ? 0 : bucketStart_[b - 1];
+    return {sorted_.data() + begin, sorted_.data() + bucketStart_[b]};
+}
+
 void UniformGrid::findPairs(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds,
                             std::vector<ProxyPair>& out, double cellSize) {
     out.clear();
@@ -63,7 +86,7 @@ void UniformGrid::findPairs(std::span<const Aabb> boxes, std::span<const ProxyKi
     // Enter every box in the cells it covers (too big: aside).
     ranges_.resize(n);
     placed_.assign(n, 0);
-    entries_.clear();
+    cells_.clear();
     oversize_.clear();
     for (std::uint32_t i = 0; i < n; ++i) {
         if (kinds[i] == ProxyKind::None) continue;
@@ -77,24 +100,9 @@ void UniformGrid::findPairs(std::span<const Aabb> boxes, std::span<const ProxyKi
         placed_[i] = 1;
         for (std::int64_t cx = r.x0; cx <= r.x1; ++cx)
             for (std::int64_t cy = r.y0; cy <= r.y1; ++cy)
-                entries_.push_back({cx, cy, i});
+                cells_.add(cx, cy, i);
     }
-
-    // Counting sort of the entries by bucket (hash of the cell): O(entries).
-    const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(2 * entries_.size(), 16));
-    const std::uint64_t mask = buckets - 1;
-    bucketStart_.assign(buckets + 1, 0);
-    bucketOf_.resize(entries_.size());
-    for (std::size_t k = 0; k < entries_.size(); ++k) {
-        bucketOf_[k] = static_cast<std::uint32_t>(cellHash(entries_[k].cx, entries_[k].cy) & mask);
-        ++bucketStart_[bucketOf_[k] + 1];
-    }
-    for (std::size_t b = 0; b < buckets; ++b)
-        bucketStart_[b + 1] += bucketStart_[b];
-    sorted_.resize(entries_.size());
-    for (std::size_t k = 0; k < entries_.size(); ++k)
-        sorted_[bucketStart_[bucketOf_[k]]++] = entries_[k];
-    // bucketStart_[b] now holds the end of bucket b, which is where bucket b + 1 starts.
+    cells_.bucket();
 
     // Each box gathers its partners of higher index from the cells it covers (and among
     // the oversized boxes); sorted, they extend the sorted output. A pair sharing several
@@ -113,12 +121,9 @@ void UniformGrid::findPairs(std::span<const Aabb> boxes, std::span<const ProxyKi
             const Aabb& box = boxes[i];
             const bool moving = kinds[i] == ProxyKind::Moving;
             for (std::int64_t cx = r.x0; cx <= r.x1; ++cx)
-                for (std::int64_t cy = r.y0; cy <= r.y1; ++cy) {
-                    const std::size_t b = cellHash(cx, cy) & mask;
-                    const std::uint32_t end = bucketStart_[b];
-                    for (std::uint32_t k = b == 0 ? 0 : bucketStart_[b - 1]; k < end; ++k) {
-                        const Entry& e = sorted_[k];
-                        const std::uint32_t c = e.proxy;
+                for (std::int64_t cy = r.y0; cy <= r.y1; ++cy)
+                    for (const CellBuckets::Entry& e : cells_.bucketOf(cx, cy)) {
+                        const std::uint32_t c = e.id;
                         const CellRange& rc = ranges_[c];
                         const Aabb& o = boxes[c];
                         const std::int64_t lowX = std::max(r.x0, rc.x0),
@@ -131,7 +136,6 @@ void UniformGrid::findPairs(std::span<const Aabb> boxes, std::span<const ProxyKi
                         partners_[found] = c;
                         found += hit;
                     }
-                }
             for (const std::uint32_t c : oversize_)
                 if (c > i) meet(c);
         } else { // oversized: against every box after it
@@ -204,7 +208,7 @@ void BoxQueryGrid::build(std::span<const Aabb> boxes, std::span<const ProxyKind>
         }
     const double cell = count > 0 && sum > 0.0 ? sum / (2.0 * count) : 1.0;
     inv_ = 1.0 / cell;
-    entries_.clear();
+    cells_.clear();
     oversize_.clear();
     for (std::uint32_t i = 0; i < n; ++i) {
         if (kinds[i] == ProxyKind::None) continue;
@@ -216,22 +220,9 @@ void BoxQueryGrid::build(std::span<const Aabb> boxes, std::span<const ProxyKind>
         }
         for (std::int64_t cx = x0; cx <= x1; ++cx)
             for (std::int64_t cy = y0; cy <= y1; ++cy)
-                entries_.push_back({cx, cy, i});
+                cells_.add(cx, cy, i);
     }
-    const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(2 * entries_.size(), 16));
-    bucketStart_.assign(buckets + 1, 0);
-    bucketOf_.resize(entries_.size());
-    for (std::size_t k = 0; k < entries_.size(); ++k) {
-        bucketOf_[k] =
-            static_cast<std::uint32_t>(cellHash(entries_[k].cx, entries_[k].cy) & (buckets - 1));
-        ++bucketStart_[bucketOf_[k] + 1];
-    }
-    for (std::size_t b = 0; b < buckets; ++b)
-        bucketStart_[b + 1] += bucketStart_[b];
-    sorted_.resize(entries_.size());
-    for (std::size_t k = 0; k < entries_.size(); ++k)
-        sorted_[bucketStart_[bucketOf_[k]]++] = entries_[k];
-    // bucketStart_[b] now holds the end of bucket b, which is where bucket b + 1 starts.
+    cells_.bucket();
     movedMark_.assign(n, 0);
     moved_.clear();
     listed_.assign(n, 0);
@@ -247,7 +238,7 @@ void BoxQueryGrid::moved(std::uint32_t i) {
 bool BoxQueryGrid::query(const Aabb& box, std::vector<std::uint32_t>& out) {
     const std::int64_t x0 = cellOf(box.lo.x, inv_), y0 = cellOf(box.lo.y, inv_),
                        x1 = cellOf(box.hi.x, inv_), y1 = cellOf(box.hi.y, inv_);
-    if (bucketStart_.empty() || coversMoreThan(x0, y0, x1, y1, kMaxQueryCells)) return false;
+    if (!cells_.bucketed() || coversMoreThan(x0, y0, x1, y1, kMaxQueryCells)) return false;
     if (++queries_ == 0) { // the marks wrapped: clear them
         std::fill(listed_.begin(), listed_.end(), 0u);
         queries_ = 1;
@@ -257,15 +248,10 @@ bool BoxQueryGrid::query(const Aabb& box, std::vector<std::uint32_t>& out) {
         listed_[i] = queries_;
         out.push_back(i);
     };
-    const std::uint64_t mask = bucketStart_.size() - 2;
     for (std::int64_t cx = x0; cx <= x1; ++cx)
-        for (std::int64_t cy = y0; cy <= y1; ++cy) {
-            const std::size_t b = cellHash(cx, cy) & mask;
-            for (std::uint32_t k = b == 0 ? 0 : bucketStart_[b - 1]; k < bucketStart_[b]; ++k) {
-                const Entry& e = sorted_[k];
-                if (e.cx == cx && e.cy == cy && !movedMark_[e.box]) list(e.box);
-            }
-        }
+        for (std::int64_t cy = y0; cy <= y1; ++cy)
+            for (const CellBuckets::Entry& e : cells_.bucketOf(cx, cy))
+                if (e.cx == cx && e.cy == cy && !movedMark_[e.id]) list(e.id);
     for (const std::uint32_t i : oversize_)
         if (!movedMark_[i]) list(i);
     for (const std::uint32_t i : moved_)

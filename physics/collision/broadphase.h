@@ -44,6 +44,29 @@ inline bool pairable(ProxyKind a, ProxyKind b) {
 void allPairs(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds,
               std::vector<ProxyPair>& out);
 
+/// A uniform grid's contents: entries (cell, id) bucketed by a hash of their cell, with
+/// a counting sort, into one flat array (O(entries), no per-cell containers).
+class CellBuckets {
+  public:
+    struct Entry {
+        std::int64_t cx, cy;
+        std::uint32_t id;
+    };
+    void clear() { entries_.clear(); }
+    void add(std::int64_t cx, std::int64_t cy, std::uint32_t id) { entries_.push_back({cx, cy, id}); }
+    /// Sorts what was added into its buckets: call after the adds, before the lookups.
+    void bucket();
+    bool bucketed() const { return !bucketStart_.empty(); }
+    /// The entries in the bucket of cell (cx, cy): that cell's, and those of any cells
+    /// that share its bucket (an entry's cx, cy say which).
+    std::span<const Entry> bucketOf(std::int64_t cx, std::int64_t cy) const;
+
+  private:
+    std::vector<Entry> entries_, sorted_;
+    std::vector<std::uint32_t> bucketOf_;    ///< per entry
+    std::vector<std::uint32_t> bucketStart_; ///< counting sort offsets, buckets + 1
+};
+
 class UniformGrid {
   public:
     /// The overlapping pairs, sorted; `out` is cleared first. cellSize (m) <= 0 picks
@@ -54,18 +77,12 @@ class UniformGrid {
     static constexpr int kMaxCellsPerBox = 64;
 
   private:
-    struct Entry {
-        std::int64_t cx, cy;
-        std::uint32_t proxy;
-    };
     struct CellRange {
         std::int64_t x0, y0, x1, y1;
     };
-    std::vector<CellRange> ranges_;          ///< per proxy: the cells its box covers
-    std::vector<std::uint8_t> placed_;       ///< per proxy: entered in the grid
-    std::vector<Entry> entries_, sorted_;    ///< (cell, proxy), then bucketed by cell
-    std::vector<std::uint32_t> bucketOf_;    ///< per entry
-    std::vector<std::uint32_t> bucketStart_; ///< counting sort offsets, buckets + 1
+    std::vector<CellRange> ranges_;    ///< per proxy: the cells its box covers
+    std::vector<std::uint8_t> placed_; ///< per proxy: entered in the grid
+    CellBuckets cells_;                ///< (cell, proxy)
     std::vector<std::uint32_t> oversize_;
     std::vector<std::uint32_t> partners_; ///< one proxy's partners, before sorting
 };
@@ -92,13 +109,9 @@ class BoxQueryGrid {
     static constexpr std::int64_t kMaxQueryCells = 256;
 
   private:
-    struct Entry {
-        std::int64_t cx, cy;
-        std::uint32_t box;
-    };
-    double inv_ = 1.0; ///< 1 / cell size
-    std::vector<Entry> entries_, sorted_;
-    std::vector<std::uint32_t> bucketOf_, bucketStart_, oversize_, moved_;
+    double inv_ = 1.0;  ///< 1 / cell size
+    CellBuckets cells_; ///< (cell, box)
+    std::vector<std::uint32_t> oversize_, moved_;
     std::vector<std::uint8_t> movedMark_;
     std::vector<std::uint32_t> listed_; ///< per box: the query that last listed it
     std::uint32_t queries_ = 0;
