@@ -53,7 +53,9 @@ class CellBuckets {
         std::uint32_t id;
     };
     void clear() { entries_.clear(); }
-    void add(std::int64_t cx, std::int64_t cy, std::uint32_t id) { entries_.push_back({cx, cy, id}); }
+    void add(std::int64_t cx, std::int64_t cy, std::uint32_t id) {
+        entries_.push_back({cx, cy, id});
+    }
     /// Sorts what was added into its buckets: call after the adds, before the lookups.
     void bucket();
     bool bucketed() const { return !bucketStart_.empty(); }

@@ -122,11 +122,14 @@ void ParticleCollisions::pairsOfStray(std::uint32_t i) {
     };
     if (nearFatBoxes(boxes_[i])) {
         pairs_.resize(found + near_.size() + strays_.size());
-        for (const std::uint32_t c : near_) test(c);
-        for (const std::uint32_t c : strays_) test(c);
+        for (const std::uint32_t c : near_)
+            test(c);
+        for (const std::uint32_t c : strays_)
+            test(c);
     } else {
         pairs_.resize(found + n);
-        for (std::uint32_t c = 0; c < n; ++c) test(c);
+        for (std::uint32_t c = 0; c < n; ++c)
+            test(c);
     }
     pairs_.resize(found);
     if (kinds_[i] != ProxyKind::Moving) return; // a shape pairs only with a moving particle

@@ -224,10 +224,12 @@ void ParticleCollisions::patchPairCache(const ParticleSet& set, double h) {
         std::size_t found = fresh_.size();
         if (nearFatBoxes(box)) {
             fresh_.resize(found + near_.size());
-            for (const std::uint32_t c : near_) test(c, found);
+            for (const std::uint32_t c : near_)
+                test(c, found);
         } else {
             fresh_.resize(found + n);
-            for (std::uint32_t c = 0; c < n; ++c) test(c, found);
+            for (std::uint32_t c = 0; c < n; ++c)
+                test(c, found);
         }
         fresh_.resize(found);
         if (ke == ProxyKind::Moving) {

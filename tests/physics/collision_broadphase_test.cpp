@@ -126,7 +126,8 @@ TEST(BroadPhase, QueryGridListsEveryOverlappingBoxOnce) {
 // to 0. It is too big for either grid, not a loop over the cells it covers.
 TEST(BroadPhase, BoxesFarOutAreTooBigForTheGridsNotAHang) {
     const double wrap = 4294967295.5; // unit cells 0 .. 2^32 - 1 a side: 2^64 in all
-    for (const Aabb far : {Aabb{{0.0, 0.0}, {wrap, wrap}}, Aabb{{-1e300, -1e300}, {1e300, 1e300}}}) {
+    for (const Aabb far :
+         {Aabb{{0.0, 0.0}, {wrap, wrap}}, Aabb{{-1e300, -1e300}, {1e300, 1e300}}}) {
         const std::vector<Aabb> boxes{{{0.0, 0.0}, {1.0, 1.0}}, {{0.5, 0.5}, {1.5, 1.5}}, far};
         const std::vector<ProxyKind> kinds(boxes.size(), ProxyKind::Moving);
         std::vector<ProxyPair> pairs;

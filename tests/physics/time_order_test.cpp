@@ -37,9 +37,9 @@ TEST(TimeOrder, TheRadixSortGivesTheComparisonSortsOrder) {
             for (std::uint32_t i = 0; i < n; ++i) {
                 double t = within(rng);
                 const double u = unit(rng);
-                if (kind >= 1 && u < 0.3) t = 0.0;             // resting pairs touch at 0
+                if (kind >= 1 && u < 0.3) t = 0.0; // resting pairs touch at 0
                 if (kind >= 1 && u >= 0.3 && u < 0.35) t = -0.0;
-                if (kind >= 2 && u >= 0.35 && u < 0.6) t = h;   // and at the step's end
+                if (kind >= 2 && u >= 0.35 && u < 0.6) t = h;         // and at the step's end
                 if (kind == 3 && u >= 0.6 && u < 0.7) t = -1e-12 * u; // rounding below 0
                 if (kind == 3 && u >= 0.7) t = 0.5 * h + 1e-15 * std::floor(10 * u);
                 keys.push_back({t, i});

@@ -44,7 +44,9 @@ struct ChartsPanelRequests {
 
 /// Where the charts go on a screen of w x h pixels: below the level's heading, from the
 /// left edge to short of the target's view and the Stats panel on the right.
-inline Rect chartsArea(double w, double h) { return {0.02 * w, 0.12 * h, 0.66 * w, 0.55 * h}; }
+inline Rect chartsArea(double w, double h) {
+    return {0.02 * w, 0.12 * h, 0.66 * w, 0.55 * h};
+}
 
 /// The ImGui controls window (at first just below chartsArea, not over it). Measures
 /// when asked (or when the shown view has no data).

@@ -179,8 +179,9 @@ void StatsPanel::drawWorld(Renderer2D& r, const game::Match& match) {
         }
     }
     if (charts_.open) {
-        // The charts (chartsArea) map pixels (chart.h), so they are drawn through a camera whose units
-        // are pixels; the match's labels are kept and the match's camera restored after.
+        // The charts (chartsArea) map pixels (chart.h), so they are drawn through a camera
+        // whose units are pixels; the match's labels are kept and the match's camera
+        // restored after.
         r.flush();
         const Camera world = r.camera();
         std::vector<Label> labels = r.labels();
