@@ -35,6 +35,19 @@ bool coversMoreThan(std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int6
                          (static_cast<double>(y1) - static_cast<double>(y0) + 1.0);
     return !(cells <= static_cast<double>(most));
 }
+// The mean of (width + height) / 2 over the boxes whose kind `counts` accepts, or 0 when
+// none of them has any extent: what the grids size their cells by.
+template <class Counts>
+double meanExtent(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds, Counts counts) {
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+        if (counts(kinds[i])) {
+            sum += (boxes[i].hi.x - boxes[i].lo.x) + (boxes[i].hi.y - boxes[i].lo.y);
+            ++count;
+        }
+    return count > 0 && sum > 0.0 ? sum / (2.0 * count) : 0.0;
+}
 // Bucket of a cell: two large odd multipliers, then the high half folded onto the low
 // half (the low bits of a product depend on the low bits of the factors only).
 std::uint64_t cellHash(std::int64_t cx, std::int64_t cy) {
@@ -72,14 +85,9 @@ void UniformGrid::findPairs(std::span<const Aabb> boxes, std::span<const ProxyKi
     out.clear();
     const auto n = static_cast<std::uint32_t>(boxes.size());
     if (!(cellSize > 0.0)) {
-        double sum = 0.0;
-        int count = 0;
-        for (std::uint32_t i = 0; i < n; ++i)
-            if (kinds[i] == ProxyKind::Moving) {
-                sum += (boxes[i].hi.x - boxes[i].lo.x) + (boxes[i].hi.y - boxes[i].lo.y);
-                ++count;
-            }
-        cellSize = count > 0 && sum > 0.0 ? 2.0 * sum / (2.0 * count) : 1.0;
+        const double extent =
+            meanExtent(boxes, kinds, [](ProxyKind k) { return k == ProxyKind::Moving; });
+        cellSize = extent > 0.0 ? 2.0 * extent : 1.0;
     }
     const double inv = 1.0 / cellSize;
 
@@ -199,15 +207,9 @@ void SortAndSweep::findPairs(std::span<const Aabb> boxes, std::span<const ProxyK
 
 void BoxQueryGrid::build(std::span<const Aabb> boxes, std::span<const ProxyKind> kinds) {
     const auto n = static_cast<std::uint32_t>(boxes.size());
-    double sum = 0.0;
-    int count = 0;
-    for (std::uint32_t i = 0; i < n; ++i)
-        if (kinds[i] != ProxyKind::None) {
-            sum += (boxes[i].hi.x - boxes[i].lo.x) + (boxes[i].hi.y - boxes[i].lo.y);
-            ++count;
-        }
-    const double cell = count > 0 && sum > 0.0 ? sum / (2.0 * count) : 1.0;
-    inv_ = 1.0 / cell;
+    const double extent =
+        meanExtent(boxes, kinds, [](ProxyKind k) { return k != ProxyKind::None; });
+    inv_ = 1.0 / (extent > 0.0 ? extent : 1.0);
     cells_.clear();
     oversize_.clear();
     for (std::uint32_t i = 0; i < n; ++i) {
