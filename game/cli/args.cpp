@@ -32,9 +32,12 @@ Args::Args(std::string verb, int argc, const char* const* argv, int first,
             continue;
         }
         if (!hasValue) {
-            // Last on the line with no value: an option that needs one, or an unknown
-            // flag; which it is shows when the verb asks for it (text() or rejectUnknown()).
-            if (i + 1 >= argc) {
+            // Last on the line, or followed by another option, with no value: an option
+            // that needs one, or an unknown flag; which it is shows when the verb asks for
+            // it (text() or rejectUnknown()). (No value starts with "--": a negative
+            // number has one dash, and --name=VALUE still takes anything.)
+            const std::string next = i + 1 < argc ? argv[i + 1] : "";
+            if (i + 1 >= argc || (next.rfind("--", 0) == 0 && next.size() > 2)) {
                 missingValue_.insert(name);
                 continue;
             }

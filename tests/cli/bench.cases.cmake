@@ -14,6 +14,11 @@ cli_test(bench_full_and_quick 2 "--full and --quick cannot be combined"
          "bench;stability;--full;--quick;--csv;${BENCH_OUT}/x.csv;--png;${BENCH_OUT}/x.png")
 cli_test(bench_unknown_option 2 "unknown option --scen"
          "bench;stability;--scen;spring;--csv;${BENCH_OUT}/x.csv;--png;${BENCH_OUT}/x.png")
+# An unknown option before another one does not take that one as its value.
+cli_test(bench_unknown_option_before_another 2 "unknown option --bogus"
+         "bench;scaling;--bogus;--csv;${BENCH_OUT}/x.csv;--png;${BENCH_OUT}/x.png")
+cli_test(bench_option_without_its_value 2 "--csv needs a value"
+         "bench;scaling;--csv;--png;${BENCH_OUT}/x.png")
 cli_test(bench_choose_missing_tolerance 2 "--tolerance is required" "bench;choose;--scene;spring")
 cli_test(bench_choose_bad_tolerance 2 "--tolerance expects a number" "bench;choose;--scene;spring;--tolerance;-1")
 # Good input: the figures are printed and the files written.
