@@ -168,6 +168,14 @@ int main(int argc, char** argv) {
         } else if (a == "--seconds" && more) {
             ok = realOption(kName, "--seconds", argv[++i], o.seconds, 1e-3, 1e6);
         } else {
+            // Here either an option that takes a value came last, or `a` is unknown.
+            const bool takesValue = a == "--balls" || a == "--skip" || a == "--ticks" ||
+                                    a == "--side" || a == "--heap" || a == "--drop" ||
+                                    a == "--seconds";
+            if (takesValue)
+                std::fprintf(stderr, "%s: %s needs a value\n", kName, a.c_str());
+            else
+                std::fprintf(stderr, "%s: unknown option '%s'\n", kName, a.c_str());
             ok = false;
         }
         if (!ok) {
