@@ -137,6 +137,7 @@ class ParticleCollisions {
     /// Particle i's box grown by a radius and a step of its path's motion.
     Aabb fatBox(const ParticleSet& set, std::size_t i, double h) const;
     void selectLivePairs();
+    void takeCachedPairsAsLive();
     void detect(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                 double h);
     /// A pair of the broad phase that meets within the step becomes a candidate.
