@@ -77,19 +77,28 @@ std::unique_ptr<phys::RigidWorld> rigidPile(long n, RigidPileSetup setup = {});
 /// in contact when the clock starts.
 inline constexpr int kPileSettleTicks = 60;
 
-/// The same pile of balls as particles and as Box2D circles, one run: each side's cost of
-/// the same span of the drop, ticks kPileSettleTicks + 1 on.
+/// The same pile of balls as particles and as Box2D circles: each side's cost of the same
+/// span of the drop, ticks kPileSettleTicks + 1 on, in its best of `runs` runs.
 struct PileComparison {
     long balls = 0;
     /// ms per step over the whole timed span (its windows' total over its ticks): the cost
-    /// of simulating those ticks of the drop.
+    /// of simulating those ticks of the drop, in the side's fastest run.
     double particleMs = 0, rigidMs = 0;
-    double load = NAN; ///< 1-minute load average when measured
+    double load = NAN; ///< the highest 1-minute load average at the end of a run
+    /// Each run's span cost per side, in run order. Each run builds the three piles anew
+    /// and steps the same ticks, bit for bit; its time is the work plus whatever else the
+    /// machine did meanwhile. Box2D as the game builds it keeps about twenty contacts a
+    /// ball, several megabytes, and on this virtual machine its runs spread by up to half
+    /// between runs (memory shared with the host; the guest's load does not show it), so
+    /// a side's figure is its fastest run, and the spread is printed beside it.
+    int runs = 0;
+    std::vector<double> particleRunMs, rigidRunMs, tunedRigidRunMs;
     /// The span's consecutive windows, windowTicks each, timed in turn (particles, Box2D,
     /// the tuned Box2D) so a burst of other work hits all three: ms per step of each
     /// side, the particles asleep at the window's end, and the awake particles summed
     /// over the window's ticks (the work a step costs scales with them). A pile that falls
-    /// asleep costs far less in the later windows: they say which stage cost what.
+    /// asleep costs far less in the later windows: they say which stage cost what. Each
+    /// side's windows are those of its fastest run.
     int windowTicks = 0;
     std::vector<double> particleWindowMs, rigidWindowMs;
     std::vector<int> asleepAfterWindow;
@@ -106,7 +115,8 @@ struct PileComparison {
         return kPileSettleTicks + windowTicks * static_cast<int>(particleWindowMs.size());
     }
 };
-PileComparison comparePiles(long balls = 2000, int windowTicks = 60, int windows = 3);
+PileComparison comparePiles(long balls = 2000, int windowTicks = 60, int windows = 3,
+                            int runs = 1);
 
 /// Which lead a pile is judged by: speedup() or speedupOverTuned().
 using PileLead = double (PileComparison::*)() const;

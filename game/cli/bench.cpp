@@ -31,8 +31,9 @@ its measurements as CSV and a chart as PNG (drawn headless by the game's rendere
 and prints its key figures. By default each finishes in under 30 s on 2 cores (scaling
 in about a minute);
 --full runs longer sweeps (finer dt, larger N, more repeats), --quick tiny ones (tests).
-Times are medians of repeats (a pile's: its cost over a span of its drop); the
-machine's load shows in them.
+Times are medians of repeats (a pile's: its cost over a span of its drop, the best
+of 3 runs, 5 with --full, with the slowest beside it); the machine's load shows in
+them.
 
 work-precision  for each integrator and dt = largest, /2, /4, ...: the error against the
                 scene's exact or reference solution and the CPU time per simulated
@@ -49,8 +50,8 @@ scaling         step cost against N: particles in flight, a particle pile with c
                 three windows, with the balls asleep after each and its awake
                 ball-ticks), against Box2D as the game builds it and at the size Box2D
                 is tuned for, and whether each lead grows with N; 10k and 1M particles
-                in flight (symplectic
-                Euler and velocity Verlet) against a vectorized reference kernel of the
+                in flight (symplectic Euler and velocity Verlet) against a vectorized
+                reference kernel of the
                 same arithmetic over the same arrays, with bytes per particle, GB/s and a
                 memcpy of as many bytes;
                 a 64x64 cloth frame (8 sub-steps); the slowest seek in every replay of
@@ -353,6 +354,20 @@ std::string pileWindows(const game::bench::PileComparison& p) {
 
 const char* verdict(bool met) { return met ? "met" : "NOT met"; }
 
+/// "best of 3 runs", or "one run".
+std::string runsNote(int runs) {
+    return runs > 1 ? "best of " + std::to_string(runs) + " runs" : "one run";
+}
+
+/// " (runs 4.62-6.71)": the slowest run beside the fastest, "" for one run.
+std::string runSpread(const std::vector<double>& runMs) {
+    if (runMs.size() < 2) return "";
+    const auto [fastest, slowest] = std::minmax_element(runMs.begin(), runMs.end());
+    char s[64];
+    std::snprintf(s, sizeof s, " (runs %.3g-%.3g)", *fastest, *slowest);
+    return s;
+}
+
 /// "lead over Box2D growing with N (14.0x, 11.7x, 19.6x at 1000, 2000, 4000 balls): NOT
 /// met from 1000 to 2000 balls", the lead being `lead` of each pile, over `over`.
 std::string leadGrowth(const std::vector<game::bench::PileComparison>& piles,
@@ -391,7 +406,7 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
 
     ScalingDef light, heavy;
     std::vector<long> pileSizes{1000, 2000, 4000}, flightSizes{10000, 1000000};
-    int pileSteps = 30, flightRepeats = 5, replayRepeats = 3;
+    int pileSteps = 30, pileRuns = 3, flightRepeats = 5, replayRepeats = 3;
     std::size_t replayLimit = SIZE_MAX;
     switch (size) {
     case Size::Quick:
@@ -399,7 +414,7 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
         light.steps = 3, light.repeats = 1;
         heavy = light;
         pileSizes = {200}, flightSizes = {2000, 20000};
-        pileSteps = 5, flightRepeats = 1, replayRepeats = 1, replayLimit = 1;
+        pileSteps = 5, pileRuns = 1, flightRepeats = 1, replayRepeats = 1, replayLimit = 1;
         break;
     case Size::Default:
         light.sizes = {1000, 3000, 10000, 30000, 100000};
@@ -415,7 +430,7 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
         heavy.sizes = {250, 500, 1000, 2000, 4000, 8000, 16000};
         heavy.steps = 20, heavy.repeats = 3;
         pileSizes = {1000, 2000, 4000, 8000};
-        flightRepeats = 9, replayRepeats = 5;
+        pileRuns = 5, flightRepeats = 9, replayRepeats = 5;
         break;
     }
     auto add = [&](const std::string& name, const Workload& w, const ScalingDef& d) {
@@ -429,7 +444,7 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
     add("box2d-tuned", tunedRigidPileWorkload, heavy);
     for (long balls : pileSizes) {
         std::fprintf(stderr, "pile of %ld balls, particles and Box2D side by side...\n", balls);
-        report.piles.push_back(comparePiles(balls, pileSteps, 3));
+        report.piles.push_back(comparePiles(balls, pileSteps, 3, pileRuns));
         if (balls == 2000 || pileSizes.size() == 1) report.pile = report.piles.back();
     }
     for (long n : flightSizes)
@@ -495,16 +510,18 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
                                                          : " (target >= 10x: NOT met)";
             };
             std::snprintf(line, sizeof line,
-                          "pile of %ld balls, ticks %d-%d: particles %.3g ms/step, Box2D "
-                          "%.3g ms/step: particles %.2fx faster%s",
-                          p.balls, p.firstTick(), p.lastTick(), p.particleMs, p.rigidMs,
-                          p.speedup(), target(p.speedup()));
+                          "pile of %ld balls, ticks %d-%d, %s: particles %.3g ms/step%s, "
+                          "Box2D %.3g ms/step%s: particles %.2fx faster%s",
+                          p.balls, p.firstTick(), p.lastTick(), runsNote(p.runs).c_str(),
+                          p.particleMs, runSpread(p.particleRunMs).c_str(), p.rigidMs,
+                          runSpread(p.rigidRunMs).c_str(), p.speedup(), target(p.speedup()));
             out << line << loadNote(p.load) << "\n";
             out << "  " << pileWindows(p) << "\n";
             std::snprintf(line, sizeof line,
                           "  against Box2D at the size it is tuned for (every length x%g, no "
-                          "time of impact): %.3g ms/step (windows %s): particles %.2fx faster%s",
-                          kTunedBox2D.scale, p.tunedRigidMs,
+                          "time of impact): %.3g ms/step%s (windows %s): particles %.2fx "
+                          "faster%s",
+                          kTunedBox2D.scale, p.tunedRigidMs, runSpread(p.tunedRigidRunMs).c_str(),
                           joined(p.tunedRigidWindowMs, "%.3g").c_str(), p.speedupOverTuned(),
                           target(p.speedupOverTuned()));
             out << line << "\n";
@@ -516,6 +533,10 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
                               {"box2d_tuned_ms", p.tunedRigidMs},
                               {"box2d_tuned_window_ms", p.tunedRigidWindowMs},
                               {"speedup_over_tuned", p.speedupOverTuned()},
+                              {"runs", p.runs},
+                              {"particle_run_ms", p.particleRunMs},
+                              {"box2d_run_ms", p.rigidRunMs},
+                              {"box2d_tuned_run_ms", p.tunedRigidRunMs},
                               {"window_ticks", p.windowTicks},
                               {"particle_window_ms", p.particleWindowMs},
                               {"box2d_window_ms", p.rigidWindowMs},

@@ -103,6 +103,29 @@ TEST(ScalingWorkloads, PileComparisonStepsBothPilesOfTheSameSize) {
     EXPECT_LT(r.awakeBallTicks.back(), 20 * 100 / 2);
 }
 
+// Runs of the comparison: each side's figure is its fastest run, with that run's windows
+// (so the figure is still the mean of the windows it prints), and every run's figure is
+// kept for the spread. The sleepers are the drop's, the same in every run.
+TEST(ScalingWorkloads, APileComparisonOfRunsKeepsEachSidesFastestRun) {
+    const PileComparison one = comparePiles(100, 10, 2);
+    EXPECT_EQ(one.runs, 1);
+    EXPECT_EQ(one.particleRunMs, std::vector<double>{one.particleMs});
+    const PileComparison r = comparePiles(100, 10, 2, 3);
+    EXPECT_EQ(r.runs, 3);
+    for (const auto* runs : {&r.particleRunMs, &r.rigidRunMs, &r.tunedRigidRunMs})
+        ASSERT_EQ(runs->size(), 3u);
+    EXPECT_EQ(r.particleMs, *std::min_element(r.particleRunMs.begin(), r.particleRunMs.end()));
+    EXPECT_EQ(r.rigidMs, *std::min_element(r.rigidRunMs.begin(), r.rigidRunMs.end()));
+    EXPECT_EQ(r.tunedRigidMs,
+              *std::min_element(r.tunedRigidRunMs.begin(), r.tunedRigidRunMs.end()));
+    auto mean = [](const std::vector<double>& v) { return (v[0] + v[1]) / 2.0; };
+    EXPECT_NEAR(r.particleMs, mean(r.particleWindowMs), 1e-12 * r.particleMs);
+    EXPECT_NEAR(r.rigidMs, mean(r.rigidWindowMs), 1e-12 * r.rigidMs);
+    EXPECT_NEAR(r.tunedRigidMs, mean(r.tunedRigidWindowMs), 1e-12 * r.tunedRigidMs);
+    EXPECT_EQ(r.asleepAfterWindow, one.asleepAfterWindow);
+    EXPECT_EQ(r.awakeBallTicks, one.awakeBallTicks);
+}
+
 // The tuned Box2D pile is the game's pile with every length (and gravity) ten times:
 // the same motion in Box2D's units. Before anything lands, every ball has fallen exactly
 // ten times as far, to float rounding; and without time of impact nothing leaves the box.
