@@ -227,7 +227,7 @@ std::vector<Chart> scalingCharts(const game::bench::ScalingReport& report) {
     }
     Chart ratios;
     ratios.kind = ChartKind::Bars;
-    ratios.title = "side by side, one run";
+    ratios.title = "side by side, in one process";
     ratios.subtitle = "ms per step (per frame for cloth); white tick: the target";
     ratios.referenceName = "target";
     ratios.x = {"milliseconds", Scale::Log};
