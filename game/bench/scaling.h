@@ -88,9 +88,9 @@ struct PileComparison {
     /// Each run's span cost per side, in run order. Each run builds the three piles anew
     /// and steps the same ticks, bit for bit; its time is the work plus whatever else the
     /// machine did meanwhile. Box2D as the game builds it keeps about twenty contacts a
-    /// ball, several megabytes, and on this virtual machine its runs spread by up to half
-    /// between runs (memory shared with the host; the guest's load does not show it), so
-    /// a side's figure is its fastest run, and the spread is printed beside it.
+    /// ball, several megabytes, and on the development machine (a virtual one) its runs
+    /// spread by up to half, within one process too, while the guest's load stays low;
+    /// so a side's figure is its fastest run, and the spread is printed beside it.
     int runs = 0;
     std::vector<double> particleRunMs, rigidRunMs, tunedRigidRunMs;
     /// The span's consecutive windows, windowTicks each, timed in turn (particles, Box2D,

@@ -51,9 +51,8 @@ scaling         step cost against N: particles in flight, a particle pile with c
                 ball-ticks), against Box2D as the game builds it and at the size Box2D
                 is tuned for, and whether each lead grows with N; 10k and 1M particles
                 in flight (symplectic Euler and velocity Verlet) against a vectorized
-                reference kernel of the
-                same arithmetic over the same arrays, with bytes per particle, GB/s and a
-                memcpy of as many bytes;
+                reference kernel of the same arithmetic over the same arrays, with
+                bytes per particle, GB/s and a memcpy of as many bytes;
                 a 64x64 cloth frame (8 sub-steps); the slowest seek in every replay of
                 --replays DIR (default tests/replays, if it exists), the rope bridge's
                 cost per tick among them. Every figure has the 1-minute load average
