@@ -73,19 +73,9 @@ void choose(ChartsPanelState& s) {
     s.choiceSearched = true;
 }
 
-ChartsPanelRequests chartsPanel(ChartsPanelState& s) {
+ChartsPanelRequests chartsControls(ChartsPanelState& s) {
     ChartsPanelRequests req;
     if (!s.open) return req;
-    const ImVec2 screen = ImGui::GetIO().DisplaySize;
-    const Rect charts = chartsArea(screen.x, screen.y);
-    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(charts.x),
-                                   static_cast<float>(charts.y + charts.h + 8.0)),
-                            ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Charts", &s.open)) {
-        ImGui::End();
-        return req;
-    }
     const char* views[] = {"work-precision", "stability", "scaling"};
     int view = static_cast<int>(s.view);
     if (ImGui::Combo("chart", &view, views, 3)) s.view = static_cast<ChartsView>(view);
@@ -113,15 +103,15 @@ ChartsPanelRequests chartsPanel(ChartsPanelState& s) {
     if (ImGui::Button("Find cheapest")) choose(s);
     if (s.choice) {
         const auto& c = *s.choice;
-        ImGui::Text("%s, dt %.3g s (%d sub-steps at 120 Hz)", phys::info(c.integrator).name, c.dt,
-                    c.substepsPerTick(1.0 / 120.0));
-        ImGui::Text("measured error %.3g m, %.3g ms CPU per sim s", c.error,
-                    1e3 * c.cpuSecondsPerSimSecond);
+        // Wrapped: the controls sit in the Stats panel, about 330 px wide.
+        ImGui::TextWrapped("%s, dt %.3g s (%d sub-steps at 120 Hz)", phys::info(c.integrator).name,
+                           c.dt, c.substepsPerTick(1.0 / 120.0));
+        ImGui::TextWrapped("measured error %.3g m, %.3g ms CPU per sim s", c.error,
+                           1e3 * c.cpuSecondsPerSimSecond);
         req.applyChoice = ImGui::Button("Use it");
     } else if (s.choiceSearched) {
         ImGui::TextWrapped("No integrator and dt of the sweep is within 1e%.1f m.", logTol);
     }
-    ImGui::End();
     return req;
 }
 

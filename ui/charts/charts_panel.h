@@ -5,8 +5,10 @@
 // Two calls per frame, like the rest of the game's UI:
 //   drawChartsPanel(renderer, state, rect)  in the geometry pass (after the world,
 //                                           before flush): the chart in a screen rect;
-//   chartsPanel(state)                      between ImGuiLayer::newFrame and render: the
-//                                           controls window; returns what was asked.
+//   chartsControls(state)                   between ImGuiLayer::newFrame and render,
+//                                           inside the window that opened the charts
+//                                           (the Stats panel): the controls; returns
+//                                           what was asked.
 #pragma once
 
 #include "game/bench/choose.h"
@@ -48,9 +50,10 @@ inline Rect chartsArea(double w, double h) {
     return {0.02 * w, 0.12 * h, 0.66 * w, 0.55 * h};
 }
 
-/// The ImGui controls window (at first just below chartsArea, not over it). Measures
-/// when asked (or when the shown view has no data).
-ChartsPanelRequests chartsPanel(ChartsPanelState& state);
+/// The controls (view, scene, Measure, "accurate enough, fastest"), drawn into the
+/// current ImGui window: the panel that opened the charts keeps them beside its button,
+/// off the charts and off the player's HUD. Measures when asked.
+ChartsPanelRequests chartsControls(ChartsPanelState& state);
 
 /// Draws the current view's charts into `area` (pixels) with the game's renderer.
 void drawChartsPanel(Renderer2D& r, const ChartsPanelState& state, Rect area);

@@ -90,7 +90,8 @@ std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const 
     ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowPos(ImVec2(display.x - 342, 44), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(330, 600), ImGuiCond_FirstUseEver);
-    if (ImGui::Begin("Stats", nullptr, ImGuiWindowFlags_NoFocusOnAppearing)) {
+    expanded_ = ImGui::Begin("Stats", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
+    if (expanded_) {
         // --- Compare ------------------------------------------------------------------
         if (ImGui::CollapsingHeader("Compare integrators", ImGuiTreeNodeFlags_DefaultOpen)) {
             if (ImGui::Button(showCompare ? "Hide paths" : "Compare")) {
@@ -134,6 +135,16 @@ std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const 
         // --- Charts ----------------------------------------------------------------
         if (ImGui::Button(charts_.open ? "Close charts" : "Charts (work-precision, stability)"))
             charts_.open = !charts_.open;
+        if (charts_.open) {
+            ImGui::Separator();
+            const charts::ChartsPanelRequests req = charts::chartsControls(charts_);
+            if (req.applyChoice && charts_.choice) {
+                phys::WorldDef d = match.world().def();
+                d.integrator = charts_.choice->integrator;
+                d.substeps = charts_.choice->substepsPerTick(d.tickSeconds);
+                apply = d;
+            }
+        }
     }
     ImGui::End();
 
@@ -146,13 +157,6 @@ std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const 
         if (!(now == key_)) runCompare(match, aim);
     }
 
-    const charts::ChartsPanelRequests req = charts::chartsPanel(charts_);
-    if (req.applyChoice && charts_.choice) {
-        phys::WorldDef d = match.world().def();
-        d.integrator = charts_.choice->integrator;
-        d.substeps = charts_.choice->substepsPerTick(d.tickSeconds);
-        apply = d;
-    }
     return apply;
 }
 
@@ -178,7 +182,7 @@ void StatsPanel::drawWorld(Renderer2D& r, const game::Match& match) {
             at.y += 16.0;
         }
     }
-    if (charts_.open) {
+    if (charts_.open && expanded_) { // folding the panel folds away its charts too
         // The charts (chartsArea) map pixels (chart.h), so they are drawn through a camera
         // whose units are pixels; the match's labels are kept and the match's camera
         // restored after.

@@ -40,8 +40,9 @@ class StatsPanel {
     StatsPanel() { charts_.open = false; }
     /// After every tick. A match whose clock went back (rewind, restart) starts afresh.
     void sample(const game::Match& match);
-    /// The Stats window (and the Charts window when open). `aim` is the aim on screen.
-    /// Returns world settings to apply when the Charts panel's "use it" was pressed.
+    /// The Stats window, with the charts' controls in it while the charts are open. `aim`
+    /// is the aim on screen. Returns world settings to apply when the charts' "Use it"
+    /// was pressed.
     std::optional<phys::WorldDef> panel(const game::Match& match, const PendingAim& aim);
     /// Compare paths and the charts, through the match's camera (begin() already called).
     void drawWorld(Renderer2D& r, const game::Match& match);
@@ -68,6 +69,7 @@ class StatsPanel {
     } key_;
 
     charts::ChartsPanelState charts_;
+    bool expanded_ = false; ///< the Stats window was open (not folded) this frame
 };
 
 } // namespace ui
