@@ -54,7 +54,7 @@ double miss(const std::vector<Vec2>& path, Vec2 target) {
 
 } // namespace
 
-AimSolution aimAt(const Match& match, Vec2 target) {
+AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> projectile) {
     const CannonState& c = match.cannon();
     AimSolution out;
     const double g = -match.world().def().forces.gravity.y;
@@ -85,7 +85,8 @@ AimSolution aimAt(const Match& match, Vec2 target) {
     auto toAngle = [&](double elevation) { return dir > 0 ? elevation : 180.0 - elevation; };
     auto trial = [&](double elevation, double speed) {
         ++out.trials;
-        return miss(match.previewTrajectory(toAngle(elevation), speed, 20.0, target.x), target);
+        return miss(match.previewTrajectory(toAngle(elevation), speed, 20.0, target.x, projectile),
+                    target);
     };
     const Vec2 d = target - c.def.position;
     const double vacuum = std::sqrt(std::max(0.0, g * (d.y + length(d)))); // least speed in vacuum
@@ -176,16 +177,21 @@ std::vector<Command> ComputerPlayer::takeTurn(const Match& match, std::uint64_t 
         out.push_back(end);
         return out;
     }
-    const AimSolution aim = aimAt(match, *target);
-    const AimError err = aimError(difficulty_);
+    // The weapon first, so the trial shots fly what will be fired.
     const CannonState& c = match.cannon();
+    std::size_t projectile = c.projectile;
     if (const auto weapon = chooseWeapon(match, *target)) {
         Command sel;
         sel.tick = tick;
         sel.kind = CommandKind::Select;
         sel.text = *weapon;
         out.push_back(sel);
+        const auto& list = c.def.projectiles;
+        projectile = static_cast<std::size_t>(std::find(list.begin(), list.end(), *weapon) -
+                                              list.begin());
     }
+    const AimSolution aim = aimAt(match, *target, projectile);
+    const AimError err = aimError(difficulty_);
     Command a;
     a.tick = tick;
     a.kind = CommandKind::Aim;

@@ -37,8 +37,10 @@ struct AimSolution {
 };
 
 /// Best aim from the current cannon at `target`, without error. Exact when the match is
-/// ballistic-only; otherwise trial shots.
-AimSolution aimAt(const Match& match, phys::Vec2 target);
+/// ballistic-only; otherwise trial shots, of `projectile` (an index into the cannon's
+/// list) or else of the selected one.
+AimSolution aimAt(const Match& match, phys::Vec2 target,
+                  std::optional<std::size_t> projectile = {});
 
 class ComputerPlayer {
   public:

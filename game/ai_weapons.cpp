@@ -53,6 +53,15 @@ std::optional<std::string> chooseWeapon(const Match& match, Vec2 target) {
             best = w->name;
         }
     }
+    // No weapon fits and the selection is spent (the last mortar fired): the first of
+    // the list with ammunition left, else the cannon would ask to fire nothing for ever.
+    const auto spent = [&](std::size_t i) { return i < c.ammoLeft.size() && c.ammoLeft[i] == 0; };
+    if (!best && spent(c.projectile))
+        for (std::size_t i = 0; i < c.def.projectiles.size(); ++i)
+            if (!spent(i) && knownProjectile(c.def.projectiles[i])) {
+                best = c.def.projectiles[i];
+                break;
+            }
     if (best && *best == c.def.projectiles[c.projectile]) return std::nullopt;
     return best;
 }

@@ -3,7 +3,8 @@
 // widest blast (a burst within kCannonRadius + blast / 2 hits it); against a structure
 // the most momentum delivered, m v plus the blast impulse; against a target disc,
 // which only a passing shell scores, the least drag, k = rho Cd A / (2 m). Plain
-// balls and the cannonball are left to the player's pick (the computer keeps them).
+// balls and the cannonball are left to the player's pick (the computer keeps them),
+// unless what is selected has run out.
 #pragma once
 
 #include "game/match.h"

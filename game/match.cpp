@@ -688,11 +688,16 @@ std::uint64_t Match::hash() const {
 }
 
 std::vector<Vec2> Match::previewTrajectory(double angleDeg, double speedMps, double seconds,
-                                           double stopPastX) const {
+                                           double stopPastX,
+                                           std::optional<std::size_t> projectile) const {
     World w(world_.def());
+    w.setProfiling(false); // stepped up to 2,400 times for one look ahead
     w.shapes = world_.shapes;
     const double a = angleDeg * kDegToRad;
-    const Ammo ammo = selectedAmmo();
+    const std::vector<std::string>& list = cannon().def.projectiles;
+    const Ammo ammo = projectile && *projectile < list.size()
+                          ? ammoFromName(list[*projectile]).value_or(Ammo{})
+                          : selectedAmmo();
     ParticleDef pd = particleDef(ammo.preset, muzzle(angleDeg),
                                  {speedMps * std::cos(a), speedMps * std::sin(a)});
     const ParticleId id = w.particles.add(pd);

@@ -183,9 +183,12 @@ class Match {
     /// first contact or `seconds`. Bodies, ropes and blobs are left out of the preview.
     /// `stopPastX`, when finite, ends the preview once the shell is past that x going
     /// away from the cannon and descending (the computer's trial shots need no more).
+    /// `projectile` (an index into the cannon's list) previews that one instead of the
+    /// selected one: the computer aims with what it is about to select.
     std::vector<phys::Vec2> previewTrajectory(double angleDeg, double speedMps,
                                               double seconds = 8.0,
-                                              double stopPastX = INFINITY) const;
+                                              double stopPastX = INFINITY,
+                                              std::optional<std::size_t> projectile = {}) const;
     /// Muzzle point of the current cannon for a given aim (1.5 m along the barrel).
     phys::Vec2 muzzle(double angleDeg) const;
     /// The ammunition selected on the current cannon.

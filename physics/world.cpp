@@ -1,15 +1,10 @@
 #include "physics/world.h"
 
-#include <chrono>
 #include <cmath>
 
 namespace phys {
 
 namespace {
-using ProfileClock = std::chrono::steady_clock;
-double microsSince(ProfileClock::time_point t0) {
-    return std::chrono::duration<double, std::micro>(ProfileClock::now() - t0).count();
-}
 // The unit vector against gravity, or zero without gravity.
 Vec2 upward(Vec2 g) {
     const double l = length(g);
@@ -95,7 +90,7 @@ ModelCounts World::countModels() const {
 }
 
 void World::step() {
-    const auto t0 = ProfileClock::now();
+    const auto t0 = clock_.now();
     const double h = def_.tickSeconds / def_.substeps;
     springTerms_.build(springs); // before markTethered, which reads it
     const Dynamics dynamics(def_.forces, springs, particles, &springTerms_);
@@ -113,19 +108,19 @@ void World::step() {
     collisions_.clearEvents();
 
     // 0. Models: the closed form for what only gravity acts on, the integrator for the rest.
-    auto t = ProfileClock::now();
+    auto t = clock_.now();
     markTethered();
     const ModelRule rule(def_.forces, def_.model == ModelPolicy::Auto, def_.tickSeconds,
                          tethered_.empty() ? nullptr : tethered_.data());
     ModelCounts counts;
     if (!fused) counts = chooseModels(rule);
-    profile_.integrateUs += microsSince(t);
+    profile_.integrateUs += clock_.microsSince(t);
 
     for (int s = 0; s < def_.substeps; ++s) {
         // 1-2. Forces and integration: the integrator evaluates the force generators at
         // every stage it needs; closed-form particles are set from their parabola. The
         // start of the sub-step is kept for the collide phase.
-        t = ProfileClock::now();
+        t = clock_.now();
         const double start = time_ + s * h, end = time_ + (s + 1) * h;
         if (colliding) collisions_.beginSubstep(particles);
         if (fused) {
@@ -137,33 +132,33 @@ void World::step() {
             integrate(def_.integrator, dynamics, particles, h, scratch_, def_.implicit);
             if (closedForm) advanceBallistic(end);
         }
-        profile_.integrateUs += microsSince(t);
+        profile_.integrateUs += clock_.microsSince(t);
 
         // 3-4. Collide and resolve: impacts at their time of impact, resting contact.
         if (colliding) collideAndResolve(h, s * h);
 
         // 4b. Constraints: rods and cables, by projection.
-        t = ProfileClock::now();
+        t = clock_.now();
         constraintError_ =
             solveConstraints(constraints, particles, constraintScratch_,
                              def_.collision.constraintIterations, def_.collision.constraintTolerance);
-        profile_.constraintsUs += microsSince(t);
+        profile_.constraintsUs += clock_.microsSince(t);
     }
 
     // 5. Sleep: resting particles fall asleep; anything tied to a spring or constraint
     // stays awake (the other end may move). Without contacts nothing rests, so nothing
     // falls asleep and the sweep is skipped.
-    t = ProfileClock::now();
+    t = clock_.now();
     if (colliding)
         collisions_.updateSleep(particles, def_.collision, def_.tickSeconds, tethered_);
     else
         collisions_.noContactsThisTick(counts.asleep);
-    profile_.resolveUs += microsSince(t);
+    profile_.resolveUs += clock_.microsSince(t);
 
     // 6. Springs yield and break once per tick, from the state the tick ended in.
-    t = ProfileClock::now();
+    t = clock_.now();
     brokenSprings_ += updateSprings(springs, particles, def_.tickSeconds);
-    profile_.springsUs = microsSince(t);
+    profile_.springsUs = clock_.microsSince(t);
 
     // What each model cost this tick is in the phases above; how many were in each (the
     // model sweep counted them, unless contacts woke or put particles to sleep since):
@@ -175,13 +170,13 @@ void World::step() {
 
     ++tick_;
     time_ += def_.tickSeconds;
-    profile_.totalUs = microsSince(t0);
+    profile_.totalUs = clock_.microsSince(t0);
 }
 
 // Detection and response interleave (each pass detects what the previous pass's bounces
 // lead to), so the profile splits the phase by the detector's own timing.
 void World::collideAndResolve(double h, double tickTime) {
-    const auto t = ProfileClock::now();
+    const auto t = clock_.now();
     const double detectBefore = collisions_.detectMicros();
     if (def_.collision.model == ContactModel::Penalty)
         collisions_.penaltyPhase(particles, shapes, materials, def_.collision, h, tickTime);
@@ -190,7 +185,12 @@ void World::collideAndResolve(double h, double tickTime) {
                                  upward(def_.forces.gravity));
     const double detect = collisions_.detectMicros() - detectBefore;
     profile_.collideUs += detect;
-    profile_.resolveUs += microsSince(t) - detect;
+    profile_.resolveUs += clock_.microsSince(t) - detect;
+}
+
+void World::setProfiling(bool on) {
+    clock_.on = on;
+    collisions_.setProfiling(on);
 }
 
 void World::wakeAll() {

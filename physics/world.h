@@ -14,6 +14,7 @@
 #include "physics/materials.h"
 #include "physics/model_pass.h"
 #include "physics/particles.h"
+#include "physics/phase_clock.h"
 
 #include <cstdint>
 #include <string>
@@ -85,6 +86,9 @@ class World {
     /// Simulated time, s: the sum of the ticks so far (the tick length may change).
     double time() const { return time_; }
     const StepProfile& profile() const { return profile_; }
+    /// Whether step() times its phases into profile() (on by default). A world stepped
+    /// many times for a look ahead turns it off; the results are the same either way.
+    void setProfiling(bool on);
     std::uint64_t hash() const;
     /// Springs broken since the world was made.
     int brokenSprings() const { return brokenSprings_; }
@@ -112,6 +116,7 @@ class World {
     std::vector<std::uint8_t> tethered_; ///< per slot; empty when no spring or rod exists
     double constraintError_ = 0.0;
     StepProfile profile_;
+    PhaseClock clock_;
     std::uint64_t tick_ = 0;
     double time_ = 0.0;
     int brokenSprings_ = 0;

@@ -3,7 +3,6 @@
 #include "physics/collision/contact_resolver.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <span>
@@ -315,7 +314,7 @@ void ParticleCollisions::findPairs(const ParticleSet& set, const CollisionDef& d
 
 void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shapes,
                                 const CollisionDef& def, double h) {
-    const auto t0 = std::chrono::steady_clock::now(); // profile only
+    const auto t0 = clock_.now(); // profile only
     buildProxies(set, shapes, def, h, false);
     findPairs(set, def, h);
     stats_.pairs += static_cast<int>(pairs_.size());
@@ -324,8 +323,7 @@ void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shap
         addCandidate(set, shapes, def, pair, h);
     orderCandidates();
     ++pass_; // paths are as detected until a contact of this pass changes them
-    detectMicros_ +=
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+    detectMicros_ += clock_.microsSince(t0);
 }
 
 void ParticleCollisions::addCandidate(const ParticleSet& set, const StaticShapes& shapes,
@@ -638,7 +636,7 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
 void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& shapes,
                                        const MaterialTable& mats, const CollisionDef& def, double h,
                                        Vec2 up) {
-    const auto t0 = std::chrono::steady_clock::now(); // profile only
+    const auto t0 = clock_.now(); // profile only
     const std::size_t n = set.slots();
     // Boxes from where each particle started the step to where it ends: a shape whose
     // side it crossed in the step (the passes ran out) is found, and puts it back.
@@ -648,8 +646,7 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
     }
     buildProxies(set, shapes, def, h, false, kSpeculative);
     findPairs(set, def, h);
-    detectMicros_ +=
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+    detectMicros_ += clock_.microsSince(t0);
 
     // The contacts: overlapping, touching, or nearly (speculative: a gap below
     // kSpeculative radii may close in one step, and the velocity sweeps allow it to close
@@ -964,14 +961,13 @@ void ParticleCollisions::orderContactsByLevel(std::size_t n) {
 void ParticleCollisions::penaltyPhase(ParticleSet& set, const StaticShapes& shapes,
                                       const MaterialTable& mats, const CollisionDef& def, double h,
                                       double tickTime) {
-    const auto t0 = std::chrono::steady_clock::now(); // profile only
+    const auto t0 = clock_.now(); // profile only
     buildPaths(set, h);
     buildProxies(set, shapes, def, h, true);
     findPairs(set, def, h);
     stats_.pairs += static_cast<int>(pairs_.size());
     ++stats_.passes;
-    detectMicros_ +=
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+    detectMicros_ += clock_.microsSince(t0);
     const auto n = static_cast<std::uint32_t>(set.slots());
     for (const ProxyPair& pair : pairs_) {
         const std::uint32_t a = pair.first, b = pair.second;

@@ -46,6 +46,7 @@
 #include "physics/collision/time_order.h"
 #include "physics/materials.h"
 #include "physics/particles.h"
+#include "physics/phase_clock.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -112,6 +113,8 @@ class ParticleCollisions {
     /// Microseconds spent detecting (broad + narrow phase) since construction, a running
     /// total the world differences to split its profile (profile only).
     double detectMicros() const { return detectMicros_; }
+    /// Whether detectMicros() is timed (World::setProfiling).
+    void setProfiling(bool on) { clock_.on = on; }
 
   private:
     struct Candidate {
@@ -289,6 +292,7 @@ class ParticleCollisions {
     std::vector<ContactEvent> events_;
     CollisionStats stats_;
     double detectMicros_ = 0.0;
+    PhaseClock clock_;
     ToiSettings toi_;
 };
 

@@ -2,9 +2,11 @@
 // the fuse to the tick, the bounce count and e, the sticky charge's e = 0, the airburst
 // height, the tunnel's end point, the roller's stopping distance, the mortar's near-
 // vacuum range; counted weapons refused when spent; bad entries named.
+#include "game/ai.h"
 #include "game/ai_weapons.h"
 #include "game/files/json_reader.h"
 #include "game/match.h"
+#include "game/session.h"
 #include "game/weapon_text.h"
 #include "game/weapons.h"
 
@@ -326,4 +328,45 @@ TEST(Weapons, TheComputerPicksTheWeaponWhosePhysicsSuitsItsAim) {
     // Levels without weapons keep the player's pick (the golden replays depend on it).
     Match plain(arenaLevel({10, 2}, true, R"("cannonball", "golf-ball")"));
     EXPECT_EQ(chooseWeapon(plain, plain.targets()[0].position), std::nullopt);
+}
+
+// The selection spent and no weapon left that suits: the computer selects what still has
+// ammunition, in the list's order, instead of asking to fire the empty one for ever. In
+// the Bunker (two mortars, then cannonballs) it used to fire both mortars and then stand
+// until the 60 s ran out; now it fires all five shots and the match ends.
+TEST(Weapons, TheComputerSwitchesFromASpentWeaponToWhatIsLeft) {
+    Match m(arenaLevel({10, 2}, false, R"({"name": "mortar", "count": 1}, "cannonball")"));
+    const Vec2 structure{200.0, 0.0}; // no disc there: a structure, where the mortar is spent
+    aimAndFire(m, 45.0, 10.0, "mortar");
+    untilShotOver(m);
+    EXPECT_EQ(chooseWeapon(m, structure), std::optional<std::string>("cannonball"));
+
+    SessionOptions o;
+    o.autoplay = true;
+    o.difficulty = Difficulty::Hard;
+    Session bunker(loadLevel(std::string(ARTILLERY_SOURCE_DIR) + "/levels/27_bunker.json"), o);
+    for (int t = 0; t < 120 * 60 && !bunker.match().over(); ++t)
+        bunker.step();
+    int fired = 0;
+    for (const GameEvent& e : bunker.match().events())
+        fired += e.kind == EventKind::Fired;
+    EXPECT_EQ(fired, 5);
+    EXPECT_TRUE(bunker.match().over());
+}
+
+// The computer's trial shots fly the projectile it is about to select: a preview of
+// projectile i without selecting it is, point for point, the preview after selecting it.
+TEST(Weapons, APreviewOfAnotherProjectileIsThePreviewAfterSelectingIt) {
+    const Level level = arenaLevel({10, 2}, true, R"("cannonball", "airburst", "golf-ball")");
+    Match kept(level), selected(level);
+    ASSERT_EQ(selected.apply(command(CommandKind::Select, 0.0, "airburst")), "");
+    const auto ahead = kept.previewTrajectory(40.0, 60.0, 8.0, INFINITY, std::size_t{1});
+    EXPECT_EQ(ahead, selected.previewTrajectory(40.0, 60.0, 8.0));
+    EXPECT_NE(ahead, kept.previewTrajectory(40.0, 60.0, 8.0)); // the cannonball's differs
+    // And so the aim: at a target 150 m off, with drag, each projectile's own.
+    const Vec2 target{160.0, 2.0};
+    const AimSolution forAirburst = aimAt(kept, target, std::size_t{1});
+    const AimSolution afterSelecting = aimAt(selected, target);
+    EXPECT_EQ(forAirburst.angleDeg, afterSelecting.angleDeg);
+    EXPECT_EQ(forAirburst.speedMps, afterSelecting.speedMps);
 }

@@ -456,3 +456,25 @@ TEST(Pile, LaterPassesDetectOnlyWhatChangedWithTheFullDetectionsBits) {
             "rattling box, seed " + std::to_string(seed), 40, 1.0,
             [seed] { return rattlingBox(seed, 40, 0.8, 40.0); }, [](World&, int) {}, false);
 }
+
+// The profile's clock is only read around the step's phases, never inside them: a world
+// stepped with profiling off (as the aim preview and the computer's trial shots are) ends
+// bit for bit where the profiled one does, with no time on its profile.
+TEST(Pile, AWorldSteppedWithoutItsProfileEndsInTheSameBits) {
+    Heap profiled = staggeredHeap(200), quiet = staggeredHeap(200);
+    quiet.world.setProfiling(false);
+    double timed = 0.0;
+    for (int t = 0; t < 240; ++t) {
+        profiled.world.step();
+        quiet.world.step();
+        timed += profiled.world.profile().totalUs;
+        const StepProfile& p = quiet.world.profile();
+        ASSERT_EQ(p.totalUs + p.integrateUs + p.collideUs + p.resolveUs + p.constraintsUs +
+                      p.springsUs,
+                  0.0)
+            << "tick " << t;
+        EXPECT_EQ(p.sleeping, profiled.world.profile().sleeping); // the counts stay
+    }
+    EXPECT_GT(timed, 0.0);
+    EXPECT_EQ(quiet.world.hash(), profiled.world.hash());
+}
