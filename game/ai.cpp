@@ -156,6 +156,11 @@ std::optional<Vec2> chooseTarget(const Match& match) {
             if (!t.hit) consider(t.position);
         for (const auto& b : match.blocks())
             if (b.def.target && !b.toppled) consider(b.def.position);
+        // A target blob scores when knocked off its place: aim at where it is now.
+        for (const auto& b : match.blobs())
+            if (b.def.target && !b.toppled)
+                consider(b.center != phys::kNoParticle ? match.world().particles.position(b.center)
+                                                       : b.def.center);
     }
     return best;
 }

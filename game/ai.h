@@ -56,7 +56,7 @@ class ComputerPlayer {
 };
 
 /// Where the computer aims: the nearest enemy cannon in a duel, else the nearest target
-/// still standing.
+/// still standing: a disc not yet hit, a target block or target blob not yet knocked off.
 std::optional<phys::Vec2> chooseTarget(const Match& match);
 
 } // namespace game

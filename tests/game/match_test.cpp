@@ -163,6 +163,21 @@ TEST(ComputerPlayer, HitsSomeAndMissesSomeAtNormalDifficulty) {
     EXPECT_LE(hits, 10) << "unbeatable: " << hits << " of " << shots;
 }
 
+// A target blob counts as a target: on Jelly hill (two blobs, no disc) the computer used
+// to pass every turn for the whole minute; it aims at the nearer blob, where it is now.
+TEST(ComputerPlayer, AimsAtATargetBlobStillInPlace) {
+    Match m(level("24_jelly_hill.json"));
+    ASSERT_TRUE(m.targets().empty());
+    ASSERT_EQ(m.blobs().size(), 2u);
+    const auto target = chooseTarget(m);
+    ASSERT_TRUE(target.has_value());
+    EXPECT_EQ(*target, m.world().particles.position(m.blobs()[0].center));
+    ComputerPlayer cpu(Difficulty::Hard, 1);
+    const std::vector<Command> turn = cpu.takeTurn(m, m.tick());
+    ASSERT_FALSE(turn.empty());
+    EXPECT_EQ(turn.back().kind, CommandKind::Fire);
+}
+
 TEST(ComputerPlayer, TrialShotsFindTheTargetWithoutError) {
     Match m(level("10_duel.json"));
     ASSERT_FALSE(m.ballisticOnly());
