@@ -1,5 +1,6 @@
 #include "ui/game/game_menus.h"
 #include "ui/game/campaign_view.h"
+#include "ui/game/match_view.h"
 #include "ui/game/weapon_look.h"
 
 #include "game/files/json_reader.h"
@@ -405,7 +406,8 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
     // On the band of soil at the bottom, beside the aim panel: cannons, targets and
     // castles stand above it, and the arcs fly higher still.
     const ImVec2 d = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(342, d.y - 12), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowPos(ImVec2(besideAimReadout(d.x, d.y), d.y - 12), ImGuiCond_FirstUseEver,
+                            ImVec2(0.0f, 1.0f));
     ImGui::SetNextWindowSize(ImVec2(250, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("Match", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
     const game::CannonState& c = m.cannon();

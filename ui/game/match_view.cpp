@@ -470,7 +470,7 @@ void drawPowerBar(const HudSpace& s, double x, double y, double w, double fracti
 
 void drawHud(Renderer2D& r, const Match& m, const MatchViewOptions& o, const PendingAim& aim) {
     const Camera& c = r.camera();
-    const double u = std::clamp(std::min(c.width / 1280.0, c.height / 720.0), 0.4, 3.0);
+    const double u = hudScale(c.width, c.height);
     const HudSpace s{r, u};
     const double W = c.width / u, H = c.height / u; // the canvas in design pixels
     const game::CannonState& cs = m.cannon();

@@ -19,6 +19,7 @@
 #include "ui/render/renderer2d.h"
 #include "ui/render/world_view.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -58,6 +59,21 @@ struct MatchViewOptions {
 
 /// How much of the path the preview shows when it is not the full one (s of flight).
 inline constexpr double kPreviewArcSeconds = 0.5;
+
+/// The HUD is drawn on a 1280x720 design canvas scaled to the screen by this factor.
+inline double hudScale(double width, double height) {
+    return std::clamp(std::min(width / 1280.0, height / 720.0), 0.4, 3.0);
+}
+/// Where the panels beside the aim readout at the bottom left start, in screen pixels:
+/// right of it, whatever the HUD's scale (the readout ends at 330 design pixels).
+inline float besideAimReadout(double width, double height) {
+    return static_cast<float>(342.0 * hudScale(width, height));
+}
+/// Where the panels under the level's heading at the top left start, in screen pixels
+/// (the heading ends at 112 design pixels in a duel, 96 otherwise).
+inline float belowLevelHeading(double width, double height) {
+    return static_cast<float>(120.0 * hudScale(width, height));
+}
 
 /// Seen from far, a 1.5 m barrel is a few pixels: cannons are drawn scaled by this
 /// factor (>= 1) so the barrel is at least 24 px long and the aim reads at a glance.

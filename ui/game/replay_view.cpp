@@ -133,8 +133,9 @@ ReplayRequests ReplayViewer::panel() {
     const ImVec2 d = ImGui::GetIO().DisplaySize;
     // On the band of soil at the bottom, beside the aim panel, where the match panel is
     // in a game.
-    ImGui::SetNextWindowPos(ImVec2(342, d.y - 12), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
-    ImGui::SetNextWindowSize(ImVec2(std::min(560.0f, d.x - 354), 0), ImGuiCond_FirstUseEver);
+    const float left = besideAimReadout(d.x, d.y);
+    ImGui::SetNextWindowPos(ImVec2(left, d.y - 12), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(560.0f, d.x - left - 12), 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("Replay", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
     ImGui::TextColored(kGoldText, "%s", std::filesystem::path(file_).filename().string().c_str());
     ImGui::SameLine();

@@ -1,4 +1,5 @@
 #include "ui/game/sandbox_tools.h"
+#include "ui/game/match_view.h"
 
 #include <imgui.h>
 
@@ -25,7 +26,8 @@ Command make(CommandKind kind, phys::Vec2 at = {}) {
 
 std::vector<Command> SandboxTools::panel(const game::Match& match) {
     std::vector<Command> out;
-    ImGui::SetNextWindowPos(ImVec2(12.0f, 120.0f), ImGuiCond_FirstUseEver);
+    const ImVec2 d = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(12.0f, belowLevelHeading(d.x, d.y)), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowCollapsed(!match.sandbox(), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Sandbox", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::End();
