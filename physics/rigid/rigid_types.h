@@ -188,6 +188,7 @@ struct RigidProfile {
     int contacts = 0;       ///< contacts Box2D keeps (AABB pairs), touching or not
     int jointsBroken = 0; ///< joints destroyed by breakForce / breakTorque this step
     bool skipped = false; ///< Box2D was not stepped: everything asleep, nothing changed
+    bool continuous = false; ///< Box2D's time of impact ran (kMostContinuousBodies)
 };
 
 } // namespace phys

@@ -722,6 +722,11 @@ void RigidWorld::step(double dt) {
     profile_ = {};
     lastStepH_ = h;
     lastInvSubstep_ = h > 0.0f ? 1.0 / static_cast<double>(h) : 0.0;
+    int dynamicBodies = 0;
+    for (const BodySlot& slot : bodies_)
+        dynamicBodies += slot.body && slot.body->GetType() != b2_staticBody ? 1 : 0;
+    profile_.continuous = def_.continuousPhysics && dynamicBodies <= kMostContinuousBodies;
+    world_->SetContinuousPhysics(profile_.continuous);
     for (int s = 0; s < n; ++s) {
         // Box2D step: broad phase, narrow phase, island solve (integrate velocities,
         // velocity iterations with restitution, integrate positions, position

@@ -175,6 +175,43 @@ TEST(RigidTower, StaysStandingAndFallsAsleep) {
     EXPECT_EQ(world.profile().sleepingBodies, td.height);
 }
 
+// Box2D's time of impact costs the square of the contacts, so it runs only up to
+// kMostContinuousBodies dynamic bodies (and only when the settings ask for it): a world
+// of small blocks one past that steps without it, and its blocks still come to rest on
+// the ground, not under it.
+TEST(RigidWorldLimits, TimeOfImpactOnlyUpToTheBodyLimit) {
+    auto blocks = [](int n, bool continuous) {
+        RigidWorldDef def;
+        def.continuousPhysics = continuous;
+        auto w = std::make_unique<RigidWorld>(def);
+        const Vec2 ground[] = {{-1.0, 0.0}, {100.0, 0.0}};
+        w->createTerrain(ground, {});
+        for (int i = 0; i < n; ++i) {
+            BodyDef bd;
+            bd.position = {0.2 * (i % 400), 0.5 + 0.2 * (i / 400)};
+            w->createBox(bd, {0.05, 0.05}, {});
+        }
+        return w;
+    };
+    constexpr int kLimit = RigidWorld::kMostContinuousBodies;
+    auto atLimit = blocks(kLimit, true), past = blocks(kLimit + 1, true),
+         off = blocks(10, false);
+    for (int t = 0; t < 120; ++t) {
+        atLimit->step(kTick);
+        past->step(kTick);
+        off->step(kTick);
+        ASSERT_TRUE(atLimit->profile().continuous) << "tick " << t;
+        ASSERT_FALSE(past->profile().continuous) << "tick " << t;
+        ASSERT_FALSE(off->profile().continuous) << "tick " << t;
+    }
+    for (const BodyId b : past->bodies()) {
+        const RigidBodyState s = past->state(b);
+        if (s.type == BodyType::Dynamic) {
+            ASSERT_GT(s.position.y, 0.0);
+        }
+    }
+}
+
 TEST(RigidTower, SleepingTowerCostsUnderFivePercentOfAwake) {
     // Deterministic proxy for cost (tests never time): the work of a Box2D step is the
     // bodies it integrates and the touching contacts it solves. Asleep, the same tower
