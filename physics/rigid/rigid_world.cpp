@@ -3,12 +3,12 @@
 #include "physics/rigid/rigid_world.h"
 
 #include "physics/diagnostics.h"
+#include "physics/phase_clock.h"
 
 #include <box2d/box2d.h>
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -79,8 +79,6 @@ std::string validate(const RigidMaterial& m) {
         return "material restitution " + fmt(m.restitution) + ": must be in 0..1";
     return {};
 }
-
-using ProfileClock = std::chrono::steady_clock;
 
 // ---- query callbacks ----------------------------------------------------------------
 class CollectBodies final : public b2QueryCallback {
@@ -727,14 +725,14 @@ void RigidWorld::step(double dt) {
         dynamicBodies += slot.body && slot.body->GetType() != b2_staticBody ? 1 : 0;
     profile_.continuous = def_.continuousPhysics && dynamicBodies <= kMostContinuousBodies;
     world_->SetContinuousPhysics(profile_.continuous);
+    const PhaseClock clock; // always on: the rigid world is stepped once a tick
     for (int s = 0; s < n; ++s) {
         // Box2D step: broad phase, narrow phase, island solve (integrate velocities,
         // velocity iterations with restitution, integrate positions, position
         // iterations), time of impact, sleep. The clock is read around it only.
-        const auto t0 = ProfileClock::now();
+        const auto t0 = clock.now();
         world_->Step(h, def_.velocityIterations, def_.positionIterations);
-        profile_.stepUs +=
-            std::chrono::duration<double, std::micro>(ProfileClock::now() - t0).count();
+        profile_.stepUs += clock.microsSince(t0);
         // Break overloaded joints after every sub-step, so a joint that fails does not
         // hold for the rest of the tick.
         profile_.jointsBroken += breakOverloadedJoints(lastInvSubstep_);
