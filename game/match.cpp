@@ -241,8 +241,12 @@ Vec2 Match::muzzle(double angleDeg) const {
 }
 
 Ammo Match::selectedAmmo() const {
-    const CannonState& c = cannon();
-    return ammoFromName(c.def.projectiles[c.projectile]).value_or(Ammo{});
+    return ammoAt(cannon().projectile);
+}
+
+Ammo Match::ammoAt(std::size_t index) const {
+    const std::vector<std::string>& list = cannon().def.projectiles;
+    return index < list.size() ? ammoFromName(list[index]).value_or(Ammo{}) : Ammo{};
 }
 
 MaterialsInPlay Match::materialsInPlay() const {
@@ -694,10 +698,7 @@ std::vector<Vec2> Match::previewTrajectory(double angleDeg, double speedMps, dou
     w.setProfiling(false); // stepped up to 2,400 times for one look ahead
     w.shapes = world_.shapes;
     const double a = angleDeg * kDegToRad;
-    const std::vector<std::string>& list = cannon().def.projectiles;
-    const Ammo ammo = projectile && *projectile < list.size()
-                          ? ammoFromName(list[*projectile]).value_or(Ammo{})
-                          : selectedAmmo();
+    const Ammo ammo = ammoAt(projectile.value_or(cannon().projectile));
     ParticleDef pd = particleDef(ammo.preset, muzzle(angleDeg),
                                  {speedMps * std::cos(a), speedMps * std::sin(a)});
     const ParticleId id = w.particles.add(pd);

@@ -193,6 +193,8 @@ class Match {
     phys::Vec2 muzzle(double angleDeg) const;
     /// The ammunition selected on the current cannon.
     Ammo selectedAmmo() const;
+    /// The ammunition of the current cannon's projectile `index` (none past its list).
+    Ammo ammoAt(std::size_t index) const;
 
     /// What the `set` command changes: the world's settings and its material table.
     LiveSettings liveSettings() const { return {world_.def(), world_.materials}; }
