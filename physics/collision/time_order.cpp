@@ -26,15 +26,22 @@ void orderByTime(std::vector<TimeKey>& keys, std::vector<TimeKey>& scratch) {
     }
     const std::size_t n = keys.size();
     scratch.resize(n);
-    for (int shift = 0; shift < 64; shift += 8) {
-        std::array<std::uint32_t, 257> start{};
+    // The eight bytes' counts in one pass: a byte's counts do not depend on the order the
+    // earlier passes leave the keys in.
+    std::array<std::array<std::uint32_t, 257>, 8> start{};
+    for (const TimeKey& k : keys) {
+        const std::uint64_t u = ordered(k.time);
+        for (int byte = 0; byte < 8; ++byte)
+            ++start[byte][((u >> (8 * byte)) & 0xff) + 1];
+    }
+    for (int byte = 0; byte < 8; ++byte) {
+        std::array<std::uint32_t, 257>& at = start[byte];
+        if (std::find(at.begin() + 1, at.end(), n) != at.end()) continue; // all alike
+        for (std::size_t d = 1; d < at.size(); ++d)
+            at[d] += at[d - 1];
+        const int shift = 8 * byte;
         for (const TimeKey& k : keys)
-            ++start[((ordered(k.time) >> shift) & 0xff) + 1];
-        if (std::find(start.begin() + 1, start.end(), n) != start.end()) continue; // all alike
-        for (std::size_t d = 1; d < start.size(); ++d)
-            start[d] += start[d - 1];
-        for (const TimeKey& k : keys)
-            scratch[start[(ordered(k.time) >> shift) & 0xff]++] = k;
+            scratch[at[(ordered(k.time) >> shift) & 0xff]++] = k;
         keys.swap(scratch);
     }
 }
