@@ -202,8 +202,8 @@ ReplayRequests ReplayViewer::panel() {
         req.exportVideo = true;
     ImGui::SameLine();
     if (ImGui::Button("Replays")) req.close = true;
-    ImGui::SameLine();
-    // The export's state takes the keys' place on this line (the panel keeps its height).
+    // The keys on a line of their own (beside the buttons they ran past the panel's
+    // edge); the export's state takes their place (the panel keeps its height).
     if (!videoLine())
         ImGui::TextColored(kDimText, "Space play/pause  . step  [ ] speed  PgUp/PgDn shots");
     ImGui::End();
