@@ -323,7 +323,8 @@ bool GameScreen::editorEvent(const SDL_Event& e) {
                        e.type == SDL_MOUSEMOTION || e.type == SDL_MOUSEWHEEL;
     if (!mouse) return running_;
     // The panel takes the mouse over it, but a drag begun in the world ends in the world.
-    if (imgui_.wantsMouse() && !view.dragging() && !panning_) return running_;
+    if ((imgui_.wantsMouse() || imgui_.pressOnWindow(e)) && !view.dragging() && !panning_)
+        return running_;
     const double reach = camera_.metres(8.0); // a handle takes clicks 8 px around it
     // Over the panel a press is the panel's, even on the frame the editor comes back
     // (ImGui learns what is under the pointer only from the frame it draws).
@@ -976,7 +977,8 @@ bool GameScreen::handleEvent(const SDL_Event& e) {
     if (e.type == SDL_KEYDOWN && !imgui_.wantsKeyboard()) return keyDown(e) && running_;
     if (e.type == SDL_KEYUP && e.key.keysym.sym == SDLK_SPACE && session_ && aim_.charging())
         submit(aim_.releaseCharge(session_->match().cannon()));
-    if (viewer_ && !imgui_.wantsMouse() && overlay_ == Overlay::None) cameraEvent(e);
+    const bool panelsMouse = (uiWants && imgui_.wantsMouse()) || imgui_.pressOnWindow(e);
+    if (viewer_ && !panelsMouse && overlay_ == Overlay::None) cameraEvent(e);
     if (!session_) return running_;
     game::Match& m = session_->match();
     switch (padAction) {
@@ -1001,7 +1003,7 @@ bool GameScreen::handleEvent(const SDL_Event& e) {
     case PadAction::None:
         break;
     }
-    if (uiWants && imgui_.wantsMouse()) return running_;
+    if (panelsMouse) return running_;
     if (overlay_ != Overlay::None) return running_;
     if (sandboxTools_.active(m) && (e.type == SDL_MOUSEBUTTONDOWN || e.type == SDL_MOUSEBUTTONUP ||
                                     e.type == SDL_MOUSEMOTION)) {

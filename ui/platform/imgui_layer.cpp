@@ -7,6 +7,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <backends/imgui_impl_sdl.h>
 #include <imgui.h>
+#include <imgui_internal.h> // the windows of the last frame, for pressOnWindow
 
 #include <cfloat>
 #include <cmath>
@@ -110,6 +111,18 @@ bool ImGuiLayer::wantsMouse() const {
 }
 bool ImGuiLayer::wantsKeyboard() const {
     return ImGui::GetIO().WantCaptureKeyboard;
+}
+
+// ImGui's own hover test (FindHoveredWindow, run at the next frame's start) on the
+// windows the last frame drew: Active stays set until then.
+bool ImGuiLayer::pressOnWindow(const SDL_Event& event) const {
+    if (event.type != SDL_MOUSEBUTTONDOWN) return false;
+    const ImVec2 at(static_cast<float>(event.button.x), static_cast<float>(event.button.y));
+    for (const ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
+        if (w->Active && !w->Hidden && !(w->Flags & ImGuiWindowFlags_NoMouseInputs) &&
+            w->OuterRectClipped.Contains(at))
+            return true;
+    return false;
 }
 
 } // namespace ui

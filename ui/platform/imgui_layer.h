@@ -33,6 +33,11 @@ class ImGuiLayer {
 
     bool wantsMouse() const;
     bool wantsKeyboard() const;
+    /// A button press on a window drawn in the last frame. ImGui's capture flag
+    /// (wantsMouse) is set from where the pointer was when the last frame began, so a
+    /// press that comes with the pointer's first move onto a panel (a tap on a touch
+    /// screen, a quick flick and click) is not yet in it, and would reach the world too.
+    bool pressOnWindow(const SDL_Event& event) const;
 
   private:
     GLContext& context_;

@@ -147,7 +147,8 @@ void PlayScreen::frame(double wallSeconds) {
 bool PlayScreen::handleEvent(const SDL_Event& e) {
     if (e.type == SDL_QUIT) return false;
     if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_CLOSE) return false;
-    const bool uiHasMouse = imgui_.processEvent(e) && imgui_.wantsMouse();
+    const bool uiHasMouse =
+        (imgui_.processEvent(e) && imgui_.wantsMouse()) || imgui_.pressOnWindow(e);
     if (e.type == SDL_KEYDOWN && !imgui_.wantsKeyboard()) {
         switch (e.key.keysym.sym) {
         case SDLK_ESCAPE:
