@@ -623,6 +623,13 @@ Camera levelCamera(const Match& m, int width, int height) {
     cam.pixelsPerMetre = height / visibleHeight;
     const double bottom = ground - 0.22 * visibleHeight;
     cam.center = {0.5 * (xMin + xMax), bottom + 0.5 * visibleHeight};
+    // A view wider than the things to see (the height decided) slides inside the level's
+    // bounds where they are wide enough: what lies outside them cannot be reached (a
+    // sandbox spawn there is refused), so it is not shown as if it were ground and sky.
+    // [xMin, xMax] stays in view: it lies within the bounds and is no wider than the view.
+    const double halfWidth = 0.5 * width / cam.pixelsPerMetre;
+    if (l.worldMax.x - l.worldMin.x >= 2.0 * halfWidth)
+        cam.center.x = std::clamp(cam.center.x, l.worldMin.x + halfWidth, l.worldMax.x - halfWidth);
     return cam;
 }
 
