@@ -34,7 +34,7 @@ TEST(LevelCamera, TheHomeViewShowsTheLevelAndNothingOutsideIt) {
     ASSERT_GE(files.size(), 30u);
     for (const fs::path& f : files) {
         const game::Match m(game::loadLevel(f.string()));
-        for (const auto [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}, std::pair{800, 800}}) {
+        for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}, std::pair{800, 800}}) {
             const ui::Camera c = ui::levelCamera(m, w, h);
             const phys::Vec2 lo = c.visibleMin(), hi = c.visibleMax();
             const game::Level& l = m.level();
