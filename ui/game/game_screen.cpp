@@ -42,6 +42,9 @@ game::Level withHotseat(game::Level level) {
     return level;
 }
 
+/// How long a refused command stays on the HUD, s of wall time.
+constexpr double kNoticeSeconds = 3.0;
+
 /// Time scales the [ and ] keys step through.
 constexpr float kSpeeds[] = {1.0f / 16, 0.125f, 0.25f, 0.5f, 1.0f, 2.0f, 4.0f};
 
@@ -392,7 +395,9 @@ void GameScreen::markAssists() {
 void GameScreen::submit(const game::Command& command) {
     if (!session_) return;
     const std::string why = session_->submit(command);
-    if (!why.empty()) stats_.status = std::string(game::commandName(command.kind)) + ": " + why;
+    if (why.empty()) return;
+    stats_.status = notice_ = std::string(game::commandName(command.kind)) + ": " + why;
+    noticeSeconds_ = kNoticeSeconds;
 }
 
 void GameScreen::submit(const std::vector<game::Command>& commands) {
@@ -595,6 +600,7 @@ void GameScreen::drawPlaying() {
         if (humanTurn() && aim_.editing()) o.pending = aim_.pending();
         o.charge = aim_.chargeFraction();
         o.banner = liveBanner(m);
+        if (noticeSeconds_ > 0.0) o.notice = notice_;
     }
     const Camera shown = shakenCamera();
     drawMatchFrame(renderer_, matchView_, m, shown, o);
@@ -741,6 +747,7 @@ void GameScreen::hearFrame() {
 }
 
 void GameScreen::frame(double wallSeconds) {
+    noticeSeconds_ = std::max(0.0, noticeSeconds_ - wallSeconds);
     if (editing_) {
         // The level being made is not simulated: it is drawn at its first tick.
     } else if (viewer_) {

@@ -208,6 +208,10 @@ class GameScreen final : public Screen {
     bool networkDuel_ = false;
     bool screenshotRequested_ = false;
     FrameStats stats_;
+    /// What the match refused last (a spawn outside the world, say), shown on the HUD
+    /// for noticeSeconds_ more of wall time: else the press seems to do nothing.
+    std::string notice_;
+    double noticeSeconds_ = 0.0;
     int framesMeasured_ = 0;
     PadInput pad_; ///< a game controller, if one is plugged in
     /// The sound card (window only; silent when there is none) and what it plays: voices

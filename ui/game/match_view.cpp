@@ -60,6 +60,7 @@ const Color kPanelEdge = Color::hex(0xffffff, 0.12f);
 const Color kText = Color::hex(0xf3efe6);
 const Color kTextDim = Color::hex(0xb9c2cf);
 const Color kGold = Color::hex(0xffc93c);
+const Color kNotice = Color::hex(0xffb27a); ///< a refused command: warm, not alarming
 /// One colour per cannon / player, so shells, trails and HUD rows match their cannon.
 const Color kTeams[] = {Color::hex(0x3b82f6), Color::hex(0xef4444), Color::hex(0x22c55e),
                         Color::hex(0xf59e0b), Color::hex(0xa855f7), Color::hex(0x14b8a6),
@@ -545,6 +546,10 @@ void drawHud(Renderer2D& r, const Match& m, const MatchViewOptions& o, const Pen
                   phys::info(d.integrator).name, 1.0 / d.tickSeconds, m.time());
     s.panel(W - 460, H - 40, W - 12, H - 12, Color::hex(0x0e1420, 0.55f));
     s.text(W - 24, H - 36, line, kTextDim, 0.8f, 1.0f);
+    if (!o.notice.empty()) {
+        s.panel(W - 460, H - 74, W - 12, H - 46, Color::hex(0x0e1420, 0.75f));
+        s.text(W - 24, H - 70, o.notice, kNotice, 0.8f, 1.0f);
+    }
 
     // The match is over: a results card with the stars.
     if (m.over()) {

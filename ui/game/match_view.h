@@ -55,6 +55,9 @@ struct MatchViewOptions {
     std::vector<std::string> playerNames;
     /// A line in the middle of the top of the screen ("Paused", "x0.25").
     std::string banner;
+    /// A command the match refused, above the status line at the bottom right
+    /// ("spawn: spawn point is outside the world"), "" for none.
+    std::string notice;
 };
 
 /// How much of the path the preview shows when it is not the full one (s of flight).
