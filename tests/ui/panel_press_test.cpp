@@ -3,6 +3,7 @@
 // still describes where the pointer was when the last frame began. On the sandbox level,
 // whose tool spawns a block where the world is pressed, a press on the Stats panel's
 // header (folded, over the sky) spawns nothing, and one in the open sky spawns a block.
+// A press the match refuses (a spawn outside the world) says why on the HUD for a while.
 #include "ui/game/game_screen.h"
 #include "ui/platform/gl_context.h"
 
@@ -12,6 +13,7 @@
 #include <imgui_internal.h>
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <unistd.h>
 
@@ -21,12 +23,21 @@ namespace fs = std::filesystem;
 
 const fs::path kRoot = fs::path(__FILE__).parent_path().parent_path().parent_path();
 
-SDL_Event button(Uint32 type, ImVec2 pixel) {
+SDL_Event button(Uint32 type, ImVec2 pixel, Uint8 which = SDL_BUTTON_LEFT) {
     SDL_Event e{};
     e.type = type;
-    e.button.button = SDL_BUTTON_LEFT;
+    e.button.button = which;
     e.button.x = static_cast<int>(pixel.x);
     e.button.y = static_cast<int>(pixel.y);
+    return e;
+}
+
+SDL_Event motion(ImVec2 pixel, int dx) {
+    SDL_Event e{};
+    e.type = SDL_MOUSEMOTION;
+    e.motion.x = static_cast<int>(pixel.x);
+    e.motion.y = static_cast<int>(pixel.y);
+    e.motion.xrel = dx;
     return e;
 }
 
@@ -37,42 +48,73 @@ int spawns(const ui::GameScreen& screen) {
     return n;
 }
 
-} // namespace
-
-TEST(PanelPress, APressOnAPanelDoesNotReachTheWorldUnderIt) {
-    // A settings folder of this process's own: the panels start where they first open.
-    const fs::path settings =
+/// The sandbox level on a headless game screen of 1280x720, with a settings folder of
+/// this process's own (the panels start where they first open), two frames drawn.
+struct Sandbox {
+    fs::path settings =
         fs::temp_directory_path() / ("artillery-panel-press-test-" + std::to_string(::getpid()));
-    fs::remove_all(settings);
-    fs::create_directories(settings);
-    std::string error;
-    auto context = ui::createHeadlessContext(1280, 720, ui::HeadlessBackend::Auto, error);
-    ASSERT_NE(context, nullptr) << error;
-    {
+    std::unique_ptr<ui::GLContext> context;
+    std::unique_ptr<ui::GameScreen> screen;
+
+    Sandbox() {
+        fs::remove_all(settings);
+        fs::create_directories(settings);
+        std::string error;
+        context = ui::createHeadlessContext(1280, 720, ui::HeadlessBackend::Auto, error);
+        EXPECT_NE(context, nullptr) << error;
+        if (!context) return;
         ui::GameScreenDef def;
         def.levelFile = (kRoot / "levels/11_sandbox.json").string();
         def.levelsFolder = (kRoot / "levels").string();
         def.settingsFolder = settings.string();
-        ui::GameScreen screen(*context, nullptr, def);
+        screen = std::make_unique<ui::GameScreen>(*context, nullptr, def);
         for (int i = 0; i < 2; ++i)
-            screen.frame(1.0 / 60.0);
-        const ImGuiWindow* panel = ImGui::FindWindowByName("Stats");
-        ASSERT_NE(panel, nullptr);
-        ASSERT_TRUE(panel->Active) << "drawn in the last frame";
-
-        auto click = [&](ImVec2 at) {
-            screen.handleEvent(button(SDL_MOUSEBUTTONDOWN, at));
-            screen.handleEvent(button(SDL_MOUSEBUTTONUP, at));
-            screen.frame(1.0 / 60.0);
-        };
-        click(panel->Rect().GetCenter());
-        EXPECT_EQ(spawns(screen), 0) << "the press was the panel's";
-        // The sky between the wind gauge and the Physics and Stats headers.
-        const ImVec2 sky(800.0f, 250.0f);
-        for (const ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
-            ASSERT_FALSE(w->Active && w->Rect().Contains(sky)) << w->Name;
-        click(sky);
-        EXPECT_EQ(spawns(screen), 1) << "a press in the world spawns a block there";
+            screen->frame(1.0 / 60.0);
     }
-    fs::remove_all(settings);
+    ~Sandbox() {
+        screen.reset();
+        fs::remove_all(settings);
+    }
+    void click(ImVec2 at) {
+        screen->handleEvent(button(SDL_MOUSEBUTTONDOWN, at));
+        screen->handleEvent(button(SDL_MOUSEBUTTONUP, at));
+        screen->frame(1.0 / 60.0);
+    }
+};
+
+} // namespace
+
+TEST(PanelPress, APressOnAPanelDoesNotReachTheWorldUnderIt) {
+    Sandbox s;
+    ASSERT_NE(s.screen, nullptr);
+    const ImGuiWindow* panel = ImGui::FindWindowByName("Stats");
+    ASSERT_NE(panel, nullptr);
+    ASSERT_TRUE(panel->Active) << "drawn in the last frame";
+    s.click(panel->Rect().GetCenter());
+    EXPECT_EQ(spawns(*s.screen), 0) << "the press was the panel's";
+    // The sky between the wind gauge and the Physics and Stats headers.
+    const ImVec2 sky(800.0f, 250.0f);
+    for (const ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
+        ASSERT_FALSE(w->Active && w->Rect().Contains(sky)) << w->Name;
+    s.click(sky);
+    EXPECT_EQ(spawns(*s.screen), 1) << "a press in the world spawns a block there";
+}
+
+TEST(PanelPress, ARefusedPressSaysWhyOnTheHudForAWhile) {
+    Sandbox s;
+    ASSERT_NE(s.screen, nullptr);
+    EXPECT_EQ(s.screen->notice(), "");
+    // Drag the view right with the right button until the left edge of the screen lies
+    // left of the world (x = 0), and press there.
+    const ImVec2 from(700.0f, 450.0f), to(1100.0f, 450.0f);
+    s.screen->handleEvent(button(SDL_MOUSEBUTTONDOWN, from, SDL_BUTTON_RIGHT));
+    s.screen->handleEvent(motion(to, static_cast<int>(to.x - from.x)));
+    s.screen->handleEvent(button(SDL_MOUSEBUTTONUP, to, SDL_BUTTON_RIGHT));
+    s.screen->frame(1.0 / 60.0);
+    s.click(ImVec2(20.0f, 450.0f));
+    EXPECT_EQ(spawns(*s.screen), 0) << "refused";
+    EXPECT_EQ(s.screen->notice(), "spawn: spawn point is outside the world");
+    for (int i = 0; i < 200; ++i) // 3.3 s of frames
+        s.screen->frame(1.0 / 60.0);
+    EXPECT_EQ(s.screen->notice(), "") << "for a while, not for ever";
 }

@@ -600,7 +600,7 @@ void GameScreen::drawPlaying() {
         if (humanTurn() && aim_.editing()) o.pending = aim_.pending();
         o.charge = aim_.chargeFraction();
         o.banner = liveBanner(m);
-        if (noticeSeconds_ > 0.0) o.notice = notice_;
+        o.notice = notice();
     }
     const Camera shown = shakenCamera();
     drawMatchFrame(renderer_, matchView_, m, shown, o);

@@ -90,6 +90,8 @@ class GameScreen final : public Screen {
 
     /// The match being played, if any (null on the level select screen or in a replay).
     const game::Session* session() const { return session_.get(); }
+    /// The refused command the HUD shows now ("spawn: ..."), "" for none.
+    std::string notice() const { return noticeSeconds_ > 0.0 ? notice_ : std::string(); }
     /// The replay being watched, if any.
     const ReplayViewer* replayViewer() const { return viewer_.get(); }
     /// The level editor, while it is on screen (null otherwise).
