@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <string>
 
@@ -56,6 +57,35 @@ TEST(TargetInset, HidesOnceTheMainViewShowsTheTargetsReadable) {
     EXPECT_FALSE(ui::targetInset(m, close));
     close.pixelsPerMetre *= 0.99;
     EXPECT_TRUE(ui::targetInset(m, close));
+}
+
+// The Stats window open over the close-up's corner (as it first opens at 1280x720) moves
+// the close-up to its left, clear of it and on the screen; a window elsewhere, or one
+// that leaves no room left of it, leaves the close-up where it is.
+TEST(TargetInset, MovesLeftOfAPanelOpenOverIt) {
+    const game::Match m(game::loadLevel(sourceDir() + "/levels/05_castle.json"));
+    const ui::Camera home = ui::levelCamera(m, 1280, 720);
+    auto rect = [&](const ui::TargetInsetDef& d) {
+        const auto inset = ui::targetInset(m, home, d);
+        EXPECT_TRUE(inset);
+        const Vec2 c = inset ? inset->cornerPx : Vec2{};
+        const double w = inset ? inset->camera.width : 0.0, h = inset ? inset->camera.height : 0.0;
+        return std::array<double, 4>{c.x, c.y, c.x + w, c.y + h};
+    };
+    const ui::TargetInsetDef plain;
+    const auto before = rect(plain);
+    const std::array<double, 4> stats{938.0, 44.0, 1268.0, 644.0};
+    ASSERT_LT(stats[0], before[2]) << "the window covers the close-up's place";
+    const auto after = rect(ui::clearOf(plain, home, stats));
+    EXPECT_DOUBLE_EQ(after[2], stats[0] - plain.rightPx) << "left of the window, a gap apart";
+    EXPECT_GE(after[0], 0.0);
+    EXPECT_DOUBLE_EQ(after[1], before[1]);
+    EXPECT_DOUBLE_EQ(after[2] - after[0], before[2] - before[0]) << "the same size";
+
+    const std::array<double, 4> elsewhere{12.0, 300.0, 300.0, 600.0};
+    EXPECT_EQ(rect(ui::clearOf(plain, home, elsewhere)), before);
+    const std::array<double, 4> wide{300.0, 44.0, 1268.0, 644.0};
+    EXPECT_EQ(rect(ui::clearOf(plain, home, wide)), before) << "no room left of it";
 }
 
 TEST(TargetInset, InADuelFramesTheOtherCannon) {

@@ -609,7 +609,15 @@ void GameScreen::drawPlaying() {
         statsPanel_.drawWorld(renderer_, m);
         renderer_.flush();
     }
-    if (const auto inset = targetInset(m, shown)) drawTargetInset(renderer_, matchView_, m, shown, *inset, o);
+    // Beside the Stats window when it is open where the close-up goes (last frame's place).
+    TargetInsetDef insetDef;
+    if (auto stats = statsPanel_.openRect()) {
+        const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+        for (std::size_t k = 0; k < 4; ++k) (*stats)[k] *= k % 2 == 0 ? scale.x : scale.y;
+        insetDef = clearOf(insetDef, shown, *stats);
+    }
+    if (const auto inset = targetInset(m, shown, insetDef))
+        drawTargetInset(renderer_, matchView_, m, shown, *inset, o);
 }
 
 void GameScreen::drawPanels() {

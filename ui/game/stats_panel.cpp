@@ -91,7 +91,10 @@ std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const 
     ImGui::SetNextWindowPos(ImVec2(display.x - 342, 44), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(330, 600), ImGuiCond_FirstUseEver);
     expanded_ = ImGui::Begin("Stats", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
+    openRect_.reset();
     if (expanded_) {
+        const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        openRect_ = {at.x, at.y, at.x + size.x, at.y + size.y};
         // --- Compare ------------------------------------------------------------------
         if (ImGui::CollapsingHeader("Compare integrators", ImGuiTreeNodeFlags_DefaultOpen)) {
             if (ImGui::Button(showCompare ? "Hide paths" : "Compare")) {

@@ -17,6 +17,7 @@
 #include "ui/game/match_view.h"
 #include "ui/render/renderer2d.h"
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -47,6 +48,10 @@ class StatsPanel {
     /// Compare paths and the charts, through the match's camera (begin() already called).
     void drawWorld(Renderer2D& r, const game::Match& match);
 
+    /// Where the window was drawn open in the last frame (ImGui's points, top-left
+    /// origin: x0, y0, x1, y1), or nothing while it is folded: what it covers.
+    std::optional<std::array<double, 4>> openRect() const { return openRect_; }
+
     bool showCompare = false; ///< draw the compare paths and their legend
     double historySeconds = 20.0; ///< how much of the energy plot is kept, s
 
@@ -70,6 +75,7 @@ class StatsPanel {
 
     charts::ChartsPanelState charts_;
     bool expanded_ = false; ///< the Stats window was open (not folded) this frame
+    std::optional<std::array<double, 4>> openRect_;
 };
 
 } // namespace ui
