@@ -124,15 +124,18 @@ std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const 
             count_ > 0) {
             // The ring buffer, oldest first: PlotLines starts at values_offset.
             const int n = static_cast<int>(count_);
+            // The plots span the panel (a negative width, "up to the right edge less 1",
+            // came out 4 px wide here).
+            const ImVec2 plotSize(ImGui::GetContentRegionAvail().x, 70.0f);
             const int offset = count_ < energy_.size() ? 0 : static_cast<int>(next_);
             const double drift = firstEnergy_ != 0.0 ? (last_.energy - firstEnergy_) / std::abs(firstEnergy_) : 0.0;
             char overlay[64];
             std::snprintf(overlay, sizeof overlay, "E = %.4g J (%+.2e)", last_.energy, drift);
             ImGui::PlotLines("##energy", energy_.data(), n, offset, overlay, FLT_MAX, FLT_MAX,
-                             ImVec2(-1, 70));
+                             plotSize);
             std::snprintf(overlay, sizeof overlay, "|p| = %.4g kg m/s", std::hypot(last_.momentumX, last_.momentumY));
             ImGui::PlotLines("##momentum", momentum_.data(), n, offset, overlay, FLT_MAX, FLT_MAX,
-                             ImVec2(-1, 70));
+                             plotSize);
             ImGui::TextDisabled("last %.0f s; particles, springs and Box2D bodies", historySeconds);
         }
         // --- Charts ----------------------------------------------------------------
