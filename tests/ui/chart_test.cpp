@@ -3,6 +3,7 @@
 #include "ui/charts/bench_charts.h"
 #include "ui/charts/chart.h"
 #include "ui/charts/chart_png.h"
+#include "ui/charts/charts_panel.h"
 
 #include <gtest/gtest.h>
 
@@ -202,4 +203,22 @@ TEST(BenchCharts, ScalingInANarrowPanelGivesTheBarsTheLowerLeftAndTheLegendTheLo
     EXPECT_GT(longestRun(box2d, 0, w / 2), 60) << "the Box2D bar, lower left";
     EXPECT_GT(longestRun(tuned, w / 2, w), 10) << "the legend's line, lower right";
     EXPECT_LT(longestRun(tuned, w / 2, w), 60) << "and no bar there";
+}
+
+// The in-game charts keep clear of a panel open over their left side (the sandbox's
+// tools): they start a gap right of it and keep their right edge; a panel elsewhere, or
+// one that would leave them under half their width, leaves them as they are.
+TEST(ChartsArea, StartsRightOfAPanelOpenOverItsLeftSide) {
+    const Rect area = chartsArea(1280, 720, 150);
+    EXPECT_DOUBLE_EQ(area.y, 150.0);
+    EXPECT_LE(area.y + area.h, 0.70 * 720 + 1e-9) << "above the panels at the bottom";
+    const Rect beside = rightOf(area, {12.0, 120.0, 348.0, 306.0}, 12.0);
+    EXPECT_DOUBLE_EQ(beside.x, 360.0);
+    EXPECT_DOUBLE_EQ(beside.x + beside.w, area.x + area.w);
+    EXPECT_DOUBLE_EQ(beside.y, area.y);
+    EXPECT_DOUBLE_EQ(beside.h, area.h);
+    const Rect below = rightOf(area, {12.0, 600.0, 348.0, 700.0}, 12.0);
+    EXPECT_DOUBLE_EQ(below.x, area.x) << "no overlap";
+    const Rect wide = rightOf(area, {12.0, 120.0, 700.0, 306.0}, 12.0);
+    EXPECT_DOUBLE_EQ(wide.x, area.x) << "it would leave under half";
 }

@@ -6,6 +6,7 @@
 // A press the match refuses (a spawn outside the world) says why on the HUD for a while.
 #include "ui/game/game_screen.h"
 #include "ui/platform/gl_context.h"
+#include "ui/platform/imgui_layer.h"
 
 #include <SDL.h>
 #include <gtest/gtest.h>
@@ -117,4 +118,25 @@ TEST(PanelPress, ARefusedPressSaysWhyOnTheHudForAWhile) {
     for (int i = 0; i < 200; ++i) // 3.3 s of frames
         s.screen->frame(1.0 / 60.0);
     EXPECT_EQ(s.screen->notice(), "") << "for a while, not for ever";
+}
+
+// What a panel covers is known between frames (events) and inside the next frame before
+// the panel is drawn again (the game's drawing, which keeps the target's close-up and the
+// charts clear of the panels): the same rectangle both times; nothing for a folded one.
+TEST(PanelPress, AnOpenPanelsRectangleIsKnownBetweenAndInsideFrames) {
+    Sandbox s;
+    ASSERT_NE(s.screen, nullptr);
+    const ImGuiWindow* tools = ImGui::FindWindowByName("Sandbox");
+    ASSERT_NE(tools, nullptr);
+    const auto between = ui::openWindowRect("Sandbox");
+    ASSERT_TRUE(between) << "the sandbox's tools open with the sandbox";
+    EXPECT_DOUBLE_EQ((*between)[0], tools->Pos.x);
+    EXPECT_DOUBLE_EQ((*between)[3], tools->Pos.y + tools->Size.y);
+    EXPECT_FALSE(ui::openWindowRect("Stats")) << "folded";
+    EXPECT_FALSE(ui::openWindowRect("no such panel"));
+    ImGui::NewFrame(); // the next frame has begun; the panels are not drawn yet
+    const auto inside = ui::openWindowRect("Sandbox");
+    ImGui::EndFrame();
+    ASSERT_TRUE(inside);
+    EXPECT_EQ(*inside, *between);
 }

@@ -16,6 +16,8 @@
 #include "game/bench/stability.h"
 #include "ui/charts/chart.h"
 
+#include <algorithm>
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -44,10 +46,22 @@ struct ChartsPanelRequests {
     bool applyChoice = false;
 };
 
-/// Where the charts go on a screen of w x h pixels: below the level's heading, from the
-/// left edge to short of the target's view and the Stats panel on the right.
-inline Rect chartsArea(double w, double h) {
-    return {0.02 * w, 0.12 * h, 0.66 * w, 0.55 * h};
+/// Where the charts go on a screen of w x h pixels: from `top` (px, below whatever the
+/// caller keeps at the top left) to above the panels at the bottom (7/10 of the way
+/// down), from the left edge to short of the target's view and the Stats panel.
+inline Rect chartsArea(double w, double h, double top) {
+    return {0.02 * w, top, 0.66 * w, std::min(0.55 * h, 0.70 * h - top)};
+}
+
+/// `area` less what `panel` (x0, y0, x1, y1, px) covers of its left side: it starts
+/// `gap` right of the panel where the two overlap (its right edge stays), unless that
+/// leaves under half of it.
+inline Rect rightOf(Rect area, const std::array<double, 4>& panel, double gap) {
+    const auto [x0, y0, x1, y1] = panel;
+    const bool overlaps = x0 < area.x + area.w && area.x < x1 && y0 < area.y + area.h && area.y < y1;
+    const double right = area.x + area.w, left = x1 + gap;
+    if (!overlaps || right - left < 0.5 * area.w) return area;
+    return {left, area.y, right - left, area.h};
 }
 
 /// The controls (view, scene, Measure, "accurate enough, fastest"), drawn into the

@@ -609,14 +609,12 @@ void GameScreen::drawPlaying() {
         statsPanel_.drawWorld(renderer_, m);
         renderer_.flush();
     }
-    // Beside the Stats window when it is open where the close-up goes (last frame's place).
+    // Beside the Stats window when it is open where the close-up goes (last frame's place);
+    // not while its charts take the middle of the view.
     TargetInsetDef insetDef;
-    if (auto stats = statsPanel_.openRect()) {
-        const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
-        for (std::size_t k = 0; k < 4; ++k) (*stats)[k] *= k % 2 == 0 ? scale.x : scale.y;
-        insetDef = clearOf(insetDef, shown, *stats);
-    }
-    if (const auto inset = targetInset(m, shown, insetDef))
+    if (const auto stats = openWindowRect("Stats")) insetDef = clearOf(insetDef, shown, *stats);
+    const auto inset = statsPanel_.chartsShown() ? std::nullopt : targetInset(m, shown, insetDef);
+    if (inset)
         drawTargetInset(renderer_, matchView_, m, shown, *inset, o);
 }
 

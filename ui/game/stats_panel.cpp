@@ -1,5 +1,7 @@
 #include "ui/game/stats_panel.h"
 
+#include "ui/platform/imgui_layer.h"
+
 #include "physics/diagnostics.h"
 
 #include <imgui.h>
@@ -91,10 +93,7 @@ std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const 
     ImGui::SetNextWindowPos(ImVec2(display.x - 342, 44), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(330, 600), ImGuiCond_FirstUseEver);
     expanded_ = ImGui::Begin("Stats", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
-    openRect_.reset();
     if (expanded_) {
-        const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-        openRect_ = {at.x, at.y, at.x + size.x, at.y + size.y};
         // --- Compare ------------------------------------------------------------------
         if (ImGui::CollapsingHeader("Compare integrators", ImGuiTreeNodeFlags_DefaultOpen)) {
             if (ImGui::Button(showCompare ? "Hide paths" : "Compare")) {
@@ -188,7 +187,7 @@ void StatsPanel::drawWorld(Renderer2D& r, const game::Match& match) {
             at.y += 16.0;
         }
     }
-    if (charts_.open && expanded_) { // folding the panel folds away its charts too
+    if (chartsShown()) { // folding the panel folds away its charts too
         // The charts (chartsArea) map pixels (chart.h), so they are drawn through a camera
         // whose units are pixels; the match's labels are kept and the match's camera
         // restored after.
@@ -197,7 +196,13 @@ void StatsPanel::drawWorld(Renderer2D& r, const game::Match& match) {
         std::vector<Label> labels = r.labels();
         const double w = world.width, h = world.height;
         r.begin(Camera::framing({0.0, 0.0}, {w, h}, world.width, world.height));
-        charts::drawChartsPanel(r, charts_, charts::chartsArea(w, h));
+        // Below the level's heading and the Sandbox panel's header under it, and right of
+        // that panel while it is open beside them (the sandbox's tools).
+        const double top = belowLevelHeading(w, h) + 30.0 * hudScale(w, h);
+        charts::Rect area = charts::chartsArea(w, h, top);
+        if (const auto tools = openWindowRect("Sandbox"))
+            area = charts::rightOf(area, *tools, 12.0 * hudScale(w, h));
+        charts::drawChartsPanel(r, charts_, area);
         r.flush();
         labels.insert(labels.end(), r.labels().begin(), r.labels().end());
         r.begin(world);

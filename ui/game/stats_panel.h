@@ -17,7 +17,6 @@
 #include "ui/game/match_view.h"
 #include "ui/render/renderer2d.h"
 
-#include <array>
 #include <optional>
 #include <vector>
 
@@ -48,9 +47,8 @@ class StatsPanel {
     /// Compare paths and the charts, through the match's camera (begin() already called).
     void drawWorld(Renderer2D& r, const game::Match& match);
 
-    /// Where the window was drawn open in the last frame (ImGui's points, top-left
-    /// origin: x0, y0, x1, y1), or nothing while it is folded: what it covers.
-    std::optional<std::array<double, 4>> openRect() const { return openRect_; }
+    /// The charts are drawn over the view (open, and the panel not folded).
+    bool chartsShown() const { return charts_.open && expanded_; }
 
     bool showCompare = false; ///< draw the compare paths and their legend
     double historySeconds = 20.0; ///< how much of the energy plot is kept, s
@@ -75,7 +73,6 @@ class StatsPanel {
 
     charts::ChartsPanelState charts_;
     bool expanded_ = false; ///< the Stats window was open (not folded) this frame
-    std::optional<std::array<double, 4>> openRect_;
 };
 
 } // namespace ui

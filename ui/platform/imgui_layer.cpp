@@ -113,13 +113,31 @@ bool ImGuiLayer::wantsKeyboard() const {
     return ImGui::GetIO().WantCaptureKeyboard;
 }
 
+namespace {
+
+// Whether the window was drawn in the last frame: its Active flag until the next frame
+// starts (NewFrame clears it), its WasActive flag from then until it begins again.
+bool drawnLastFrame(const ImGuiWindow& w) {
+    return (ImGui::GetCurrentContext()->WithinFrameScope ? w.WasActive : w.Active) && !w.Hidden;
+}
+
+} // namespace
+
+std::optional<std::array<double, 4>> openWindowRect(const char* name) {
+    const ImGuiWindow* w = ImGui::FindWindowByName(name);
+    if (!w || !drawnLastFrame(*w) || w->Collapsed) return std::nullopt;
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    return std::array<double, 4>{w->Pos.x * scale.x, w->Pos.y * scale.y,
+                                 (w->Pos.x + w->Size.x) * scale.x, (w->Pos.y + w->Size.y) * scale.y};
+}
+
 // ImGui's own hover test (FindHoveredWindow, run at the next frame's start) on the
-// windows the last frame drew: Active stays set until then.
+// windows the last frame drew.
 bool ImGuiLayer::pressOnWindow(const SDL_Event& event) const {
     if (event.type != SDL_MOUSEBUTTONDOWN) return false;
     const ImVec2 at(static_cast<float>(event.button.x), static_cast<float>(event.button.y));
     for (const ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
-        if (w->Active && !w->Hidden && !(w->Flags & ImGuiWindowFlags_NoMouseInputs) &&
+        if (drawnLastFrame(*w) && !(w->Flags & ImGuiWindowFlags_NoMouseInputs) &&
             w->OuterRectClipped.Contains(at))
             return true;
     return false;
