@@ -5,15 +5,30 @@
 
 namespace game {
 
+namespace {
+constexpr std::uint64_t kIdleTicks = 60 * 120; ///< a minute at the game's 120 Hz
+} // namespace
+
 HeadlessSummary runHeadless(const Level& level, const HeadlessOptions& o) {
     using Clock = std::chrono::steady_clock;
     Session session(level, o.session);
-    const std::uint64_t lastCommand = o.commands.empty() ? 0 : o.commands.back().tick;
-    const std::uint64_t limit = std::min(kMaxRunTicks, o.ticks.value_or(lastCommand + 60 * 120));
+    // Without a length: until the match is over, or a minute after the last command given
+    // or the last shot the computer fired (an autoplayed level of long flights is still
+    // being played; a computer that only passes its turns, as in a sandbox, is not).
+    std::uint64_t lastPlay = o.commands.empty() ? 0 : o.commands.back().tick;
+    std::size_t seen = 0; // of the session's recorded commands
+    auto limit = [&] {
+        if (o.ticks) return std::min(kMaxRunTicks, *o.ticks);
+        const std::vector<Command>& played = session.recording().commands;
+        for (; seen < played.size(); ++seen)
+            if (played[seen].kind == CommandKind::Fire)
+                lastPlay = std::max(lastPlay, played[seen].tick);
+        return std::min(kMaxRunTicks, lastPlay + kIdleTicks);
+    };
     HeadlessSummary s;
     std::size_t next = 0;
     double sim = 0.0, render = 0.0;
-    while (session.match().tick() < limit) {
+    while (session.match().tick() < limit()) {
         if (!o.ticks && session.match().over() && next >= o.commands.size()) break;
         auto t0 = Clock::now();
         while (next < o.commands.size() && o.commands[next].tick <= session.match().tick())

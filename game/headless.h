@@ -24,8 +24,9 @@ class FrameSink {
 
 struct HeadlessOptions {
     std::vector<Command> commands;     ///< applied at their ticks
-    std::optional<std::uint64_t> ticks;///< how long; default: the replay's length, or until
-                                       ///< the match is over or 60 s after the last command
+    std::optional<std::uint64_t> ticks;///< how long; default: until the match is over or
+                                       ///< 60 s after the last command or the computer's
+                                       ///< last shot
     SessionOptions session;            ///< difficulty, cpu seed, recording
     FrameSink* sink = nullptr;
     std::uint64_t every = 1;           ///< frame every K ticks

@@ -26,7 +26,8 @@ events, the score and the final state hash.
   --commands FILE    a JSON list of {"tick": t, "cmd": ...} (README.md, "Game rules";
                      the settings of "set" commands are listed below)
   --ticks N          how many ticks to simulate (default: the replay's length, or until
-                     the match is over, at most 60 s after the last command)
+                     the match is over, at most 60 s after the last command or the
+                     computer's last shot)
   --png DIR          write a PNG every K ticks (--every, default 60) into DIR, drawn
                      headlessly with the window's drawing code (OSMesa, or EGL)
   --video FILE       write the run as a video playing at real speed, drawn like --png:
