@@ -130,13 +130,16 @@ TEST(PanelPress, AnOpenPanelsRectangleIsKnownBetweenAndInsideFrames) {
     ASSERT_NE(tools, nullptr);
     const auto between = ui::openWindowRect("Sandbox");
     ASSERT_TRUE(between) << "the sandbox's tools open with the sandbox";
-    EXPECT_DOUBLE_EQ((*between)[0], tools->Pos.x);
-    EXPECT_DOUBLE_EQ((*between)[3], tools->Pos.y + tools->Size.y);
+    EXPECT_DOUBLE_EQ(between->x0, tools->Pos.x);
+    EXPECT_DOUBLE_EQ(between->y1, tools->Pos.y + tools->Size.y);
     EXPECT_FALSE(ui::openWindowRect("Stats")) << "folded";
     EXPECT_FALSE(ui::openWindowRect("no such panel"));
     ImGui::NewFrame(); // the next frame has begun; the panels are not drawn yet
     const auto inside = ui::openWindowRect("Sandbox");
     ImGui::EndFrame();
     ASSERT_TRUE(inside);
-    EXPECT_EQ(*inside, *between);
+    EXPECT_EQ(inside->x0, between->x0);
+    EXPECT_EQ(inside->y0, between->y0);
+    EXPECT_EQ(inside->x1, between->x1);
+    EXPECT_EQ(inside->y1, between->y1);
 }

@@ -74,17 +74,17 @@ TEST(TargetInset, MovesLeftOfAPanelOpenOverIt) {
     };
     const ui::TargetInsetDef plain;
     const auto before = rect(plain);
-    const std::array<double, 4> stats{938.0, 44.0, 1268.0, 644.0};
-    ASSERT_LT(stats[0], before[2]) << "the window covers the close-up's place";
+    const ui::PixelRect stats{938.0, 44.0, 1268.0, 644.0};
+    ASSERT_LT(stats.x0, before[2]) << "the window covers the close-up's place";
     const auto after = rect(ui::clearOf(plain, home, stats));
-    EXPECT_DOUBLE_EQ(after[2], stats[0] - plain.rightPx) << "left of the window, a gap apart";
+    EXPECT_DOUBLE_EQ(after[2], stats.x0 - plain.rightPx) << "left of the window, a gap apart";
     EXPECT_GE(after[0], 0.0);
     EXPECT_DOUBLE_EQ(after[1], before[1]);
     EXPECT_DOUBLE_EQ(after[2] - after[0], before[2] - before[0]) << "the same size";
 
-    const std::array<double, 4> elsewhere{12.0, 300.0, 300.0, 600.0};
+    const ui::PixelRect elsewhere{12.0, 300.0, 300.0, 600.0};
     EXPECT_EQ(rect(ui::clearOf(plain, home, elsewhere)), before);
-    const std::array<double, 4> wide{300.0, 44.0, 1268.0, 644.0};
+    const ui::PixelRect wide{300.0, 44.0, 1268.0, 644.0};
     EXPECT_EQ(rect(ui::clearOf(plain, home, wide)), before) << "no room left of it";
 }
 

@@ -15,9 +15,9 @@
 #include "game/bench/scaling.h"
 #include "game/bench/stability.h"
 #include "ui/charts/chart.h"
+#include "ui/render/pixel_rect.h"
 
 #include <algorithm>
-#include <array>
 #include <optional>
 #include <vector>
 
@@ -53,13 +53,11 @@ inline Rect chartsArea(double w, double h, double top) {
     return {0.02 * w, top, 0.66 * w, std::min(0.55 * h, 0.70 * h - top)};
 }
 
-/// `area` less what `panel` (x0, y0, x1, y1, px) covers of its left side: it starts
-/// `gap` right of the panel where the two overlap (its right edge stays), unless that
-/// leaves under half of it.
-inline Rect rightOf(Rect area, const std::array<double, 4>& panel, double gap) {
-    const auto [x0, y0, x1, y1] = panel;
-    const bool overlaps = x0 < area.x + area.w && area.x < x1 && y0 < area.y + area.h && area.y < y1;
-    const double right = area.x + area.w, left = x1 + gap;
+/// `area` less what `panel` covers of its left side: it starts `gap` right of the panel
+/// where the two overlap (its right edge stays), unless that leaves under half of it.
+inline Rect rightOf(Rect area, const PixelRect& panel, double gap) {
+    const double right = area.x + area.w, left = panel.x1 + gap;
+    const bool overlaps = panel.overlaps({area.x, area.y, right, area.y + area.h});
     if (!overlaps || right - left < 0.5 * area.w) return area;
     return {left, area.y, right - left, area.h};
 }

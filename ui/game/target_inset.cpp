@@ -82,14 +82,13 @@ std::optional<TargetInset> targetInset(const game::Match& m, const Camera& scree
     return inset;
 }
 
-TargetInsetDef clearOf(TargetInsetDef def, const Camera& screen, const std::array<double, 4>& panel) {
+TargetInsetDef clearOf(TargetInsetDef def, const Camera& screen, const PixelRect& panel) {
     const double w = std::round(def.widthFraction * screen.width), h = std::round(w * 9.0 / 16.0);
-    const double x1 = screen.width - def.rightPx, x0 = x1 - w, y0 = def.topPx, y1 = y0 + h;
-    const auto [px0, py0, px1, py1] = panel;
-    const bool covered = px0 < x1 && x0 < px1 && py0 < y1 && y0 < py1;
+    const double x1 = screen.width - def.rightPx;
     const double gap = def.rightPx;
-    if (!covered || px0 - gap - w < gap) return def;
-    def.rightPx = screen.width - px0 + gap;
+    if (!panel.overlaps({x1 - w, def.topPx, x1, def.topPx + h}) || panel.x0 - gap - w < gap)
+        return def;
+    def.rightPx = screen.width - panel.x0 + gap;
     return def;
 }
 

@@ -10,9 +10,9 @@
 
 #include "ui/game/match_view.h"
 #include "ui/render/camera.h"
+#include "ui/render/pixel_rect.h"
 #include "ui/render/renderer2d.h"
 
-#include <array>
 #include <optional>
 
 namespace game {
@@ -44,9 +44,9 @@ std::optional<std::pair<Vec2, Vec2>> aimedAtBox(const game::Match& match);
 std::optional<TargetInset> targetInset(const game::Match& match, const Camera& screen,
                                        const TargetInsetDef& def = {});
 
-/// `def` with the close-up moved left of `panel` (x0, y0, x1, y1, px) where the panel
-/// covers its place, if there is room left of it; else `def` as it is.
-TargetInsetDef clearOf(TargetInsetDef def, const Camera& screen, const std::array<double, 4>& panel);
+/// `def` with the close-up moved left of `panel` where the panel covers its place, if
+/// there is room left of it; else `def` as it is.
+TargetInsetDef clearOf(TargetInsetDef def, const Camera& screen, const PixelRect& panel);
 
 /// Draws the close-up over the frame just drawn through `screen` (no HUD, no preview,
 /// the effects as in the main view), with a frame and the distance from the cannon.

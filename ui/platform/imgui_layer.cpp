@@ -123,12 +123,12 @@ bool drawnLastFrame(const ImGuiWindow& w) {
 
 } // namespace
 
-std::optional<std::array<double, 4>> openWindowRect(const char* name) {
+std::optional<PixelRect> openWindowRect(const char* name) {
     const ImGuiWindow* w = ImGui::FindWindowByName(name);
     if (!w || !drawnLastFrame(*w) || w->Collapsed) return std::nullopt;
     const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
-    return std::array<double, 4>{w->Pos.x * scale.x, w->Pos.y * scale.y,
-                                 (w->Pos.x + w->Size.x) * scale.x, (w->Pos.y + w->Size.y) * scale.y};
+    return PixelRect{w->Pos.x * scale.x, w->Pos.y * scale.y, (w->Pos.x + w->Size.x) * scale.x,
+                     (w->Pos.y + w->Size.y) * scale.y};
 }
 
 // ImGui's own hover test (FindHoveredWindow, run at the next frame's start) on the

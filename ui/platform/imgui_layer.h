@@ -4,9 +4,9 @@
 #pragma once
 
 #include "ui/platform/gl_context.h"
+#include "ui/render/pixel_rect.h"
 #include "ui/render/renderer2d.h"
 
-#include <array>
 #include <optional>
 #include <span>
 
@@ -17,9 +17,8 @@ namespace ui {
 class SdlWindow;
 
 /// Where the ImGui window `name` was drawn open (not folded) in the last frame, in
-/// framebuffer pixels (x0, y0, x1, y1, top-left origin), or nothing: what a panel covers,
-/// for what the game draws beside it.
-std::optional<std::array<double, 4>> openWindowRect(const char* name);
+/// framebuffer pixels, or nothing: what a panel covers, for what the game draws beside it.
+std::optional<PixelRect> openWindowRect(const char* name);
 
 class ImGuiLayer {
   public:
