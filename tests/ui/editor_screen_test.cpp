@@ -7,6 +7,7 @@
 #include "ui/game/game_screen.h"
 #include "ui/platform/gl_context.h"
 #include "ui/render/screenshot.h"
+#include "sdl_events.h"
 
 #include <SDL.h>
 #include <gtest/gtest.h>
@@ -54,22 +55,8 @@ SDL_Event key(SDL_Keycode sym) {
     return e;
 }
 
-SDL_Event button(Uint32 type, Vec2 pixel) {
-    SDL_Event e{};
-    e.type = type;
-    e.button.button = SDL_BUTTON_LEFT;
-    e.button.x = static_cast<int>(pixel.x);
-    e.button.y = static_cast<int>(pixel.y);
-    return e;
-}
-
-SDL_Event motion(Vec2 pixel) {
-    SDL_Event e{};
-    e.type = SDL_MOUSEMOTION;
-    e.motion.x = static_cast<int>(pixel.x);
-    e.motion.y = static_cast<int>(pixel.y);
-    return e;
-}
+using test_events::button;
+using test_events::motion;
 
 /// The PNG as written, RGBA, row 0 at the top.
 ui::Image readPng(const std::string& path) {

@@ -7,6 +7,7 @@
 #include "ui/game/game_screen.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
+#include "sdl_events.h"
 
 #include <SDL.h>
 #include <gtest/gtest.h>
@@ -24,23 +25,10 @@ namespace fs = std::filesystem;
 
 const fs::path kRoot = fs::path(__FILE__).parent_path().parent_path().parent_path();
 
-SDL_Event button(Uint32 type, ImVec2 pixel, Uint8 which = SDL_BUTTON_LEFT) {
-    SDL_Event e{};
-    e.type = type;
-    e.button.button = which;
-    e.button.x = static_cast<int>(pixel.x);
-    e.button.y = static_cast<int>(pixel.y);
-    return e;
-}
+using test_events::button;
+using test_events::motion;
 
-SDL_Event motion(ImVec2 pixel, int dx) {
-    SDL_Event e{};
-    e.type = SDL_MOUSEMOTION;
-    e.motion.x = static_cast<int>(pixel.x);
-    e.motion.y = static_cast<int>(pixel.y);
-    e.motion.xrel = dx;
-    return e;
-}
+phys::Vec2 pixel(ImVec2 p) { return {p.x, p.y}; }
 
 int spawns(const ui::GameScreen& screen) {
     int n = 0;
@@ -77,8 +65,8 @@ struct Sandbox {
         fs::remove_all(settings);
     }
     void click(ImVec2 at) {
-        screen->handleEvent(button(SDL_MOUSEBUTTONDOWN, at));
-        screen->handleEvent(button(SDL_MOUSEBUTTONUP, at));
+        screen->handleEvent(button(SDL_MOUSEBUTTONDOWN, pixel(at)));
+        screen->handleEvent(button(SDL_MOUSEBUTTONUP, pixel(at)));
         screen->frame(1.0 / 60.0);
     }
 };
@@ -107,9 +95,9 @@ TEST(PanelPress, ARefusedPressSaysWhyOnTheHudForAWhile) {
     EXPECT_EQ(s.screen->notice(), "");
     // Drag the view right with the right button until the left edge of the screen lies
     // left of the world (x = 0), and press there.
-    const ImVec2 from(700.0f, 450.0f), to(1100.0f, 450.0f);
+    const phys::Vec2 from{700.0, 450.0}, to{1100.0, 450.0};
     s.screen->handleEvent(button(SDL_MOUSEBUTTONDOWN, from, SDL_BUTTON_RIGHT));
-    s.screen->handleEvent(motion(to, static_cast<int>(to.x - from.x)));
+    s.screen->handleEvent(motion(to, to - from));
     s.screen->handleEvent(button(SDL_MOUSEBUTTONUP, to, SDL_BUTTON_RIGHT));
     s.screen->frame(1.0 / 60.0);
     s.click(ImVec2(20.0f, 450.0f));
