@@ -40,6 +40,9 @@ AimError aimError(Difficulty d) {
 
 namespace {
 
+/// A path that passes this close to the aim point is on target, m.
+constexpr double kOnTarget = 0.5;
+
 // Closest approach of a previewed path to the target, m.
 double miss(const std::vector<Vec2>& path, Vec2 target) {
     double best = INFINITY;
@@ -58,36 +61,39 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
     const CannonState& c = match.cannon();
     AimSolution out;
     const double g = -match.world().def().forces.gravity.y;
+    auto flown = [&](double angleDeg, double speed) {
+        ++out.trials;
+        return miss(match.previewTrajectory(angleDeg, speed, 20.0, target.x, projectile), target);
+    };
     if (match.ballisticOnly()) {
-        // Exact: the smallest speed step from the current power that reaches, low shot.
-        for (double s = std::max(5.0, c.speedMps); s <= c.def.maxSpeedMps + 1e-9; s += 2.5) {
-            // The muzzle moves with the angle; two fixed-point passes settle it.
-            double angle = c.angleDeg;
-            std::vector<FiringSolution> sol;
-            for (int pass = 0; pass < 3; ++pass) {
-                sol = solveFiring(match.muzzle(angle), target, s, g);
-                if (sol.empty()) break;
-                angle = sol.front().angleDeg;
-            }
-            if (!sol.empty()) {
+        // Exact in the open: the smallest speed step from the current power that reaches,
+        // the low arc, then the high one. The closed form knows no walls or ceilings, so
+        // each arc is flown once through the same simulation and kept only if nothing
+        // stops it short of the target (a wall to lob over, a ceiling to stay under).
+        for (double s = std::max(5.0, c.speedMps); s <= c.def.maxSpeedMps + 1e-9; s += 2.5)
+            for (std::size_t arc = 0; arc < 2; ++arc) {
+                // The muzzle moves with the angle; two fixed-point passes settle it.
+                double angle = c.angleDeg;
+                std::vector<FiringSolution> sol;
+                for (int pass = 0; pass < 3; ++pass) {
+                    sol = solveFiring(match.muzzle(angle), target, s, g);
+                    if (sol.size() <= arc) break;
+                    angle = sol[arc].angleDeg;
+                }
+                if (sol.size() <= arc || !(flown(angle, s) < kOnTarget)) continue;
                 out.angleDeg = angle;
                 out.speedMps = s;
                 out.missM = 0.0;
                 out.exact = true;
                 return out;
             }
-        }
     }
     // Trial shots through the same simulation: a coarse sweep of elevations, then a
     // golden-section search on the closest approach, at increasing power from what a
     // vacuum shot would need until a path passes within half a metre.
     const double dir = target.x >= c.def.position.x ? 1.0 : -1.0;
     auto toAngle = [&](double elevation) { return dir > 0 ? elevation : 180.0 - elevation; };
-    auto trial = [&](double elevation, double speed) {
-        ++out.trials;
-        return miss(match.previewTrajectory(toAngle(elevation), speed, 20.0, target.x, projectile),
-                    target);
-    };
+    auto trial = [&](double elevation, double speed) { return flown(toAngle(elevation), speed); };
     const Vec2 d = target - c.def.position;
     const double vacuum = std::sqrt(std::max(0.0, g * (d.y + length(d)))); // least speed in vacuum
     const double step = 0.1 * c.def.maxSpeedMps;
@@ -131,7 +137,7 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
             out.angleDeg = toAngle(bestElev);
             out.speedMps = s;
         }
-        if (bestMiss < 0.5 || s >= c.def.maxSpeedMps) break;
+        if (bestMiss < kOnTarget || s >= c.def.maxSpeedMps) break;
     }
     return out;
 }

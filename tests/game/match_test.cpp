@@ -55,6 +55,28 @@ TEST(Match, FiringSolutionHitsTheFirstTargetOfEarthBasics) {
     EXPECT_EQ(count(m, EventKind::TurnOver), 1);
 }
 
+// The closed form knows no walls: on Over the wall the low arc at the least speed that
+// reaches runs into the steel wall 28 m tall between the cannon and the first target. The
+// computer's aim is flown before it is kept, so it takes the high arc over the wall (or
+// more speed) and hits.
+TEST(Match, TheFiringSolutionLobsOverAWallTheLowArcWouldHit) {
+    Match m(level("13_over_the_wall.json"));
+    ASSERT_TRUE(m.ballisticOnly());
+    const Vec2 target = m.targets()[0].position;
+    const AimSolution aim = aimAt(m, target);
+    EXPECT_TRUE(aim.exact);
+    EXPECT_GT(aim.trials, 1) << "the low arc was flown, and refused";
+    const auto low = solveFiring(m.muzzle(aim.angleDeg), target, aim.speedMps,
+                                 -m.world().def().forces.gravity.y);
+    ASSERT_EQ(low.size(), 2u);
+    EXPECT_GT(aim.angleDeg, low.front().angleDeg + 10.0) << "not the low arc";
+    EXPECT_EQ(m.apply(cmd(CommandKind::Aim, aim.angleDeg)), "");
+    EXPECT_EQ(m.apply(cmd(CommandKind::Power, aim.speedMps)), "");
+    EXPECT_EQ(m.apply(cmd(CommandKind::Fire)), "");
+    untilShotOver(m);
+    EXPECT_TRUE(m.targets()[0].hit);
+}
+
 TEST(Match, ClearingEveryTargetEndsWithStarsAndBonus) {
     Match m(level("01_earth_basics.json"));
     for (std::size_t t = 0; t < m.targets().size(); ++t) {
