@@ -97,19 +97,10 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
     const Vec2 d = target - c.def.position;
     const double vacuum = std::sqrt(std::max(0.0, g * (d.y + length(d)))); // least speed in vacuum
     const double step = 0.1 * c.def.maxSpeedMps;
-    for (double s = std::min(c.def.maxSpeedMps, std::max(10.0, 1.15 * vacuum));;
-         s = std::min(c.def.maxSpeedMps, s + step)) {
-        double bestElev = 45.0, bestMiss = INFINITY;
-        for (double e = 10.0; e <= 80.0; e += 10.0) {
-            const double m = trial(e, s);
-            if (m < bestMiss) {
-                bestMiss = m;
-                bestElev = e;
-            }
-        }
-        // Golden section on [best - 10, best + 10]: one new trial per iteration.
+    // Golden section on [elevation - 10, elevation + 10]: one new trial per iteration.
+    auto refine = [&](double elevation, double s) {
         const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
-        double lo = std::max(0.0, bestElev - 10.0), hi = std::min(89.0, bestElev + 10.0);
+        double lo = std::max(0.0, elevation - 10.0), hi = std::min(89.0, elevation + 10.0);
         double x1 = hi - phi * (hi - lo), x2 = lo + phi * (hi - lo);
         double m1 = trial(x1, s), m2 = trial(x2, s);
         for (int it = 0; it < 16; ++it) {
@@ -127,10 +118,32 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
                 m2 = trial(x2, s);
             }
         }
-        const double e = m1 < m2 ? x1 : x2, m = std::min(m1, m2);
-        if (m < bestMiss) {
-            bestMiss = m;
-            bestElev = e;
+        return m1 < m2 ? std::pair{x1, m1} : std::pair{x2, m2};
+    };
+    for (double s = std::min(c.def.maxSpeedMps, std::max(10.0, 1.15 * vacuum));;
+         s = std::min(c.def.maxSpeedMps, s + step)) {
+        // The coarse sweep, its best elevation overall and its best of the other family
+        // (below 45 degrees, or above): a low path that ends on cover near the target can
+        // come closer than a steep one that drops onto it, so the steep one is refined
+        // too when the first does not reach.
+        double bestElev = 45.0, bestMiss = INFINITY;
+        double coarse[8];
+        for (int k = 0; k < 8; ++k) {
+            const double e = 10.0 + 10.0 * k;
+            coarse[k] = trial(e, s);
+            if (coarse[k] < bestMiss) {
+                bestMiss = coarse[k];
+                bestElev = e;
+            }
+        }
+        if (const auto [e, m] = refine(bestElev, s); m < bestMiss) bestMiss = m, bestElev = e;
+        if (!(bestMiss < kOnTarget)) {
+            const bool steep = bestElev > 45.0;
+            double otherElev = 0.0, otherMiss = INFINITY;
+            for (int k = 0; k < 8; ++k)
+                if ((10.0 + 10.0 * k > 45.0) != steep && coarse[k] < otherMiss)
+                    otherMiss = coarse[k], otherElev = 10.0 + 10.0 * k;
+            if (const auto [e, m] = refine(otherElev, s); m < bestMiss) bestMiss = m, bestElev = e;
         }
         if (bestMiss < out.missM) {
             out.missM = bestMiss;

@@ -77,6 +77,21 @@ TEST(Match, TheFiringSolutionLobsOverAWallTheLowArcWouldHit) {
     EXPECT_TRUE(m.targets()[0].hit);
 }
 
+// With drag the computer aims by trial shots. In the Bunker the low paths end on the cover
+// in front of the target, and one of them comes closer than any steep path of the coarse
+// sweep; refining it alone never reaches. The steep family is refined as well, and a
+// path that drops onto the target is found.
+TEST(Match, TrialShotsDropOntoATargetBehindCover) {
+    Match m(level("27_bunker.json"));
+    ASSERT_FALSE(m.ballisticOnly());
+    const auto target = chooseTarget(m);
+    ASSERT_TRUE(target);
+    const AimSolution aim = aimAt(m, *target);
+    EXPECT_FALSE(aim.exact);
+    EXPECT_LT(aim.missM, 0.5) << "at " << aim.angleDeg << " deg, " << aim.speedMps << " m/s";
+    EXPECT_GT(aim.angleDeg, 45.0) << "steep";
+}
+
 TEST(Match, ClearingEveryTargetEndsWithStarsAndBonus) {
     Match m(level("01_earth_basics.json"));
     for (std::size_t t = 0; t < m.targets().size(); ++t) {
