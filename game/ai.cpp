@@ -43,14 +43,21 @@ namespace {
 /// A path that passes this close to the aim point is on target, m.
 constexpr double kOnTarget = 0.5;
 
-// Closest approach of a previewed path to the target, m.
-double miss(const std::vector<Vec2>& path, Vec2 target) {
-    double best = INFINITY;
+// Closest approach of a previewed path (a sample a tick, from the muzzle) to the target:
+// how close, m, and when, s after the shot.
+struct Approach {
+    double miss = INFINITY;
+    double seconds = 0.0;
+};
+
+Approach closestApproach(const std::vector<Vec2>& path, Vec2 target, double tick) {
+    Approach best;
     for (std::size_t i = 1; i < path.size(); ++i) {
         // Distance from the target to the segment between samples.
         const Vec2 a = path[i - 1], b = path[i], ab = b - a;
         const double t = std::clamp(dot(target - a, ab) / std::max(1e-12, lengthSquared(ab)), 0.0, 1.0);
-        best = std::min(best, length(a + ab * t - target));
+        const double d = length(a + ab * t - target);
+        if (d < best.miss) best = {d, (static_cast<double>(i - 1) + t) * tick};
     }
     return best;
 }
@@ -61,10 +68,12 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
     const CannonState& c = match.cannon();
     AimSolution out;
     const double g = -match.world().def().forces.gravity.y;
-    auto flown = [&](double angleDeg, double speed) {
+    auto approach = [&](double angleDeg, double speed) {
         ++out.trials;
-        return miss(match.previewTrajectory(angleDeg, speed, 20.0, target.x, projectile), target);
+        return closestApproach(match.previewTrajectory(angleDeg, speed, 20.0, target.x, projectile),
+                               target, match.world().def().tickSeconds);
     };
+    auto flown = [&](double angleDeg, double speed) { return approach(angleDeg, speed).miss; };
     if (match.ballisticOnly()) {
         // Exact in the open: the smallest speed step from the current power that reaches,
         // the low arc, then the high one. The closed form knows no walls or ceilings, so
@@ -80,11 +89,14 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
                     if (sol.size() <= arc) break;
                     angle = sol[arc].angleDeg;
                 }
-                if (sol.size() <= arc || !(flown(angle, s) < kOnTarget)) continue;
+                if (sol.size() <= arc) continue;
+                const Approach a = approach(angle, s);
+                if (!(a.miss < kOnTarget)) continue;
                 out.angleDeg = angle;
                 out.speedMps = s;
                 out.missM = 0.0;
                 out.exact = true;
+                out.flightSeconds = a.seconds;
                 return out;
             }
     }
@@ -152,6 +164,7 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
         }
         if (bestMiss < kOnTarget || s >= c.def.maxSpeedMps) break;
     }
+    if (std::isfinite(out.missM)) out.flightSeconds = approach(out.angleDeg, out.speedMps).seconds;
     return out;
 }
 
@@ -214,7 +227,16 @@ std::vector<Command> ComputerPlayer::takeTurn(const Match& match, std::uint64_t 
         projectile = static_cast<std::size_t>(std::find(list.begin(), list.end(), *weapon) -
                                               list.begin());
     }
-    const AimSolution aim = aimAt(match, *target, projectile);
+    AimSolution aim = aimAt(match, *target, projectile);
+    // A moving target is led: aimed at where it will be when the shell gets there (the
+    // flight time of the aim at where it is now, then of the aim at that point).
+    for (const TargetState& t : match.targets())
+        if (!t.hit && t.def.path.size() >= 2 && t.def.speedMps > 0.0 && t.position == *target) {
+            for (int pass = 0; pass < 2; ++pass)
+                aim = aimAt(match, targetPositionAt(t.def, match.time() + aim.flightSeconds),
+                            projectile);
+            break;
+        }
     const AimError err = aimError(difficulty_);
     Command a;
     a.tick = tick;

@@ -34,6 +34,7 @@ struct AimSolution {
     double missM = INFINITY; ///< closest approach of the chosen path to the target (0 = exact)
     bool exact = false;      ///< from the closed-form firing solution
     int trials = 0;          ///< trial shots simulated
+    double flightSeconds = 0.0; ///< from the muzzle to the closest approach, s
 };
 
 /// Best aim from the current cannon at `target`, without error. Exact when the match is

@@ -78,6 +78,11 @@ struct TargetState {
     double closestInside = INFINITY;
 };
 
+/// Where a target is `t` seconds into the match: back and forth along its path at its
+/// speed (by arc length), or at its position when it has no path. The match moves its
+/// targets by it, and the computer leads a moving one by it.
+phys::Vec2 targetPositionAt(const Target& target, double t);
+
 struct BlockState {
     Block def;
     phys::BodyId body;

@@ -215,6 +215,23 @@ TEST(ComputerPlayer, AimsAtATargetBlobStillInPlace) {
     EXPECT_EQ(turn.back().kind, CommandKind::Fire);
 }
 
+// On the Water level the first target sails along the harbour at 2 m/s; a shell takes
+// seconds to get there, so the target is metres on by then. The computer aims at where it
+// will be when the shell arrives, and hits it with its first shot.
+TEST(ComputerPlayer, LeadsAMovingTarget) {
+    Match m(level("08_water.json"));
+    const Target& boat = m.targets()[0].def;
+    ASSERT_GE(boat.path.size(), 2u);
+    ASSERT_GT(boat.speedMps, 0.0);
+    ComputerPlayer cpu(Difficulty::Hard, 1);
+    for (const Command& c : cpu.takeTurn(m, m.tick())) m.apply(c);
+    const phys::Vec2 atFire = m.targets()[0].position;
+    untilShotOver(m);
+    EXPECT_TRUE(m.targets()[0].hit);
+    EXPECT_GT(length(m.targets()[0].position - atFire), 2.0 * boat.radius)
+        << "it moved more than its width during the flight";
+}
+
 TEST(ComputerPlayer, TrialShotsFindTheTargetWithoutError) {
     Match m(level("10_duel.json"));
     ASSERT_FALSE(m.ballisticOnly());
