@@ -148,9 +148,9 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
                 bestElev = e;
             }
         }
+        const bool steep = bestElev > 45.0; // the family of the best coarse elevation
         if (const auto [e, m] = refine(bestElev, s); m < bestMiss) bestMiss = m, bestElev = e;
         if (!(bestMiss < kOnTarget)) {
-            const bool steep = bestElev > 45.0;
             double otherElev = 0.0, otherMiss = INFINITY;
             for (int k = 0; k < 8; ++k)
                 if ((10.0 + 10.0 * k > 45.0) != steep && coarse[k] < otherMiss)
