@@ -204,6 +204,22 @@ double ComputerPlayer::gaussian() {
     return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
 }
 
+const TargetState* movingTargetAt(const Match& match, Vec2 target) {
+    for (const TargetState& t : match.targets())
+        if (!t.hit && t.def.path.size() >= 2 && t.def.speedMps > 0.0 && t.position == target)
+            return &t;
+    return nullptr;
+}
+
+AimSolution aimToFireNow(const Match& match, Vec2 target, std::optional<std::size_t> projectile) {
+    AimSolution aim = aimAt(match, target, projectile);
+    if (const TargetState* moving = movingTargetAt(match, target))
+        for (int pass = 0; pass < 2; ++pass)
+            aim = aimAt(match, targetPositionAt(moving->def, match.time() + aim.flightSeconds),
+                        projectile);
+    return aim;
+}
+
 std::vector<Command> ComputerPlayer::takeTurn(const Match& match, std::uint64_t tick) {
     std::vector<Command> out;
     const auto target = chooseTarget(match);
@@ -227,16 +243,7 @@ std::vector<Command> ComputerPlayer::takeTurn(const Match& match, std::uint64_t 
         projectile = static_cast<std::size_t>(std::find(list.begin(), list.end(), *weapon) -
                                               list.begin());
     }
-    AimSolution aim = aimAt(match, *target, projectile);
-    // A moving target is led: aimed at where it will be when the shell gets there (the
-    // flight time of the aim at where it is now, then of the aim at that point).
-    for (const TargetState& t : match.targets())
-        if (!t.hit && t.def.path.size() >= 2 && t.def.speedMps > 0.0 && t.position == *target) {
-            for (int pass = 0; pass < 2; ++pass)
-                aim = aimAt(match, targetPositionAt(t.def, match.time() + aim.flightSeconds),
-                            projectile);
-            break;
-        }
+    const AimSolution aim = aimToFireNow(match, *target, projectile);
     const AimError err = aimError(difficulty_);
     Command a;
     a.tick = tick;

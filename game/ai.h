@@ -43,6 +43,15 @@ struct AimSolution {
 AimSolution aimAt(const Match& match, phys::Vec2 target,
                   std::optional<std::size_t> projectile = {});
 
+/// The moving target (a disc on a path) at `target`, if the point is one; else null.
+const TargetState* movingTargetAt(const Match& match, phys::Vec2 target);
+
+/// aimAt for a shot fired now: a moving target is led, aimed at where it will be when
+/// the shell gets there (the flight time of the aim at where it is now, then of the aim
+/// at that point). The computer's turn and the window's hint aim by it.
+AimSolution aimToFireNow(const Match& match, phys::Vec2 target,
+                         std::optional<std::size_t> projectile = {});
+
 class ComputerPlayer {
   public:
     explicit ComputerPlayer(Difficulty d, std::uint64_t seed) : difficulty_(d), rng_(seed) {}

@@ -716,14 +716,18 @@ void MatchView::drawPreview(Renderer2D& r, const Match& m, const PendingAim& aim
 
 void MatchView::drawHint(Renderer2D& r, const Match& m) {
     const phys::WorldDef& d = m.world().def();
+    // A moving target's lead changes as it moves: aimed anew every quarter second.
+    const auto target = game::chooseTarget(m);
+    const bool moving = target && game::movingTargetAt(m, *target);
     const AimKey key{0.0, 0.0, m.wind(), d.forces.gravity.y, d.tickSeconds, m.currentPlayer(),
                      m.shotsFired(), static_cast<int>(d.integrator),
-                     static_cast<int>(m.cannon().projectile), static_cast<int>(d.forces.drag)};
+                     static_cast<int>(m.cannon().projectile), static_cast<int>(d.forces.drag),
+                     moving ? std::floor(m.time() / 0.25) : 0.0};
     if (!(key == hintKey_)) {
         hintKey_ = key;
         hint_.reset();
-        if (const auto target = game::chooseTarget(m)) {
-            const game::AimSolution s = game::aimAt(m, *target);
+        if (target) {
+            const game::AimSolution s = game::aimToFireNow(m, *target);
             if (std::isfinite(s.missM)) {
                 hint_ = PendingAim{s.angleDeg, s.speedMps};
                 hintExact_ = s.exact;

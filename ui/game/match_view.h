@@ -131,6 +131,7 @@ class MatchView {
     struct AimKey {
         double angle = 0, speed = 0, wind = 0, gravity = 0, tick = 0;
         int player = -1, shots = -1, integrator = -1, projectile = -1, drag = -1;
+        double moment = 0; ///< for an aim that changes with time (a moving target's lead)
         bool operator==(const AimKey&) const = default;
     };
     AimKey previewKey_, hintKey_;
