@@ -1,6 +1,7 @@
 #include "game/ai.h"
 
 #include "game/ai_weapons.h"
+#include "game/weapons.h"
 
 #include "physics/ballistics.h"
 
@@ -232,18 +233,29 @@ std::vector<Command> ComputerPlayer::takeTurn(const Match& match, std::uint64_t 
     }
     // The weapon first, so the trial shots fly what will be fired.
     const CannonState& c = match.cannon();
+    const auto& list = c.def.projectiles;
+    auto indexOf = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(list.begin(), list.end(), name) - list.begin());
+    };
     std::size_t projectile = c.projectile;
-    if (const auto weapon = chooseWeapon(match, *target)) {
+    if (const auto weapon = chooseWeapon(match, *target)) projectile = indexOf(*weapon);
+    AimSolution aim = aimToFireNow(match, *target, projectile);
+    // What it chose does not reach (a light ball into a headwind): another projectile
+    // with rounds left that does, or comes closest.
+    if (!(aim.missM < kOnTarget))
+        for (std::size_t k = 0; k < list.size(); ++k) {
+            const bool spent = k < c.ammoLeft.size() && c.ammoLeft[k] == 0;
+            if (k == projectile || spent || !knownProjectile(list[k])) continue;
+            const AimSolution other = aimToFireNow(match, *target, k);
+            if (other.missM < aim.missM) aim = other, projectile = k;
+        }
+    if (projectile != c.projectile) {
         Command sel;
         sel.tick = tick;
         sel.kind = CommandKind::Select;
-        sel.text = *weapon;
+        sel.text = list[projectile];
         out.push_back(sel);
-        const auto& list = c.def.projectiles;
-        projectile = static_cast<std::size_t>(std::find(list.begin(), list.end(), *weapon) -
-                                              list.begin());
     }
-    const AimSolution aim = aimToFireNow(match, *target, projectile);
     const AimError err = aimError(difficulty_);
     Command a;
     a.tick = tick;

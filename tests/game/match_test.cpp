@@ -232,6 +232,21 @@ TEST(ComputerPlayer, LeadsAMovingTarget) {
         << "it moved more than its width during the flight";
 }
 
+// Into Headwind's steady 10 m/s wind the tennis ball, selected at the start, falls short
+// of the first target at any power; the computer takes a heavier ball that reaches, and hits.
+TEST(ComputerPlayer, TakesAProjectileThatReachesWhenTheSelectedOneCannot) {
+    Match m(level("19_headwind.json"));
+    ASSERT_EQ(m.cannon().def.projectiles[m.cannon().projectile], "tennis-ball");
+    ComputerPlayer cpu(Difficulty::Hard, 1);
+    const std::vector<Command> turn = cpu.takeTurn(m, m.tick());
+    ASSERT_FALSE(turn.empty());
+    EXPECT_EQ(turn.front().kind, CommandKind::Select);
+    EXPECT_NE(turn.front().text, "tennis-ball");
+    for (const Command& c : turn) EXPECT_EQ(m.apply(c), "");
+    untilShotOver(m);
+    EXPECT_TRUE(m.targets()[0].hit);
+}
+
 TEST(ComputerPlayer, TrialShotsFindTheTargetWithoutError) {
     Match m(level("10_duel.json"));
     ASSERT_FALSE(m.ballisticOnly());
