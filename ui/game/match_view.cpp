@@ -240,6 +240,24 @@ void drawWater(Renderer2D& r, const Match& m) {
     }
 }
 
+// Left and right of the level's bounds (a view zoomed or panned past them): shaded, the
+// edge drawn, for nothing there is reached, spawned or scored. (Above and below, the sky
+// and the soil say enough; the home view stays within the sides where it can.)
+void drawOutsideTheLevel(Renderer2D& r, const Match& m) {
+    const Camera& c = r.camera();
+    const Vec2 lo = c.visibleMin(), hi = c.visibleMax();
+    const double left = m.level().worldMin.x, right = m.level().worldMax.x;
+    const Color shade = Color::hex(0x000000, 0.35f), edge = Color::hex(0xffffff, 0.35f);
+    if (lo.x < left) {
+        r.fillRectGradient(lo, {std::min(left, hi.x), hi.y}, shade, shade);
+        if (left < hi.x) r.line({left, lo.y}, {left, hi.y}, edge, 1.5f);
+    }
+    if (hi.x > right) {
+        r.fillRectGradient({std::max(right, lo.x), lo.y}, hi, shade, shade);
+        if (right > lo.x) r.line({right, lo.y}, {right, hi.y}, edge, 1.5f);
+    }
+}
+
 void drawObstacles(Renderer2D& r, const Match& m) {
     for (const game::Obstacle& o : m.level().obstacles) {
         switch (o.shape) {
@@ -786,6 +804,7 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
         drawWeaponShell(r, m, rad);
     }
     drawWater(r, m);
+    drawOutsideTheLevel(r, m);
     if (o.effects) {
         drawEffectsLayer(r, effects_);
         drawShotFeedback(r, effects_);
