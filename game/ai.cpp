@@ -69,10 +69,12 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
     const CannonState& c = match.cannon();
     AimSolution out;
     const double g = -match.world().def().forces.gravity.y;
+    int bounces = 0; // contacts a trial shot flies on through
     auto approach = [&](double angleDeg, double speed) {
         ++out.trials;
-        return closestApproach(match.previewTrajectory(angleDeg, speed, 20.0, target.x, projectile),
-                               target, match.world().def().tickSeconds);
+        return closestApproach(
+            match.previewTrajectory(angleDeg, speed, 20.0, target.x, projectile, bounces), target,
+            match.world().def().tickSeconds);
     };
     auto flown = [&](double angleDeg, double speed) { return approach(angleDeg, speed).miss; };
     if (match.ballisticOnly()) {
@@ -133,38 +135,44 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
         }
         return m1 < m2 ? std::pair{x1, m1} : std::pair{x2, m2};
     };
-    for (double s = std::min(c.def.maxSpeedMps, std::max(10.0, 1.15 * vacuum));;
-         s = std::min(c.def.maxSpeedMps, s + step)) {
-        // The coarse sweep, its best elevation overall and its best of the other family
-        // (below 45 degrees, or above): a low path that ends on cover near the target can
-        // come closer than a steep one that drops onto it, so the steep one is refined
-        // too when the first does not reach.
-        double bestElev = 45.0, bestMiss = INFINITY;
-        double coarse[8];
-        for (int k = 0; k < 8; ++k) {
-            const double e = 10.0 + 10.0 * k;
-            coarse[k] = trial(e, s);
-            if (coarse[k] < bestMiss) {
-                bestMiss = coarse[k];
-                bestElev = e;
+    // Straight paths first; when none reaches, paths that fly on through up to two
+    // contacts (a ceiling to bank off, water to skip on).
+    int found = 0; // the bounces of the best path
+    for (; bounces <= 2 && !(out.missM < kOnTarget); bounces += 2)
+        for (double s = std::min(c.def.maxSpeedMps, std::max(10.0, 1.15 * vacuum));;
+             s = std::min(c.def.maxSpeedMps, s + step)) {
+            // The coarse sweep, its best elevation overall and its best of the other family
+            // (below 45 degrees, or above): a low path that ends on cover near the target can
+            // come closer than a steep one that drops onto it, so the steep one is refined
+            // too when the first does not reach.
+            double bestElev = 45.0, bestMiss = INFINITY;
+            double coarse[8];
+            for (int k = 0; k < 8; ++k) {
+                const double e = 10.0 + 10.0 * k;
+                coarse[k] = trial(e, s);
+                if (coarse[k] < bestMiss) {
+                    bestMiss = coarse[k];
+                    bestElev = e;
+                }
             }
+            const bool steep = bestElev > 45.0; // the family of the best coarse elevation
+            if (const auto [e, m] = refine(bestElev, s); m < bestMiss) bestMiss = m, bestElev = e;
+            if (!(bestMiss < kOnTarget)) {
+                double otherElev = 0.0, otherMiss = INFINITY;
+                for (int k = 0; k < 8; ++k)
+                    if ((10.0 + 10.0 * k > 45.0) != steep && coarse[k] < otherMiss)
+                        otherMiss = coarse[k], otherElev = 10.0 + 10.0 * k;
+                if (const auto [e, m] = refine(otherElev, s); m < bestMiss) bestMiss = m, bestElev = e;
+            }
+            if (bestMiss < out.missM) {
+                out.missM = bestMiss;
+                out.angleDeg = toAngle(bestElev);
+                out.speedMps = s;
+                found = bounces;
+            }
+            if (bestMiss < kOnTarget || s >= c.def.maxSpeedMps) break;
         }
-        const bool steep = bestElev > 45.0; // the family of the best coarse elevation
-        if (const auto [e, m] = refine(bestElev, s); m < bestMiss) bestMiss = m, bestElev = e;
-        if (!(bestMiss < kOnTarget)) {
-            double otherElev = 0.0, otherMiss = INFINITY;
-            for (int k = 0; k < 8; ++k)
-                if ((10.0 + 10.0 * k > 45.0) != steep && coarse[k] < otherMiss)
-                    otherMiss = coarse[k], otherElev = 10.0 + 10.0 * k;
-            if (const auto [e, m] = refine(otherElev, s); m < bestMiss) bestMiss = m, bestElev = e;
-        }
-        if (bestMiss < out.missM) {
-            out.missM = bestMiss;
-            out.angleDeg = toAngle(bestElev);
-            out.speedMps = s;
-        }
-        if (bestMiss < kOnTarget || s >= c.def.maxSpeedMps) break;
-    }
+    bounces = found;
     if (std::isfinite(out.missM)) out.flightSeconds = approach(out.angleDeg, out.speedMps).seconds;
     return out;
 }

@@ -693,7 +693,8 @@ std::uint64_t Match::hash() const {
 
 std::vector<Vec2> Match::previewTrajectory(double angleDeg, double speedMps, double seconds,
                                            double stopPastX,
-                                           std::optional<std::size_t> projectile) const {
+                                           std::optional<std::size_t> projectile,
+                                           int bounces) const {
     World w(world_.def());
     w.setProfiling(false); // stepped up to 2,400 times for one look ahead
     w.shapes = world_.shapes;
@@ -711,7 +712,8 @@ std::vector<Vec2> Match::previewTrajectory(double angleDeg, double speedMps, dou
         // Without downward gravity nothing brings a shell back: past the top of the world,
         // or past the target, it is gone (else a trial at g = 0 would fly all `seconds`).
         const bool noFall = !(w.def().forces.gravity.y < 0.0);
-        if (!w.contacts().empty() || p.x < level_.worldMin.x || p.x > level_.worldMax.x ||
+        if (!w.contacts().empty() && bounces-- == 0) break;
+        if (p.x < level_.worldMin.x || p.x > level_.worldMax.x ||
             p.y < level_.worldMin.y || (noFall && p.y > level_.worldMax.y))
             break;
         const double away = pd.velocity.x >= 0.0 ? p.x - stopPastX : stopPastX - p.x;

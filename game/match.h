@@ -189,11 +189,14 @@ class Match {
     /// `stopPastX`, when finite, ends the preview once the shell is past that x going
     /// away from the cannon and descending (the computer's trial shots need no more).
     /// `projectile` (an index into the cannon's list) previews that one instead of the
-    /// selected one: the computer aims with what it is about to select.
+    /// selected one: the computer aims with what it is about to select. `bounces`
+    /// contacts are flown on through before the first that ends it (the computer's bank
+    /// and skip shots).
     std::vector<phys::Vec2> previewTrajectory(double angleDeg, double speedMps,
                                               double seconds = 8.0,
                                               double stopPastX = INFINITY,
-                                              std::optional<std::size_t> projectile = {}) const;
+                                              std::optional<std::size_t> projectile = {},
+                                              int bounces = 0) const;
     /// Muzzle point of the current cannon for a given aim (1.5 m along the barrel).
     phys::Vec2 muzzle(double angleDeg) const;
     /// The ammunition selected on the current cannon.

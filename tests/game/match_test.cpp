@@ -92,6 +92,20 @@ TEST(Match, TrialShotsDropOntoATargetBehindCover) {
     EXPECT_GT(aim.angleDeg, 45.0) << "steep";
 }
 
+// On Ceiling bank no straight path reaches the target; the trial shots then fly on
+// through up to two contacts, and one off the ceiling comes down on it.
+TEST(Match, TrialShotsBankOffTheCeilingWhenNoStraightPathReaches) {
+    Match m(level("21_ceiling_bank.json"));
+    const auto target = chooseTarget(m);
+    ASSERT_TRUE(target);
+    const AimSolution aim = aimAt(m, *target);
+    EXPECT_LT(aim.missM, 0.5) << "at " << aim.angleDeg << " deg, " << aim.speedMps << " m/s";
+    // The path ends at its first contact short of the target; flown on, it gets there.
+    const auto straight = m.previewTrajectory(aim.angleDeg, aim.speedMps, 20.0, target->x);
+    const auto banked = m.previewTrajectory(aim.angleDeg, aim.speedMps, 20.0, target->x, {}, 2);
+    EXPECT_LT(straight.size(), banked.size());
+}
+
 TEST(Match, ClearingEveryTargetEndsWithStarsAndBonus) {
     Match m(level("01_earth_basics.json"));
     for (std::size_t t = 0; t < m.targets().size(); ++t) {
