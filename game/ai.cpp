@@ -135,16 +135,15 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
         }
         return m1 < m2 ? std::pair{x1, m1} : std::pair{x2, m2};
     };
-    // Straight paths first; when none reaches, paths that fly on through up to two
-    // contacts (a ceiling to bank off, water to skip on).
-    int found = 0; // the bounces of the best path
-    for (; bounces <= 2 && !(out.missM < kOnTarget); bounces += 2)
+    // At increasing power: the coarse sweep, its best elevation refined, and when that does
+    // not reach, the best of the other family (below 45 degrees, or above) refined too: a
+    // low path that ends on cover near the target can come closer than a steep one that
+    // drops onto it. Paths fly on through `allowed` ticks with a contact.
+    int found = 0; // the allowance the best path was found with
+    auto trialSearch = [&](int allowed) {
+        bounces = allowed;
         for (double s = std::min(c.def.maxSpeedMps, std::max(10.0, 1.15 * vacuum));;
              s = std::min(c.def.maxSpeedMps, s + step)) {
-            // The coarse sweep, its best elevation overall and its best of the other family
-            // (below 45 degrees, or above): a low path that ends on cover near the target can
-            // come closer than a steep one that drops onto it, so the steep one is refined
-            // too when the first does not reach.
             double bestElev = 45.0, bestMiss = INFINITY;
             double coarse[8];
             for (int k = 0; k < 8; ++k) {
@@ -172,6 +171,11 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
             }
             if (bestMiss < kOnTarget || s >= c.def.maxSpeedMps) break;
         }
+    };
+    trialSearch(0);
+    // No straight path reaches: paths that fly on through up to two contacts (a ceiling
+    // to bank off, water to skip on).
+    if (!(out.missM < kOnTarget)) trialSearch(2);
     bounces = found;
     if (std::isfinite(out.missM)) out.flightSeconds = approach(out.angleDeg, out.speedMps).seconds;
     return out;

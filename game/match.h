@@ -189,9 +189,9 @@ class Match {
     /// `stopPastX`, when finite, ends the preview once the shell is past that x going
     /// away from the cannon and descending (the computer's trial shots need no more).
     /// `projectile` (an index into the cannon's list) previews that one instead of the
-    /// selected one: the computer aims with what it is about to select. `bounces`
-    /// contacts are flown on through before the first that ends it (the computer's bank
-    /// and skip shots).
+    /// selected one: the computer aims with what it is about to select. The first `bounces`
+    /// ticks with a contact are flown on through; the next one ends it (the computer's
+    /// bank and skip shots).
     std::vector<phys::Vec2> previewTrajectory(double angleDeg, double speedMps,
                                               double seconds = 8.0,
                                               double stopPastX = INFINITY,
