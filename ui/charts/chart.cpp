@@ -31,7 +31,7 @@ struct Pen {
     }
     /// Text whose top edge is at px.y; alignX 0 left, 0.5 centred, 1 right.
     void text(Vec2 px, const std::string& s, Color c, float scale, float alignX = 0.0f) {
-        r.label(w(px), s, c, {}, scale, alignX);
+        r.screenLabel(px, s, c, scale, alignX);
     }
     void marker(Vec2 px, Marker m, Color c, double size) {
         const double s = size;

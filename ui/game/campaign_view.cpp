@@ -1,4 +1,6 @@
 #include "ui/game/campaign_view.h"
+#include "ui/platform/imgui_layer.h"
+#include "ui/render/design_canvas.h"
 
 #include <imgui.h>
 
@@ -76,7 +78,7 @@ void levelRow(const std::string& number, const LevelEntry& e, const game::Lock& 
 /// lesson button, and why it is locked.
 bool chapterRow(std::size_t c, const game::Chapter& ch, const std::vector<LevelEntry>& levels,
                 const game::Lock& lock, const game::Progress& progress) {
-    ImGui::TableNextRow(ImGuiTableRowFlags_None, 28.0f);
+    ImGui::TableNextRow(ImGuiTableRowFlags_None, panelPx(28));
     ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0,
                            ImGui::GetColorU32(ImVec4(0.16f, 0.2f, 0.3f, 1)));
     ImGui::TableNextColumn();
@@ -150,13 +152,13 @@ void campaignTable(const CampaignMenu& menu, const game::Progress& progress, Men
     if (!ImGui::BeginTable("campaign", 4,
                            ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH |
                                ImGuiTableFlags_ScrollY,
-                           ImVec2(0, kTableHeight)))
+                           ImVec2(0, panelPx(kTableHeight))))
         return;
     ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("level", ImGuiTableColumnFlags_WidthFixed, 200.0f);
-    ImGui::TableSetupColumn("mode", ImGuiTableColumnFlags_WidthFixed, 70.0f);
+    ImGui::TableSetupColumn("level", ImGuiTableColumnFlags_WidthFixed, panelPx(200));
+    ImGui::TableSetupColumn("mode", ImGuiTableColumnFlags_WidthFixed, panelPx(70));
     ImGui::TableSetupColumn("lesson", ImGuiTableColumnFlags_WidthStretch);
-    ImGui::TableSetupColumn("best", ImGuiTableColumnFlags_WidthFixed, 150.0f);
+    ImGui::TableSetupColumn("best", ImGuiTableColumnFlags_WidthFixed, panelPx(150));
     ImGui::TableHeadersRow();
     const game::Campaign& campaign = menu.campaign;
     for (std::size_t c = 0; c < campaign.chapters.size(); ++c) {
@@ -186,7 +188,7 @@ void campaignTable(const CampaignMenu& menu, const game::Progress& progress, Men
         }
     }
     if (!menu.outside.empty()) {
-        ImGui::TableNextRow(ImGuiTableRowFlags_None, 28.0f);
+        ImGui::TableNextRow(ImGuiTableRowFlags_None, panelPx(28));
         ImGui::TableNextColumn();
         ImGui::TextColored(kGold, "%s", campaign.chapters.empty() ? "Levels" : "Outside");
         ImGui::TableNextColumn();
@@ -212,7 +214,8 @@ MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progres
     const game::Lock lock = game::levelLock(menu.campaign, next->chapter, next->level, progress);
     // Just below the results card in the middle of the screen (ui/game/match_view.cpp).
     const ImVec2 d = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(d.x * 0.5f, d.y * 0.5f + 86.0f), ImGuiCond_Always,
+    const auto belowCard = static_cast<float>(86.0 * hudScale(d.x, d.y));
+    ImGui::SetNextWindowPos(ImVec2(d.x * 0.5f, d.y * 0.5f + belowCard), ImGuiCond_Always,
                             ImVec2(0.5f, 0.0f));
     ImGui::Begin("Next level", nullptr,
                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
@@ -243,7 +246,7 @@ MenuChoice lessonScreen(const game::Campaign& campaign, std::size_t chapter,
     const game::Chapter& ch = campaign.chapters.at(chapter);
     const ImVec2 d = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(d.x * 0.5f, d.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(680.0f, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(panelPx(680), 0), ImGuiCond_Always);
     ImGui::Begin("Lesson", nullptr,
                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                      ImGuiWindowFlags_NoSavedSettings);
@@ -263,7 +266,7 @@ MenuChoice lessonScreen(const game::Campaign& campaign, std::size_t chapter,
     ImGui::Spacing();
     ImGui::Separator();
     if (!thenLevel.empty()) {
-        if (ImGui::Button("Play (Enter)", ImVec2(200, 0)) ||
+        if (ImGui::Button("Play (Enter)", ImVec2(panelPx(200), 0)) ||
             ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) {
             choice.openLevel = thenLevel;
             choice.lessonSeen = ch.id;

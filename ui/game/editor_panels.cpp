@@ -4,6 +4,7 @@
 #include "game/weapons.h"
 #include "physics/forces.h"
 #include "physics/projectiles.h"
+#include "ui/platform/imgui_layer.h"
 
 #include <imgui.h>
 
@@ -120,10 +121,10 @@ bool cannonFields(game::Cannon& c) {
     c.projectileCounts.resize(c.projectiles.size(), -1);
     for (std::size_t i = 0; i < c.projectiles.size(); ++i) {
         ImGui::PushID(static_cast<int>(i));
-        ImGui::SetNextItemWidth(130.0f);
+        ImGui::SetNextItemWidth(panelPx(130));
         changed |= choice("##weapon", c.projectiles[i], projectileNames());
         ImGui::SameLine();
-        ImGui::SetNextItemWidth(70.0f);
+        ImGui::SetNextItemWidth(panelPx(70));
         changed |= ImGui::InputInt("##count", &c.projectileCounts[i], 0, 0);
         ImGui::SameLine();
         if (c.projectiles.size() > 1 && ImGui::SmallButton("x")) {

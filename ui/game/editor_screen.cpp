@@ -9,6 +9,7 @@
 
 #include "ui/game/editor_panels.h"
 #include "ui/game/match_frame.h"
+#include "ui/platform/imgui_layer.h"
 #include "ui/render/gl.h"
 
 #include <imgui.h>
@@ -165,7 +166,7 @@ void LevelEditorView::choose(Tool tool) {
 
 Camera LevelEditorView::framing(int width, int height) const {
     const game::Level& l = editor_.level();
-    const double left = std::min<double>(kEditorPanelWidth, 0.5 * width) + 16.0;
+    const double left = std::min<double>(panelPx(kEditorPanelWidth), 0.5 * width) + 16.0;
     const double availW = std::max(32.0, width - left - 16.0);
     const double availH = std::max(32.0, height - 48.0); // room for the hint line
     const Vec2 span = l.worldMax - l.worldMin;
@@ -464,7 +465,7 @@ void LevelEditorView::toolButtons() {
     if (tool != static_cast<int>(tool_)) choose(static_cast<Tool>(tool));
     ImGui::Checkbox("snap to grid (G)", &snap_);
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(80.0f);
+    ImGui::SetNextItemWidth(panelPx(80));
     const float grids[] = {0.1f, 0.25f, 0.5f, 1.0f, 2.0f, 5.0f};
     char current[16];
     std::snprintf(current, sizeof current, "%g m", static_cast<double>(gridMetres_));
@@ -515,7 +516,7 @@ void LevelEditorView::fileButtons(EditorRequests& out) {
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::TextDisabled(editor_.valid() ? "" : "fix the level first");
-    ImGui::SetNextItemWidth(170.0f);
+    ImGui::SetNextItemWidth(panelPx(170));
     ImGui::InputText("##saveas", saveName_, sizeof saveName_);
     ImGui::SameLine();
     ImGui::BeginDisabled(!editor_.valid());
@@ -529,8 +530,9 @@ EditorRequests LevelEditorView::panel() {
     EditorRequests out;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(std::min(kEditorPanelWidth, 0.5f * display.x), display.y),
-                             ImGuiCond_Always);
+    ImGui::SetNextWindowSize(
+        ImVec2(std::min(panelPx(kEditorPanelWidth), 0.5f * display.x), display.y),
+        ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.97f);
     ImGui::Begin("Level editor", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
@@ -554,7 +556,7 @@ EditorRequests LevelEditorView::panel() {
     // The fields edit a copy; a change is one undo step however long the field is held.
     game::Level draft = l;
     bool changed = false;
-    ImGui::PushItemWidth(140.0f); // room for the labels beside the fields
+    ImGui::PushItemWidth(panelPx(140)); // room for the labels beside the fields
     if (exists(l, selected_)) {
         char title[64];
         std::snprintf(title, sizeof title, "%s %d###selected",
@@ -577,7 +579,8 @@ EditorRequests LevelEditorView::panel() {
 
     // What the tool does, under the world.
     ImGui::SetNextWindowPos(
-        ImVec2(std::min(kEditorPanelWidth, 0.5f * display.x) + 12.0f, display.y - 34.0f),
+        ImVec2(std::min(panelPx(kEditorPanelWidth), 0.5f * display.x) + panelPx(12),
+               display.y - panelPx(34)),
         ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.55f);
     ImGui::Begin("##editorhint", nullptr,

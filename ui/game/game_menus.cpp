@@ -6,6 +6,7 @@
 #include "game/files/json_reader.h"
 #include "game/level.h"
 #include "game/replay.h"
+#include "ui/platform/imgui_layer.h"
 
 #include <imgui.h>
 
@@ -28,7 +29,7 @@ const ImVec4 kDimText(0.7f, 0.75f, 0.82f, 1.0f);
 void centreNextWindow(float width) {
     const ImVec2 d = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(d.x * 0.5f, d.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(width, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(panelPx(width), 0), ImGuiCond_Always);
 }
 
 bool difficultyCombo(PlayerSettings& s) {
@@ -77,7 +78,7 @@ std::optional<std::uint64_t> seedFromText(const char* text) {
 void randomMapRow(RandomMapForm& form, MenuChoice& choice) {
     ImGui::TextColored(kGoldText, "Random map");
     ImGui::SameLine();
-    ImGui::PushItemWidth(170);
+    ImGui::PushItemWidth(panelPx(170));
     ImGui::InputText("seed", form.seed, sizeof form.seed, ImGuiInputTextFlags_CharsDecimal);
     ImGui::PopItemWidth();
     if (ImGui::IsItemHovered())
@@ -117,7 +118,7 @@ void levelEditorRow(LevelEditorForm& form, const std::vector<LevelEntry>& levels
     for (const LevelEntry& e : levels)
         if (e.error.empty()) loadable.push_back(&e);
     form.selected = std::clamp(form.selected, 0, std::max(0, static_cast<int>(loadable.size()) - 1));
-    ImGui::PushItemWidth(230);
+    ImGui::PushItemWidth(panelPx(230));
     if (!loadable.empty() &&
         ImGui::BeginCombo("##editlevel", loadable[static_cast<std::size_t>(form.selected)]->name.c_str())) {
         for (std::size_t i = 0; i < loadable.size(); ++i)
@@ -220,7 +221,7 @@ MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress&
         ImGui::TextWrapped("No level files found (looked for levels/*.json).");
     campaignTable(campaign, progress, choice);
     ImGui::Separator();
-    ImGui::PushItemWidth(120);
+    ImGui::PushItemWidth(panelPx(120));
     choice.settingsChanged |= difficultyCombo(settings);
     ImGui::PopItemWidth();
     ImGui::SameLine();
@@ -251,12 +252,13 @@ MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::str
         ImGui::BeginTable(
             "replays", 5,
             ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_ScrollY,
-            ImVec2(0, std::min(420.0f, 30.0f + 26.0f * static_cast<float>(replays.size()))))) {
+            ImVec2(0, panelPx(
+                          std::min(420.0f, 30.0f + 26.0f * static_cast<float>(replays.size())))))) {
         ImGui::TableSetupColumn("replay", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("level", ImGuiTableColumnFlags_WidthFixed, 150.0f);
-        ImGui::TableSetupColumn("length", ImGuiTableColumnFlags_WidthFixed, 55.0f);
-        ImGui::TableSetupColumn("shots", ImGuiTableColumnFlags_WidthFixed, 40.0f);
-        ImGui::TableSetupColumn("recorded", ImGuiTableColumnFlags_WidthFixed, 140.0f);
+        ImGui::TableSetupColumn("level", ImGuiTableColumnFlags_WidthFixed, panelPx(150));
+        ImGui::TableSetupColumn("length", ImGuiTableColumnFlags_WidthFixed, panelPx(55));
+        ImGui::TableSetupColumn("shots", ImGuiTableColumnFlags_WidthFixed, panelPx(40));
+        ImGui::TableSetupColumn("recorded", ImGuiTableColumnFlags_WidthFixed, panelPx(140));
         ImGui::TableHeadersRow();
         for (const ReplayEntry& e : replays) {
             ImGui::TableNextRow();
@@ -322,7 +324,7 @@ MenuChoice pauseMenu(PlayerSettings& settings, const std::string& silentWhy) {
     if (ImGui::Button("Choose another level (L)", wide)) choice.levelSelect = true;
     if (ImGui::Button("Help (F1)", wide)) choice.help = true;
     ImGui::Separator();
-    ImGui::PushItemWidth(120);
+    ImGui::PushItemWidth(panelPx(120));
     choice.settingsChanged |= difficultyCombo(settings);
     ImGui::PopItemWidth();
     choice.settingsChanged |= ImGui::Checkbox("hotseat duel (from the next match)", &settings.hotseat);
@@ -334,7 +336,7 @@ MenuChoice pauseMenu(PlayerSettings& settings, const std::string& silentWhy) {
     choice.settingsChanged |= ImGui::Checkbox("screen shake", &settings.screenShake);
     choice.settingsChanged |= ImGui::Checkbox("physics panel (F2)", &settings.physicsPanel);
     ImGui::Separator();
-    ImGui::PushItemWidth(160);
+    ImGui::PushItemWidth(panelPx(160));
     choice.settingsChanged |= soundSection(settings.sound, silentWhy);
     ImGui::PopItemWidth();
     ImGui::Separator();
@@ -359,7 +361,8 @@ void helpOverlay(bool& open) {
         {"Enter or F", "fire at the power set"},
         {"1 .. 8, Tab", "choose the projectile"},
         {"E", "end the turn (duels)"},
-        {"P / V / H", "launch-arc preview / full preview / firing-solution hint (the last two: at most 2 stars)"},
+        {"P / V / H", "launch-arc preview / full preview / firing-solution hint (the last two: at "
+                      "most 2 stars)"},
         {"C", "camera follows the shell and frames the impact (on / off)"},
         {"Esc", "pause menu"},
         {"F1 or ?", "this help"},
@@ -374,16 +377,18 @@ void helpOverlay(bool& open) {
         {"replay: [ ] \\, R, T", "speed x1/8 .. x16, x1; from the start; take over"},
         {"R", "restart the level"},
         {"L", "level select"},
-        {"editor: 1 .. 7, G", "tool (select, terrain, cannon, target, block, rope, blob); grid snap"},
+        {"editor: 1 .. 7, G",
+         "tool (select, terrain, cannon, target, block, rope, blob); grid snap"},
         {"editor: Del, Ctrl+Z/Y, Ctrl+S", "delete the selected item; undo / redo; save"},
         {"editor: F5, F4", "play the level being made; back to the editor from its match"},
         {"wheel, right drag, Home", "zoom, pan, re-frame"},
+        {"F11, Alt+Enter", "full screen (the panels and the HUD scale with it)"},
         {"F12", "screenshot (PNG in the current folder)"},
         {"controller",
          "left stick aims, triggers set power, A fires, B ends the turn, Start pauses"},
     };
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
-        ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 190.0f);
+        ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, panelPx(190));
         ImGui::TableSetupColumn("does", ImGuiTableColumnFlags_WidthStretch);
         for (const Row& r : rows) {
             ImGui::TableNextRow();
@@ -406,22 +411,22 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
     // On the band of soil at the bottom, beside the aim panel: cannons, targets and
     // castles stand above it, and the arcs fly higher still.
     const ImVec2 d = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(besideAimReadout(d.x, d.y), d.y - 12), ImGuiCond_FirstUseEver,
-                            ImVec2(0.0f, 1.0f));
-    ImGui::SetNextWindowSize(ImVec2(250, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(besideAimReadout(d.x, d.y), d.y - hudMargin(d.x, d.y)),
+                            ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowSize(ImVec2(panelPx(250), 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("Match", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
     const game::CannonState& c = m.cannon();
     ImGui::BeginDisabled(!humanTurn);
-    ImGui::PushItemWidth(150);
+    ImGui::PushItemWidth(panelPx(150));
     if (const auto chosen = projectilePicker(c)) req.projectile = *chosen;
     ImGui::PopItemWidth();
     const bool canFire = !m.shell() && !m.over() && c.shotsLeft > 0;
     ImGui::BeginDisabled(!canFire);
-    if (ImGui::Button("FIRE", ImVec2(110, 34))) req.fire = true;
+    if (ImGui::Button("FIRE", ImVec2(panelPx(110), panelPx(34)))) req.fire = true;
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::BeginDisabled(m.over() || m.shell().has_value() || m.level().mode != game::Mode::Duel);
-    if (ImGui::Button("End turn", ImVec2(110, 34))) req.endTurn = true;
+    if (ImGui::Button("End turn", ImVec2(panelPx(110), panelPx(34)))) req.endTurn = true;
     ImGui::EndDisabled();
     ImGui::EndDisabled();
     req.settingsChanged |= ImGui::Checkbox("preview (P)", &settings.trajectoryPreview);
@@ -437,7 +442,7 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
     const double dt = m.world().def().tickSeconds;
     const double now = static_cast<double>(m.tick()) * dt;
     if (!rewind.dragging) rewind.seconds = now;
-    ImGui::PushItemWidth(150);
+    ImGui::PushItemWidth(panelPx(150));
     float seconds = static_cast<float>(rewind.seconds);
     ImGui::SliderFloat("rewind", &seconds, 0.0f, static_cast<float>(now), "back to %.1f s",
                        ImGuiSliderFlags_NoInput);

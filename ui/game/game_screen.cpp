@@ -13,10 +13,12 @@
 #include "game/files/json_reader.h"
 #include "game/level_write.h"
 #include "ui/game/match_frame.h"
-#include "ui/game/target_inset.h"
-#include "ui/game/settings_commands.h"
 #include "ui/game/random_map.h"
+#include "ui/game/settings_commands.h"
+#include "ui/game/target_inset.h"
+#include "ui/platform/imgui_layer.h"
 #include "ui/platform/sdl_window.h"
+#include "ui/render/design_canvas.h"
 #include "ui/render/gl.h"
 
 #include <SDL.h>
@@ -333,7 +335,7 @@ bool GameScreen::editorEvent(const SDL_Event& e) {
     // (ImGui learns what is under the pointer only from the frame it draws).
     const bool overPanel = e.type == SDL_MOUSEBUTTONDOWN &&
                            pointerPixels(e.button.x, e.button.y).x <
-                               std::min<double>(kEditorPanelWidth, 0.5 * context_.width());
+                               std::min<double>(panelPx(kEditorPanelWidth), 0.5 * context_.width());
     if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT && !overPanel)
         view.press(camera_.toWorld(pointerPixels(e.button.x, e.button.y)), reach);
     else if (e.type == SDL_MOUSEBUTTONUP && e.button.button == SDL_BUTTON_LEFT)
@@ -654,7 +656,9 @@ void GameScreen::drawPanels() {
         if (playtest_) {
             const ImVec2 display = ImGui::GetIO().DisplaySize;
             // Under the wind gauge at the top centre.
-            ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, 76.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+            const auto underGauge = static_cast<float>(76.0 * hudScale(display.x, display.y));
+            ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, underGauge), ImGuiCond_Always,
+                                    ImVec2(0.5f, 0.0f));
             ImGui::Begin("Playtest", nullptr,
                          ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                              ImGuiWindowFlags_NoSavedSettings);

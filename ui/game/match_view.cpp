@@ -99,7 +99,7 @@ struct HudSpace {
     }
     void text(double x, double y, const std::string& s, Color c, float scale = 1.0f,
               float alignX = 0.0f) const {
-        r.label(w(x, y), s, c, {}, scale * static_cast<float>(u), alignX);
+        r.screenLabel({x * u, y * u}, s, c, scale * static_cast<float>(u), alignX);
     }
 };
 

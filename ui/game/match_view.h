@@ -16,6 +16,7 @@
 #include "game/effects/effects.h"
 #include "game/match.h"
 #include "ui/render/camera.h"
+#include "ui/render/design_canvas.h"
 #include "ui/render/renderer2d.h"
 #include "ui/render/world_view.h"
 
@@ -63,14 +64,15 @@ struct MatchViewOptions {
 /// How much of the path the preview shows when it is not the full one (s of flight).
 inline constexpr double kPreviewArcSeconds = 0.5;
 
-/// The HUD is drawn on a 1280x720 design canvas scaled to the screen by this factor.
-inline double hudScale(double width, double height) {
-    return std::clamp(std::min(width / 1280.0, height / 720.0), 0.4, 3.0);
-}
 /// Where the panels beside the aim readout at the bottom left start, in screen pixels:
 /// right of it, whatever the HUD's scale (the readout ends at 330 design pixels).
 inline float besideAimReadout(double width, double height) {
     return static_cast<float>(342.0 * hudScale(width, height));
+}
+/// The HUD's margin to the screen's edges (12 design pixels), which the panels beside it
+/// keep too.
+inline float hudMargin(double width, double height) {
+    return static_cast<float>(12.0 * hudScale(width, height));
 }
 /// Where the panels under the level's heading at the top left start, in screen pixels
 /// (the heading ends at 112 design pixels in a duel, 96 otherwise).

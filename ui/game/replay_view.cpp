@@ -4,6 +4,7 @@
 //   controls  panel, key, banner
 //   video     exportVideo, the panel's line about it
 #include "ui/game/replay_view.h"
+#include "ui/platform/imgui_layer.h"
 
 #include <SDL.h>
 #include <imgui.h>
@@ -134,8 +135,10 @@ ReplayRequests ReplayViewer::panel() {
     // On the band of soil at the bottom, beside the aim panel, where the match panel is
     // in a game.
     const float left = besideAimReadout(d.x, d.y);
-    ImGui::SetNextWindowPos(ImVec2(left, d.y - 12), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
-    ImGui::SetNextWindowSize(ImVec2(std::min(560.0f, d.x - left - 12), 0), ImGuiCond_FirstUseEver);
+    const float margin = hudMargin(d.x, d.y);
+    ImGui::SetNextWindowPos(ImVec2(left, d.y - margin), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(panelPx(560), d.x - left - margin), 0),
+                             ImGuiCond_FirstUseEver);
     ImGui::Begin("Replay", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
     ImGui::TextColored(kGoldText, "%s", std::filesystem::path(file_).filename().string().c_str());
     ImGui::SameLine();
@@ -159,7 +162,8 @@ ReplayRequests ReplayViewer::panel() {
     ImGui::SameLine();
     if (ImGui::Button("< 1 s")) jumpBy(-1.0);
     ImGui::SameLine();
-    if (ImGui::Button(paused_ ? (p.atEnd() ? "Play again" : "Play") : "Pause", ImVec2(90, 0)))
+    if (ImGui::Button(paused_ ? (p.atEnd() ? "Play again" : "Play") : "Pause",
+                      ImVec2(panelPx(90), 0)))
         togglePlay();
     ImGui::SameLine();
     if (buttonWhen(!p.atEnd(), "Step", "one tick (.); one back: ,")) {
@@ -171,7 +175,7 @@ ReplayRequests ReplayViewer::panel() {
     ImGui::SameLine();
     if (buttonWhen(nextShot.has_value(), "shot >|", "next shot (Page Down)")) seek_ = nextShot;
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(110);
+    ImGui::SetNextItemWidth(panelPx(110));
     ImGui::SliderInt("speed", &speed_, 0, static_cast<int>(std::size(kReplaySpeeds)) - 1,
                      kSpeedNames[speed_], ImGuiSliderFlags_NoInput);
 
@@ -192,7 +196,7 @@ ReplayRequests ReplayViewer::panel() {
         ImGui::TextColored(kBadText, "%zu recorded command(s) refused", p.refusedCommands());
 
     ImGui::Separator();
-    if (ImGui::Button("Take over (T)", ImVec2(140, 0))) req.takeOver = true;
+    if (ImGui::Button("Take over (T)", ImVec2(panelPx(140), 0))) req.takeOver = true;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Play on from this moment: the commands so far are kept and a new replay "
                           "branches from here");

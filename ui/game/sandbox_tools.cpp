@@ -27,7 +27,8 @@ Command make(CommandKind kind, phys::Vec2 at = {}) {
 std::vector<Command> SandboxTools::panel(const game::Match& match) {
     std::vector<Command> out;
     const ImVec2 d = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(12.0f, belowLevelHeading(d.x, d.y)), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(hudMargin(d.x, d.y), belowLevelHeading(d.x, d.y)),
+                            ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowCollapsed(!match.sandbox(), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Sandbox", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::End();

@@ -90,8 +90,8 @@ std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const 
     // Right, under the Physics window's title bar (the HUD holds the top left).
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowPos(ImVec2(display.x - 342, 44), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(330, 600), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(display.x - panelPx(342), panelPx(44)), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(panelPx(330), panelPx(600)), ImGuiCond_FirstUseEver);
     expanded_ = ImGui::Begin("Stats", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
     if (expanded_) {
         // --- Compare ------------------------------------------------------------------
@@ -108,7 +108,7 @@ std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const 
                                     match.world().def().tickSeconds);
                 for (const game::IntegratorPath& p : paths_) {
                     ImGui::TextColored(imColor(pathColor(p)), "%-18s", p.name.c_str());
-                    ImGui::SameLine(160);
+                    ImGui::SameLine(panelPx(160));
                     if (p.isReference)
                         ImGui::Text(p.landed ? "lands x = %.2f m" : "no landing", p.landing.x);
                     else if (p.landed)
@@ -125,7 +125,7 @@ std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const 
             const int n = static_cast<int>(count_);
             // The plots span the panel (a negative width, "up to the right edge less 1",
             // came out 4 px wide here).
-            const ImVec2 plotSize(ImGui::GetContentRegionAvail().x, 70.0f);
+            const ImVec2 plotSize(ImGui::GetContentRegionAvail().x, panelPx(70));
             const int offset = count_ < energy_.size() ? 0 : static_cast<int>(next_);
             const double drift = firstEnergy_ != 0.0 ? (last_.energy - firstEnergy_) / std::abs(firstEnergy_) : 0.0;
             char overlay[64];

@@ -43,8 +43,8 @@ struct Form {
 /// Draws the host/join form; true when the player pressed Host, Join or Watch (and
 /// `o` then holds the choice).
 bool drawForm(Form& f, NetOptions& o, const std::string& error) {
-    ImGui::SetNextWindowPos(ImVec2(40, 40), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(460, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImVec2(panelPx(40), panelPx(40)), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(panelPx(460), 0), ImGuiCond_Always);
     ImGui::Begin("Network duel", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize);
     ImGui::TextWrapped(
         "Host a duel (you play cannon 0) or join one (cannon 1). Both sides need the "
@@ -127,8 +127,8 @@ void keyCommand(NetDuel& duel, SDL_Keycode key, std::string& status) {
 void drawStatus(const NetDuel& duel, const std::deque<std::string>& log,
                 const std::string& status) {
     // Top right: the match's HUD has the top left (level, hit points) and the bottom.
-    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10, 10), ImGuiCond_Always,
-                            ImVec2(1, 0));
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - panelPx(10), panelPx(10)),
+                            ImGuiCond_Always, ImVec2(1, 0));
     ImGui::SetNextWindowBgAlpha(0.75f);
     ImGui::Begin("duel", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar);
     const auto* ls = duel.lockstep();
@@ -189,6 +189,7 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
     for (long long f = 0; running && (!opt.frames || f < *opt.frames); ++f) {
         SDL_Event e;
         while (SDL_PollEvent(&e)) {
+            if (window->toggleFullScreenOn(e)) continue;
             const bool uiWants = imgui.processEvent(e);
             if (e.type == SDL_QUIT) running = false;
             if (e.type == SDL_KEYDOWN && !uiWants && duel)

@@ -2,6 +2,7 @@
 
 #include "ui/platform/imgui_gl_loader.h"
 #include "ui/platform/sdl_window.h"
+#include "ui/render/design_canvas.h"
 
 #include <SDL.h>
 #include <backends/imgui_impl_opengl3.h>
@@ -11,6 +12,8 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
@@ -23,9 +26,10 @@ namespace {
 constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 constexpr float kFontPixels = 16.0f;
 
-void applyStyle() {
-    ImGui::StyleColorsDark();
-    ImGuiStyle& s = ImGui::GetStyle();
+// The look at the design size (panelScale 1).
+ImGuiStyle designStyle() {
+    ImGuiStyle s;
+    ImGui::StyleColorsDark(&s);
     s.WindowRounding = 6.0f;
     s.FrameRounding = 4.0f;
     s.GrabRounding = 4.0f;
@@ -34,6 +38,27 @@ void applyStyle() {
     s.ItemSpacing = ImVec2(8, 5);
     s.Colors[ImGuiCol_WindowBg] = ImVec4(0.08f, 0.10f, 0.14f, 0.86f);
     s.Colors[ImGuiCol_TitleBgActive] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
+    return s;
+}
+
+// The panels' scale in the frames being built (one ImGui context at a time).
+float gPanelScale = 1.0f;
+
+// The display the layout was made for, kept in the layout's ini text beside the windows
+// ("[ArtilleryDisplay][Display]" Size=W,H), so that a layout saved in a small window
+// and loaded in a large one is moved to fit.
+void* openDisplayEntry(ImGuiContext*, ImGuiSettingsHandler*, const char* name) {
+    return std::strcmp(name, "Display") == 0 ? reinterpret_cast<void*>(1) : nullptr;
+}
+void readDisplayLine(ImGuiContext*, ImGuiSettingsHandler* handler, void*, const char* line) {
+    float w = 0.0f, h = 0.0f;
+    if (std::sscanf(line, "Size=%f,%f", &w, &h) == 2 && w > 0.0f && h > 0.0f)
+        *static_cast<Vec2*>(handler->UserData) = {w, h};
+}
+void writeDisplay(ImGuiContext*, ImGuiSettingsHandler* handler, ImGuiTextBuffer* out) {
+    const Vec2 size = *static_cast<const Vec2*>(handler->UserData);
+    if (size.x > 0.0 && size.y > 0.0)
+        out->appendf("[ArtilleryDisplay][Display]\nSize=%.0f,%.0f\n\n", size.x, size.y);
 }
 
 } // namespace
@@ -45,8 +70,15 @@ ImGuiLayer::ImGuiLayer(GLContext& context, SdlWindow* window) : context_(context
     // Settings persistence is the game's job (written atomically); no imgui.ini litter.
     io.IniFilename = nullptr;
     io.LogFilename = nullptr;
-    if (std::filesystem::exists(kFontPath)) io.Fonts->AddFontFromFileTTF(kFontPath, kFontPixels);
-    applyStyle();
+    setPanelScale(panelScale(context_.width(), context_.height()));
+    ImGuiSettingsHandler display;
+    display.TypeName = "ArtilleryDisplay";
+    display.TypeHash = ImHashStr("ArtilleryDisplay");
+    display.ReadOpenFn = openDisplayEntry;
+    display.ReadLineFn = readDisplayLine;
+    display.WriteAllFn = writeDisplay;
+    display.UserData = &layoutDisplay_;
+    ImGui::GetCurrentContext()->SettingsHandlers.push_back(display);
     if (window_ && !ImGui_ImplSDL2_InitForOpenGL(window_->window(), window_->glContext()))
         throw std::runtime_error("imgui: the SDL2 backend does not start");
     if (!loadImGuiGL(context_.procAddress()))
@@ -68,7 +100,37 @@ bool ImGuiLayer::processEvent(const SDL_Event& event) {
     return ImGui_ImplSDL2_ProcessEvent(&event);
 }
 
+float panelPx(float designPixels) {
+    return designPixels * gPanelScale;
+}
+
+// The font is rasterized at the scaled size, not magnified (crisp text), and every size
+// of the style (padding, spacing, rounding) scales with it.
+void ImGuiLayer::setPanelScale(float scale) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.Fonts->Clear();
+    if (std::filesystem::exists(kFontPath)) {
+        io.Fonts->AddFontFromFileTTF(kFontPath, kFontPixels * scale);
+    } else {
+        ImFontConfig builtIn;
+        builtIn.SizePixels = 13.0f * scale; // the built-in font's own size, 13 px
+        io.Fonts->AddFontDefault(&builtIn);
+    }
+    ImGui::GetStyle() = designStyle();
+    ImGui::GetStyle().ScaleAllSizes(scale);
+    if (io.Fonts->TexID) { // else the backend's first frame builds it
+        ImGui_ImplOpenGL3_DestroyFontsTexture();
+        ImGui_ImplOpenGL3_CreateFontsTexture();
+    }
+    scale_ = gPanelScale = scale;
+}
+
 void ImGuiLayer::newFrame(double dtSeconds) {
+    // The window's size in ImGui's units (points), which a resize changes.
+    int w = context_.width(), h = context_.height();
+    if (window_) SDL_GetWindowSize(window_->window(), &w, &h);
+    if (const float scale = panelScale(w, h); scale != scale_) setPanelScale(scale);
+    gPanelScale = scale_;
     ImGui_ImplOpenGL3_NewFrame();
     if (window_) {
         ImGui_ImplSDL2_NewFrame();
@@ -80,6 +142,44 @@ void ImGuiLayer::newFrame(double dtSeconds) {
         io.DeltaTime = static_cast<float>(dtSeconds > 0.0 ? dtSeconds : 1.0 / 60.0);
     }
     ImGui::NewFrame();
+    const Vec2 now{ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y};
+    if (layoutDisplay_.x > 0.0 && layoutDisplay_ != now) keepPanelsInPlace(layoutDisplay_, now);
+    layoutDisplay_ = now;
+}
+
+float keepToNearestEdge(float pos, float size, float was, float now, float k) {
+    if (pos + 0.5f * size <= 0.5f * was) return pos * k;
+    return now - (was - pos - size) * k - size * k;
+}
+
+// Every panel, open or only in the loaded layout, keeps to its nearest edges: its margins
+// and its size scale with the panels' text (a panel at the top right stays there, and
+// the text in it still fits).
+void ImGuiLayer::keepPanelsInPlace(Vec2 was, Vec2 now) {
+    const float k = panelScale(now.x, now.y) / panelScale(was.x, was.y);
+    auto place = [&](ImVec2 pos, ImVec2 size) {
+        return ImVec2(keepToNearestEdge(pos.x, size.x, static_cast<float>(was.x),
+                                        static_cast<float>(now.x), k),
+                      keepToNearestEdge(pos.y, size.y, static_cast<float>(was.y),
+                                        static_cast<float>(now.y), k));
+    };
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    for (ImGuiWindow* w : g.Windows) {
+        if (w->ParentWindow || (w->Flags & ImGuiWindowFlags_ChildWindow)) continue;
+        ImGui::SetWindowPos(w, place(w->Pos, w->SizeFull));
+        const bool fits = (w->Flags & ImGuiWindowFlags_AlwaysAutoResize) != 0;
+        ImGui::SetWindowSize(w, fits ? ImVec2(0.0f, 0.0f)
+                                     : ImVec2(w->SizeFull.x * k, w->SizeFull.y * k));
+    }
+    // The layout's panels not drawn yet this run take their place from their settings.
+    for (ImGuiWindowSettings* s = g.SettingsWindows.begin(); s;
+         s = g.SettingsWindows.next_chunk(s)) {
+        if (ImGui::FindWindowByID(s->ID)) continue;
+        const ImVec2 size(s->Size.x, s->Size.y);
+        const ImVec2 at = place(ImVec2(s->Pos.x, s->Pos.y), size);
+        s->Pos = ImVec2ih(static_cast<short>(at.x), static_cast<short>(at.y));
+        s->Size = ImVec2ih(static_cast<short>(size.x * k), static_cast<short>(size.y * k));
+    }
 }
 
 void ImGuiLayer::drawLabels(std::span<const Label> labels) {
@@ -90,7 +190,8 @@ void ImGuiLayer::drawLabels(std::span<const Label> labels) {
     for (const Label& l : labels) {
         const ImU32 colour =
             ImGui::ColorConvertFloat4ToU32(ImVec4(l.color.r, l.color.g, l.color.b, l.color.a));
-        const float size = ImGui::GetFontSize() * l.scale;
+        const float size = ImGui::GetFontSize() / scale_ * l.scale; // the design size
+
         const float width =
             l.alignX != 0.0f ? font->CalcTextSizeA(size, FLT_MAX, 0.0f, l.text.c_str()).x : 0.0f;
         const ImVec2 p(std::round(static_cast<float>(l.pixel.x) / scale.x - l.alignX * width),

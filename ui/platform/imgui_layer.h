@@ -20,6 +20,16 @@ class SdlWindow;
 /// framebuffer pixels, or nothing: what a panel covers, for what the game draws beside it.
 std::optional<PixelRect> openWindowRect(const char* name);
 
+/// Design pixels (the 1280x720 canvas of ui/render/design_canvas.h) to pixels of the
+/// panels being built: what a fixed width or position in a panel is given in, so it
+/// scales with their text on a large screen.
+float panelPx(float designPixels);
+
+/// Where a panel's edge goes (one axis) when the display goes from `was` to `now`
+/// pixels and the panels' scale by a factor `k`: a panel nearer the start keeps its
+/// margin to the start, scaled; one nearer the end its margin to the end.
+float keepToNearestEdge(float pos, float size, float was, float now, float k);
+
 class ImGuiLayer {
   public:
     /// `window` is null headless. Throws std::runtime_error when the backend cannot start.
@@ -46,8 +56,16 @@ class ImGuiLayer {
     bool pressOnWindow(const SDL_Event& event) const;
 
   private:
+    /// Rasterizes the font and sizes the style for panels at `scale` x their design size.
+    void setPanelScale(float scale);
+    /// Moves the panels for a display that changed from `was` to `now` (a resize, full
+    /// screen, or a layout saved at another size).
+    void keepPanelsInPlace(Vec2 was, Vec2 now);
+
     GLContext& context_;
     SdlWindow* window_;
+    float scale_ = 0.0f;   ///< the panels' scale (design_canvas.h), 0 before the first
+    Vec2 layoutDisplay_{}; ///< the display the panels are placed for, in points
 };
 
 } // namespace ui

@@ -69,6 +69,16 @@ SdlWindow::~SdlWindow() {
     SDL_Quit();
 }
 
+bool SdlWindow::toggleFullScreenOn(const SDL_Event& event) {
+    if (event.type != SDL_KEYDOWN || event.key.repeat) return false;
+    const SDL_Keycode key = event.key.keysym.sym;
+    const bool alt = (event.key.keysym.mod & KMOD_ALT) != 0;
+    if (key != SDLK_F11 && !(alt && (key == SDLK_RETURN || key == SDLK_KP_ENTER))) return false;
+    const bool full = (SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP) != 0;
+    SDL_SetWindowFullscreen(window_, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
+    return true;
+}
+
 int SdlWindow::width() const {
     int w = 0, h = 0;
     SDL_GL_GetDrawableSize(window_, &w, &h);

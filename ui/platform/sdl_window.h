@@ -7,6 +7,7 @@
 #include <string>
 
 struct SDL_Window;
+union SDL_Event;
 
 namespace ui {
 
@@ -26,6 +27,10 @@ class SdlWindow final : public GLContext {
     bool interactive() const override { return true; }
 
     SDL_Window* window() const { return window_; }
+    /// F11 or Alt+Enter: switches between the window and the full screen (the desktop's
+    /// resolution, no mode change). True when the event was that key, which is then
+    /// nobody else's.
+    bool toggleFullScreenOn(const SDL_Event& event);
     void* glContext() const { return glContext_; }
 
   private:

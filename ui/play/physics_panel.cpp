@@ -2,6 +2,7 @@
 
 #include "game/settings.h"
 #include "physics/integrators.h"
+#include "ui/platform/imgui_layer.h"
 
 #include <imgui.h>
 
@@ -139,7 +140,7 @@ bool applyTyped(game::LiveSettings& s, const std::string& name, const game::Sett
 /// A number typed and confirmed with Enter (dragging would send a command per frame).
 bool typedNumber(const char* id, double shown, double& typed) {
     typed = shown;
-    ImGui::SetNextItemWidth(60);
+    ImGui::SetNextItemWidth(panelPx(60));
     return ImGui::InputDouble(id, &typed, 0.0, 0.0, "%.3f", ImGuiInputTextFlags_EnterReturnsTrue);
 }
 
@@ -151,7 +152,7 @@ bool projectileRestitution(game::LiveSettings& s, const std::string& projectile)
     const double e = s.materials[game::projectileMaterial(s.materials, *preset)].restitution;
     bool changed = false;
     ImGui::PushID(projectile.c_str());
-    ImGui::SetNextItemWidth(140);
+    ImGui::SetNextItemWidth(panelPx(140));
     const game::SettingValue now = game::readSetting(s, name);
     const std::string* presetName = std::get_if<std::string>(&now);
     if (ImGui::BeginCombo("##preset", presetName ? presetName->c_str() : "custom e")) {
@@ -288,11 +289,12 @@ bool drawPanel(phys::WorldDef& def, game::LiveSettings* live, const game::Materi
     bool changed = false;
     // Top right: the shots rise on the left, and the sky over the landing zone is free.
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver,
+    ImGui::SetNextWindowPos(ImVec2(display.x - panelPx(10), panelPx(10)), ImGuiCond_FirstUseEver,
                             ImVec2(1.0f, 0.0f));
-    ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver); // the pair table's width
+    ImGui::SetNextWindowSize(ImVec2(panelPx(380), 0),
+                             ImGuiCond_FirstUseEver); // the pair table's width
     ImGui::Begin("Physics", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
-    ImGui::PushItemWidth(160);
+    ImGui::PushItemWidth(panelPx(160));
 
     changed |= integratorCombo(def);
     changed |= tickRateCombo(def);

@@ -2,6 +2,7 @@
 #include "ui/play/play_screen.h"
 
 #include "ui/platform/sdl_window.h"
+#include "ui/render/design_canvas.h"
 #include "ui/render/gl.h"
 
 #include <SDL.h>
@@ -101,7 +102,10 @@ void PlayScreen::drawHud() {
         stats_.frameMs, stats_.physicsUs, phys::info(d.integrator).name, 1.0 / d.tickSeconds,
         d.substeps, d.forces.drag == phys::DragModel::None ? "off" : "on", d.forces.wind.x,
         stats_.simSeconds, time_.paused ? " (paused)" : "", std::max(scene_.nextShotIn(), 0.0));
-    renderer_.screenLabel({12.0, camera_.height - 30.0}, line, Color::hex(0xf2ead8), 0.9f);
+    // At the bottom left, as large as the panels' text (design_canvas.h).
+    const float u = panelScale(camera_.width, camera_.height);
+    renderer_.screenLabel({12.0 * u, camera_.height - 30.0 * u}, line, Color::hex(0xf2ead8),
+                          0.9f * u);
 }
 
 void PlayScreen::frame(double wallSeconds) {

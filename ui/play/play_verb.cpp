@@ -353,7 +353,7 @@ int runWindow(const PlayOptions& o, RunReport& report) {
     for (long long f = 0; running && (!o.frames || f < *o.frames); ++f) {
         SDL_Event e;
         while (SDL_PollEvent(&e))
-            running = screen.handleEvent(e) && running;
+            if (!window->toggleFullScreenOn(e)) running = screen.handleEvent(e) && running;
         running = running && screen.running();
         const auto now = Clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();

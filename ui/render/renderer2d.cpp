@@ -1,5 +1,6 @@
 #include "ui/render/renderer2d.h"
 
+#include "ui/render/design_canvas.h"
 #include "ui/render/gl.h"
 
 #include <algorithm>
@@ -99,6 +100,7 @@ Renderer2D::~Renderer2D() {
 
 void Renderer2D::begin(const Camera& camera) {
     camera_ = camera;
+    labelScale_ = panelScale(camera.width, camera.height);
     originX_ = originY_ = 0;
     vertices_.clear();
     labels_.clear();
@@ -258,11 +260,12 @@ void Renderer2D::arrow(Vec2 from, Vec2 to, Color color, float widthPx, float hea
 
 void Renderer2D::label(Vec2 p, std::string text, Color color, Vec2 offsetPx, float scale,
                        float alignX) {
-    labels_.push_back({camera_.toPixel(p) + offsetPx, std::move(text), color, scale, alignX});
+    labels_.push_back({camera_.toPixel(p) + offsetPx * labelScale_, std::move(text), color,
+                       scale * labelScale_, alignX});
 }
 
-void Renderer2D::screenLabel(Vec2 pixel, std::string text, Color color, float scale) {
-    labels_.push_back({pixel, std::move(text), color, scale, 0.0f});
+void Renderer2D::screenLabel(Vec2 pixel, std::string text, Color color, float scale, float alignX) {
+    labels_.push_back({pixel, std::move(text), color, scale, alignX});
 }
 
 void Renderer2D::circle(Vec2 center, double radius, Color color) {

@@ -79,11 +79,15 @@ class Renderer2D final : public phys::DebugDraw {
     void fillRectGradient(Vec2 lo, Vec2 hi, Color bottom, Color top);
     /// A line with a filled head at `to`.
     void arrow(Vec2 from, Vec2 to, Color color, float widthPx = 2.0f, float headPx = 10.0f);
-    /// A text label whose top-left corner is at world point p, nudged by `offsetPx`.
+    /// A text label whose top-left corner is at world point p, nudged by `offsetPx`. Its
+    /// size and nudge are in design pixels, scaled to the picture as the panels' text is
+    /// (panelScale, design_canvas.h), so a label reads the same on a 4K screen.
     void label(Vec2 p, std::string text, Color color, Vec2 offsetPx = {}, float scale = 1.0f,
                float alignX = 0.0f);
-    /// A label at a pixel position (HUD text that does not move with the camera).
-    void screenLabel(Vec2 pixel, std::string text, Color color, float scale = 1.0f);
+    /// A label at a pixel position at `scale` x the design font size, as given: text laid
+    /// out in pixels by its caller (the HUD, the charts).
+    void screenLabel(Vec2 pixel, std::string text, Color color, float scale = 1.0f,
+                     float alignX = 0.0f);
 
     // phys::DebugDraw
     void segment(Vec2 a, Vec2 b, Color color) override { line(a, b, color); }
@@ -108,6 +112,7 @@ class Renderer2D final : public phys::DebugDraw {
     std::size_t frameLabels_ = 0;   ///< labels kept across an inset
     std::vector<Vertex> vertices_;
     std::vector<Label> labels_;
+    float labelScale_ = 1.0f; ///< world labels' design pixels to pixels, set by begin()
     std::vector<Vec2> scratch_;
     RenderStats stats_;
     unsigned program_ = 0;
