@@ -207,7 +207,7 @@ MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress&
                              LevelEditorForm* editor, const std::vector<LevelEntry>* levels) {
     MenuChoice choice;
     beginMenuWindow("Choose a level", "ARTILLERY", "a physics playground: every level shows one idea");
-    ImGui::SameLine(ImGui::GetWindowWidth() - 120);
+    ImGui::SameLine(ImGui::GetWindowWidth() - panelPx(120));
     if (ImGui::SmallButton("Network duel")) choice.networkDuel = true; // ui/net/net_screen.cpp
     if (randomMap) {
         randomMapRow(*randomMap, choice);
@@ -226,7 +226,7 @@ MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress&
     ImGui::PopItemWidth();
     ImGui::SameLine();
     choice.settingsChanged |= ImGui::Checkbox("hotseat (duel against a person)", &settings.hotseat);
-    ImGui::SameLine(ImGui::GetWindowWidth() - 210);
+    ImGui::SameLine(ImGui::GetWindowWidth() - panelPx(210));
     if (ImGui::Button("Replays")) choice.replays = true;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Watch the games you played, and take one over from any moment");
@@ -288,7 +288,7 @@ MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::str
     }
     ImGui::Separator();
     if (ImGui::Button("Back to the levels (Esc)")) choice.levelSelect = true;
-    ImGui::SameLine(ImGui::GetWindowWidth() - 120);
+    ImGui::SameLine(ImGui::GetWindowWidth() - panelPx(120));
     if (ImGui::Button("Help (F1)")) choice.help = true;
     ImGui::SameLine();
     if (ImGui::Button("Quit")) choice.quit = true;
