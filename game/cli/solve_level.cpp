@@ -2,6 +2,7 @@
 #include "game/cli/verbs.h"
 
 #include "game/files/json_reader.h"
+#include "game/generate/level_generator.h"
 #include "game/solver.h"
 
 #include <nlohmann/json.hpp>
@@ -22,6 +23,25 @@ std::string describeShot(const std::vector<Command>& c, std::size_t i) {
     return line;
 }
 
+/// A duel has no stars; it is playable when each cannon can hit the other with one shot
+/// (the solver's shot at the start, as `artillery generate` checks its duel maps).
+int solveDuel(const std::string& file, const Level& level, bool json, long long require,
+              std::ostream& out) {
+    const auto [first, second] = generate::duelHitsEachWay(level);
+    const bool playable = first && second;
+    if (json) {
+        out << nlohmann::json{{"mode", "duel"}, {"hits", {first, second}}, {"playable", playable}}
+                   .dump()
+            << "\n";
+    } else {
+        auto yes = [](bool b) { return b ? "yes" : "no"; };
+        out << file << ": a duel has no stars; one shot from each side hits the other: cannon 1 "
+            << yes(first) << ", cannon 2 " << yes(second) << "\n";
+        if (!playable && require > 0) out << file << ": a side that cannot hit makes no duel\n";
+    }
+    return playable || require == 0 ? kOk : kCheckFailed;
+}
+
 } // namespace
 
 int runSolveLevel(const Args& args, std::ostream& out) {
@@ -38,6 +58,10 @@ int runSolveLevel(const Args& args, std::ostream& out) {
         level = loadLevel(file);
     } catch (const LoadError& e) {
         throw UsageError(e.what());
+    }
+    if (level.mode == Mode::Duel) {
+        if (record) out << "no replay written: a duel is not solved, only checked\n";
+        return solveDuel(file, level, json, require, out);
     }
     const SolveResult r = solveLevel(level);
     if (record && r.practice) saveReplay(*record, replayOf(level, r));

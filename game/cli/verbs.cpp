@@ -207,11 +207,15 @@ as the game, shot by shot: candidates from the firing solution (both arcs, at sp
 from the least that reaches up) and the computer's trial-shot aim, a coarse grid of
 angles and speeds when none scores, then a pattern search that halves its steps.
 Prints the best result (stars, score, shots) and the shots that achieve it.
-A duel or a sandbox has no stars to earn: it says so and exits 0.
+A duel has no stars: it is checked instead, one shot from each side must be able to
+hit the other (the solver's shot at the start, the test `generate` puts its duel maps
+to). A sandbox has nothing to solve: it says so and exits 0.
 
   --json             {"stars":s,"score":n,"max_score":m,"shots":k,"commands":[...]}
   --record FILE      save the solved game as a replay (replay verify accepts it)
-  --require-stars N  exit 1 when a practice level reaches fewer than N stars
+  --require-stars N  exit 1 when a practice level reaches fewer than N stars, or (N >= 1)
+                     when a side of a duel cannot hit the other
+                     (a duel's --json: {"mode":"duel","hits":[b,b],"playable":b})
 
 Exit code: 0 ok, 1 fewer stars than --require-stars, 2 bad input.
 )",

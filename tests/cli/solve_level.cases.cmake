@@ -14,7 +14,12 @@ cli_test(solve_level_json 0 "^\\{\"commands\":\\[\\{.*\"cmd\":\"fire\".*\"max_sc
          "solve-level;--json;${PROJECT_SOURCE_DIR}/levels/09_tunnelling.json")
 cli_test(solve_level_unwinnable 1 "0 stars, score 0 of 150.*fewer than the 3 required"
          "solve-level;${PROJECT_SOURCE_DIR}/tests/data/levels_unwinnable/boxed_target.json;--require-stars;3")
-cli_test(solve_level_duel 0 "a duel has no stars to earn" "solve-level;${PROJECT_SOURCE_DIR}/levels/10_duel.json")
+cli_test(solve_level_duel 0 "a duel has no stars; one shot from each side hits the other: cannon 1 yes, cannon 2 yes"
+         "solve-level;${PROJECT_SOURCE_DIR}/levels/10_duel.json")
+cli_test(solve_level_duel_json 0 "^\\{\"hits\":\\[true,true\\],\"mode\":\"duel\",\"playable\":true\\}"
+         "solve-level;--json;${PROJECT_SOURCE_DIR}/levels/10_duel.json")
+cli_test(solve_level_duel_walled 1 "cannon 1 no, cannon 2 no.*a side that cannot hit makes no duel"
+         "solve-level;${PROJECT_SOURCE_DIR}/tests/data/levels_unwinnable/walled_duel.json;--require-stars;3")
 cli_test(solve_level_no_level 2 "name one level file" "solve-level")
 cli_test(solve_level_bad_level 2 "wrong_version.json: \\$\\.format"
          "solve-level;${PROJECT_SOURCE_DIR}/tests/data/bad_levels/wrong_version.json")
