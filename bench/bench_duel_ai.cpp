@@ -1,20 +1,23 @@
 // bench_duel_ai: calibrates the computer's difficulties. Easy, normal, hard and the
-// solver as a player duel each other headless on levels/10_duel.json and generated duel
-// maps, alternating who starts, each duel seeded (winds and aim errors); prints a table
+// solver as a player duel each other headless on the shipped duel maps and generated
+// ones, alternating who starts, each duel seeded (winds and aim errors); prints a table
 // of wins, losses and draws per pair, and the time it took.
 //
 //   bench_duel_ai [--duels N] [--maps K] [--pairs easy-normal,normal-solver,...]
 //
-// N duels per pair (default 100), spread evenly over K maps (default 5: the shipped
-// duel and K - 1 generated at normal difficulty, seeds 1..K-1).
+// N duels per pair (default 100), spread evenly over every duel in levels/ (in file
+// order) and K more generated at normal difficulty, seeds 1..K (default 4).
 #include "bench/options.h"
 #include "game/bench/duel_ai.h"
 #include "game/generate/level_generator.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -29,10 +32,28 @@ std::optional<DuelPlayer> playerFromName(const std::string& name) {
     return std::nullopt;
 }
 
+/// Every duel among the level files of `folder`, in file-name order; nothing when the
+/// folder cannot be read.
+std::optional<std::vector<game::Level>> shippedDuels(const std::string& folder) {
+    std::error_code ec;
+    std::filesystem::directory_iterator it(folder, ec);
+    if (ec) return std::nullopt;
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : it)
+        if (entry.path().extension() == ".json" && entry.path().filename() != "campaign.json")
+            files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    std::vector<game::Level> duels;
+    for (const auto& f : files)
+        if (game::Level l = game::loadLevel(f.string()); l.mode == game::Mode::Duel)
+            duels.push_back(std::move(l));
+    return duels;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
-    int duels = 100, mapCount = 5;
+    int duels = 100, generated = 4;
     std::string pairList =
         "easy-normal,easy-hard,normal-hard,easy-solver,normal-solver,hard-solver";
     for (int i = 1; i < argc; ++i) {
@@ -40,14 +61,14 @@ int main(int argc, char** argv) {
         if (!std::strcmp(argv[i], "--duels") && i + 1 < argc)
             ok = bench_args::countOption("bench_duel_ai", "--duels", argv[++i], duels, 2, 1e6);
         else if (!std::strcmp(argv[i], "--maps") && i + 1 < argc)
-            ok = bench_args::countOption("bench_duel_ai", "--maps", argv[++i], mapCount, 1, 1e4);
+            ok = bench_args::countOption("bench_duel_ai", "--maps", argv[++i], generated, 0, 1e4);
         else if (!std::strcmp(argv[i], "--pairs") && i + 1 < argc)
             pairList = argv[++i];
         else
             ok = false;
         if (!ok) {
             std::fprintf(stderr,
-                         "usage: bench_duel_ai [--duels N >= 2] [--maps K >= 1] [--pairs A-B,...]\n");
+                         "usage: bench_duel_ai [--duels N >= 2] [--maps K >= 0] [--pairs A-B,...]\n");
             return 2;
         }
     }
@@ -68,12 +89,22 @@ int main(int argc, char** argv) {
         pairs.emplace_back(*a, *b);
     }
 
-    std::vector<game::Level> maps = {game::loadLevel("levels/10_duel.json")};
-    for (int s = 1; s < mapCount; ++s) {
+    auto shipped = shippedDuels("levels");
+    if (!shipped) {
+        std::fprintf(stderr, "bench_duel_ai: cannot read the folder levels/ (run it from the "
+                             "source tree)\n");
+        return 2;
+    }
+    std::vector<game::Level> maps = std::move(*shipped);
+    for (int s = 1; s <= generated; ++s) {
         game::generate::GenerateDef def;
         def.seed = static_cast<std::uint64_t>(s);
         def.mode = game::Mode::Duel;
         maps.push_back(game::generate::generateLevel(def).level);
+    }
+    if (maps.empty()) {
+        std::fprintf(stderr, "bench_duel_ai: no duel in levels/ and --maps 0: nothing to play on\n");
+        return 2;
     }
     std::printf("maps: %s", maps[0].name.c_str());
     for (std::size_t k = 1; k < maps.size(); ++k)
