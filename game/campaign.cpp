@@ -187,4 +187,10 @@ Lock levelLock(const Campaign& campaign, std::size_t chapter, std::size_t level,
                        " first (one star, or win the duel)"};
 }
 
+Lock levelLock(const Campaign& campaign, std::size_t chapter, std::size_t level,
+               const Progress& progress, Mode mode) {
+    if (mode == Mode::Duel) return {};
+    return levelLock(campaign, chapter, level, progress);
+}
+
 } // namespace game

@@ -5,9 +5,11 @@
 //
 // Unlocking, as a player of Angry Birds expects: inside a chapter, level k+1 opens once
 // level k is cleared (one star, or a won duel); a chapter opens once the chapter before
-// it has earned `starsToOpen` stars in all, and then its first level is open.
+// it has earned `starsToOpen` stars in all, and then its first level is open. A duel is
+// open from the start wherever it stands, as the maps of a versus mode are.
 #pragma once
 
+#include "game/level.h"
 #include "game/progress.h"
 
 #include <cstddef>
@@ -69,5 +71,10 @@ struct Lock {
 Lock chapterLock(const Campaign& campaign, std::size_t chapter, const Progress& progress);
 Lock levelLock(const Campaign& campaign, std::size_t chapter, std::size_t level,
                const Progress& progress);
+/// The same for a level of `mode`: a duel is open from the start, so a person can take
+/// any duel map against a friend or the computer at once (it still counts as cleared only
+/// once won); any other level is open as levelLock says.
+Lock levelLock(const Campaign& campaign, std::size_t chapter, std::size_t level,
+               const Progress& progress, Mode mode);
 
 } // namespace game

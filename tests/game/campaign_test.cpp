@@ -149,6 +149,21 @@ TEST(Campaign, LevelsOpenOneAfterAnotherAndChaptersByStars) {
     EXPECT_TRUE(levelLock(c, 1, 1, p).open);
 }
 
+TEST(Campaign, ADuelIsOpenFromTheStartWhereverItStands) {
+    const Campaign c = twoChapters();
+    const Progress none;
+    // The last level of a locked chapter: closed as practice, open as a duel.
+    EXPECT_FALSE(levelLock(c, 1, 1, none, Mode::Practice).open);
+    EXPECT_EQ(levelLock(c, 1, 1, none, Mode::Practice).why, "4 more stars in Chapter 1");
+    EXPECT_TRUE(levelLock(c, 1, 1, none, Mode::Duel).open);
+    EXPECT_TRUE(levelLock(c, 0, 1, none, Mode::Duel).open);
+    // Played and lost, a duel is not cleared: what follows it stays closed.
+    Progress p;
+    p.record("1.json", 0, 0, false);
+    EXPECT_FALSE(cleared(p, "1.json"));
+    EXPECT_FALSE(levelLock(c, 0, 1, p, Mode::Practice).open);
+}
+
 TEST(Campaign, NextLevelGoesOnAcrossChapters) {
     const Campaign c = twoChapters();
     EXPECT_EQ(findLevel(c, "levels/2.json"), (LevelPlace{0, 1}));

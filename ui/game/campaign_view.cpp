@@ -18,6 +18,12 @@ const ImVec4 kLocked(0.5f, 0.52f, 0.56f, 1.0f);
 const ImVec4 kError(1.0f, 0.4f, 0.4f, 1.0f);
 constexpr float kTableHeight = 470.0f; ///< px: the chapters scroll inside the menu
 
+game::Mode modeOf(const LevelEntry& e) {
+    return e.mode == game::modeName(game::Mode::Duel)      ? game::Mode::Duel
+           : e.mode == game::modeName(game::Mode::Sandbox) ? game::Mode::Sandbox
+                                                           : game::Mode::Practice;
+}
+
 std::string fileName(const std::string& path) {
     return std::filesystem::path(path).filename().string();
 }
@@ -169,11 +175,14 @@ void campaignTable(const CampaignMenu& menu, const game::Progress& progress, Men
             choice.lessonThenLevel.clear();
         }
         for (std::size_t l = 0; l < levels.size(); ++l) {
-            const game::Lock lock = game::levelLock(campaign, c, l, progress);
+            const game::Lock lock = game::levelLock(campaign, c, l, progress, modeOf(levels[l]));
             bool clicked = false;
             levelRow(std::to_string(c + 1) + "." + std::to_string(l + 1), levels[l], lock, progress,
                      clicked);
-            if (scrollToNext && lock.open && !game::cleared(progress, levels[l].file)) {
+            // The next level to play on the way through the campaign (the duels, always
+            // open, are not the way).
+            if (scrollToNext && lock.open && modeOf(levels[l]) != game::Mode::Duel &&
+                !game::cleared(progress, levels[l].file)) {
                 ImGui::SetScrollHereY(0.3f);
                 scrollToNext = false;
             }
@@ -211,7 +220,8 @@ MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progres
     if (!next) return choice;
     const LevelEntry& e = menu.chapters[next->chapter][next->level];
     const game::Chapter& ch = menu.campaign.chapters[next->chapter];
-    const game::Lock lock = game::levelLock(menu.campaign, next->chapter, next->level, progress);
+    const game::Lock lock =
+        game::levelLock(menu.campaign, next->chapter, next->level, progress, modeOf(e));
     // Just below the results card in the middle of the screen (ui/game/match_view.cpp).
     const ImVec2 d = ImGui::GetIO().DisplaySize;
     const auto belowCard = static_cast<float>(86.0 * hudScale(d.x, d.y));
