@@ -148,8 +148,8 @@ void ImGuiLayer::newFrame(double dtSeconds) {
 }
 
 float keepToNearestEdge(float pos, float size, float was, float now, float k) {
-    if (pos + 0.5f * size <= 0.5f * was) return pos * k;
-    return now - (was - pos - size) * k - size * k;
+    if (pos + 0.5f * size <= 0.5f * was) return pos * k; // its margin to the start, scaled
+    return now - (was - pos) * k; // its margin to the end and its size, both scaled
 }
 
 // Every panel, open or only in the loaded layout, keeps to its nearest edges: its margins
@@ -191,7 +191,6 @@ void ImGuiLayer::drawLabels(std::span<const Label> labels) {
         const ImU32 colour =
             ImGui::ColorConvertFloat4ToU32(ImVec4(l.color.r, l.color.g, l.color.b, l.color.a));
         const float size = ImGui::GetFontSize() / scale_ * l.scale; // the design size
-
         const float width =
             l.alignX != 0.0f ? font->CalcTextSizeA(size, FLT_MAX, 0.0f, l.text.c_str()).x : 0.0f;
         const ImVec2 p(std::round(static_cast<float>(l.pixel.x) / scale.x - l.alignX * width),

@@ -291,8 +291,8 @@ bool drawPanel(phys::WorldDef& def, game::LiveSettings* live, const game::Materi
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(display.x - panelPx(10), panelPx(10)), ImGuiCond_FirstUseEver,
                             ImVec2(1.0f, 0.0f));
-    ImGui::SetNextWindowSize(ImVec2(panelPx(380), 0),
-                             ImGuiCond_FirstUseEver); // the pair table's width
+    // As wide as the material pairs' table.
+    ImGui::SetNextWindowSize(ImVec2(panelPx(380), 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("Physics", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
     ImGui::PushItemWidth(panelPx(160));
 
