@@ -2,7 +2,8 @@
 # Networked duels between real processes over 127.0.0.1 (ports chosen by the system,
 # so tests running side by side never collide). Every wait is bounded.
 #   duel_test.sh EXE RELAY SOURCE_DIR WORK_DIR MODE
-# MODE: loopback | relay | tamper | reconnect | rejoin | timeout | refuse
+# MODE: loopback | relay | tamper | reconnect | rejoin | timeout | refuse | window
+#   (window: XVFB_RUN in the environment names xvfb-run)
 set -u
 EXE=$1 RELAY=$2 SRC=$3 WORK=$4 MODE=$5
 rm -rf "$WORK" && mkdir -p "$WORK" && cd "$SRC" || exit 2
@@ -122,6 +123,22 @@ refuse)
     duel edited --wait 3 -- --levels "$WORK/levels"
     [ $JOIN_RC = 1 ] || fail "join exited $JOIN_RC, expected 1"
     grep -q "the host refused: level differs: host plays 10_duel.json (content hash [0-9a-f]*), bob has content hash [0-9a-f]*" "$WORK/edited.join.log" || fail "no level message"
+    ;;
+window)
+    # The host plays in its window under a virtual display ($XVFB_RUN): the duel is heard
+    # there as in the game's window. SDL's disk driver writes the sound to a file; the
+    # first shot's report must be in it. The join stops itself once the host has gone.
+    SDL_AUDIODRIVER=disk SDL_DISKAUDIOFILE="$WORK/host.raw" timeout 120 "$XVFB_RUN" -a \
+        -s "-screen 0 960x540x24" "$EXE" host levels/10_duel.json --port 0 --autoplay \
+        --name ada --window --frames 900 > "$WORK/h.log" 2>&1 &
+    H=$!
+    HP=$(port_of "$WORK/h.log") || fail "the host did not start"
+    timeout 120 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob --timeout 2 --limit 60 \
+        > "$WORK/j.log" 2>&1
+    wait $H
+    grep -q "bob joined from" "$WORK/h.log" || fail "nobody joined"
+    [ -s "$WORK/host.raw" ] || fail "the window wrote no sound"
+    od -An -tx1 -v "$WORK/host.raw" | grep -q '[1-9a-f]' || fail "the window's duel was silent"
     ;;
 *) echo "unknown mode $MODE"; exit 2 ;;
 esac

@@ -1,7 +1,10 @@
 #include "ui/net/net_screen.h"
 
 #include "game/cli/args.h"
+#include "game/audio/synthesizer.h"
 #include "ui/game/match_frame.h"
+#include "ui/game/player_settings.h"
+#include "ui/platform/audio_device.h"
 #include "ui/platform/gl_setup.h"
 #include "ui/platform/imgui_layer.h"
 #include "ui/platform/sdl_window.h"
@@ -15,6 +18,7 @@
 #include <chrono>
 #include <cstring>
 #include <deque>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -149,6 +153,16 @@ void drawStatus(const NetDuel& duel, const std::deque<std::string>& log,
     ImGui::End();
 }
 
+/// The player's volumes, as the game's pause menu set them (settings.json in the config
+/// folder), else the defaults. A check run (`--frames`) reads nothing of the player's.
+game::audio::SoundMix playerSoundMix(bool checkRun) {
+    const std::string folder = configFolder();
+    if (checkRun || folder.empty()) return {};
+    std::string warning; // a damaged file: the game says so when it opens; here, the defaults
+    return loadPlayerSettings((std::filesystem::path(folder) / "settings.json").string(), warning)
+        .sound;
+}
+
 } // namespace
 
 int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
@@ -161,6 +175,12 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
     }
     loadGLOrThrow(*window);
     ImGuiLayer imgui(*window, window.get());
+    // The duel sounds as a game in the game's window does: the synthesizer hears the match
+    // after each frame's ticks (it never writes it: the lockstep hashes are the same).
+    AudioDevice audio;
+    if (audio.silent()) std::cerr << "artillery: playing silent (" << audio.why() << ")\n";
+    game::audio::Synthesizer sound{game::audio::SynthesizerDef{.live = true}};
+    sound.setMix(playerSoundMix(opt.frames.has_value()));
     Renderer2D renderer;
     MatchView view;
     Form form;
@@ -228,7 +248,12 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
             if (match->over())
                 o.banner = match->winner() < 0 ? std::string("draw")
                                                : duel->playerName(match->winner()) + " wins";
-            drawMatchFrame(renderer, view, *match, levelCamera(*match, w, h), o);
+            const Camera camera = levelCamera(*match, w, h);
+            drawMatchFrame(renderer, view, *match, camera, o);
+            if (!audio.silent()) {
+                sound.setView({camera.visibleMin().x, camera.visibleMax().x});
+                sound.observe(*match);
+            }
         } else {
             gl::fn.Viewport(0, 0, w, h);
             gl::fn.ClearColor(0.07f, 0.12f, 0.2f, 1.0f);
@@ -241,6 +266,7 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
         }
         imgui.drawLabels(renderer.labels());
         imgui.render();
+        if (!audio.silent()) audio.feed(sound);
         const bool lastFrame = !running || (opt.frames && f + 1 == *opt.frames);
         if (lastFrame && !opt.screenshot.empty()) {
             const std::string err =
