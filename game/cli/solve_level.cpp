@@ -26,14 +26,16 @@ std::string describeShot(const std::vector<Command>& c, std::size_t i) {
 /// A duel has no stars; it is playable when each cannon can hit the other with one shot
 /// (the solver's shot at the start, as `artillery generate` checks its duel maps).
 int solveDuel(const std::string& file, const Level& level, bool json, long long require,
-              std::ostream& out) {
+              bool record, std::ostream& out) {
     const auto [first, second] = generate::duelHitsEachWay(level);
     const bool playable = first && second;
+    const char* noReplay = "no replay written: a duel is not solved, only checked";
     if (json) {
-        out << nlohmann::json{{"mode", "duel"}, {"hits", {first, second}}, {"playable", playable}}
-                   .dump()
-            << "\n";
+        nlohmann::json j{{"mode", "duel"}, {"hits", {first, second}}, {"playable", playable}};
+        if (record) j["note"] = noReplay;
+        out << j.dump() << "\n";
     } else {
+        if (record) out << noReplay << "\n";
         auto yes = [](bool b) { return b ? "yes" : "no"; };
         out << file << ": a duel has no stars; one shot from each side hits the other: cannon 1 "
             << yes(first) << ", cannon 2 " << yes(second) << "\n";
@@ -59,10 +61,8 @@ int runSolveLevel(const Args& args, std::ostream& out) {
     } catch (const LoadError& e) {
         throw UsageError(e.what());
     }
-    if (level.mode == Mode::Duel) {
-        if (record) out << "no replay written: a duel is not solved, only checked\n";
-        return solveDuel(file, level, json, require, out);
-    }
+    if (level.mode == Mode::Duel)
+        return solveDuel(file, level, json, require, record.has_value(), out);
     const SolveResult r = solveLevel(level);
     if (record && r.practice) saveReplay(*record, replayOf(level, r));
     if (json) {
