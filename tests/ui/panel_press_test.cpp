@@ -4,10 +4,11 @@
 // whose tool spawns a block where the world is pressed, a press on the Stats panel's
 // header (folded, over the sky) spawns nothing, and one in the open sky spawns a block.
 // A press the match refuses (a spawn outside the world) says why on the HUD for a while.
+#include "headless_game.h"
+#include "sdl_events.h"
 #include "ui/game/game_screen.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
-#include "sdl_events.h"
 
 #include <SDL.h>
 #include <gtest/gtest.h>
@@ -22,8 +23,6 @@
 namespace {
 
 namespace fs = std::filesystem;
-
-const fs::path kRoot = fs::path(__FILE__).parent_path().parent_path().parent_path();
 
 using test_events::button;
 using test_events::motion;
@@ -40,25 +39,16 @@ int spawns(const ui::GameScreen& screen) {
 /// The sandbox level on a headless game screen of 1280x720, with a settings folder of
 /// this process's own (the panels start where they first open), two frames drawn.
 struct Sandbox {
-    fs::path settings =
-        fs::temp_directory_path() / ("artillery-panel-press-test-" + std::to_string(::getpid()));
-    std::unique_ptr<ui::GLContext> context;
-    std::unique_ptr<ui::GameScreen> screen;
+    fs::path settings = freshFolder();
+    test_game::HeadlessGame game{"11_sandbox.json", 1280, 720, settings};
+    std::unique_ptr<ui::GameScreen>& screen = game.screen;
 
-    Sandbox() {
-        fs::remove_all(settings);
-        fs::create_directories(settings);
-        std::string error;
-        context = ui::createHeadlessContext(1280, 720, ui::HeadlessBackend::Auto, error);
-        EXPECT_NE(context, nullptr) << error;
-        if (!context) return;
-        ui::GameScreenDef def;
-        def.levelFile = (kRoot / "levels/11_sandbox.json").string();
-        def.levelsFolder = (kRoot / "levels").string();
-        def.settingsFolder = settings.string();
-        screen = std::make_unique<ui::GameScreen>(*context, nullptr, def);
-        for (int i = 0; i < 2; ++i)
-            screen->frame(1.0 / 60.0);
+    static fs::path freshFolder() {
+        const fs::path f = fs::temp_directory_path() /
+                           ("artillery-panel-press-test-" + std::to_string(::getpid()));
+        fs::remove_all(f);
+        fs::create_directories(f);
+        return f;
     }
     ~Sandbox() {
         screen.reset();

@@ -2,6 +2,7 @@
 // canvas, ui/render/design_canvas.h): on a 4K screen a panel's text is as large, next to
 // the HUD, as on a 720p one. A layout saved in one window size and loaded in another
 // keeps each panel at its corner, its margins and size scaled.
+#include "headless_game.h"
 #include "ui/game/game_screen.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
@@ -22,27 +23,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kRoot = fs::path(__FILE__).parent_path().parent_path().parent_path();
-
-/// The castle on a headless game screen of w x h with the settings folder `settings`,
-/// two frames drawn.
-struct Castle {
-    std::unique_ptr<ui::GLContext> context;
-    std::unique_ptr<ui::GameScreen> screen;
-
-    Castle(int w, int h, const fs::path& settings) {
-        std::string error;
-        context = ui::createHeadlessContext(w, h, ui::HeadlessBackend::Auto, error);
-        EXPECT_NE(context, nullptr) << error;
-        if (!context) return;
-        ui::GameScreenDef def;
-        def.levelFile = (kRoot / "levels/05_castle.json").string();
-        def.levelsFolder = (kRoot / "levels").string();
-        def.settingsFolder = settings.string();
-        screen = std::make_unique<ui::GameScreen>(*context, nullptr, def);
-        for (int i = 0; i < 2; ++i)
-            screen->frame(1.0 / 60.0);
-    }
+/// The castle on a headless game screen of w x h, two frames drawn.
+struct Castle : test_game::HeadlessGame {
+    Castle(int w, int h, const fs::path& settings)
+        : HeadlessGame("05_castle.json", w, h, settings) {}
 };
 
 struct Rect {

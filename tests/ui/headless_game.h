@@ -1,0 +1,42 @@
+// A level on a headless game screen, as the window would show it, for the tests that
+// press on it or look at its panels.
+#pragma once
+
+#include "ui/game/game_screen.h"
+#include "ui/platform/gl_context.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace test_game {
+
+/// The source tree (levels/ is in it).
+inline const std::filesystem::path kRoot =
+    std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();
+
+/// `level` (a file in levels/) on a headless game screen of w x h with the settings
+/// folder `settings` (kept: the caller decides when it goes), two frames drawn. `screen`
+/// is null when no headless context could be made (the test says why).
+struct HeadlessGame {
+    std::unique_ptr<ui::GLContext> context;
+    std::unique_ptr<ui::GameScreen> screen;
+
+    HeadlessGame(const std::string& level, int w, int h, const std::filesystem::path& settings) {
+        std::string error;
+        context = ui::createHeadlessContext(w, h, ui::HeadlessBackend::Auto, error);
+        EXPECT_NE(context, nullptr) << error;
+        if (!context) return;
+        ui::GameScreenDef def;
+        def.levelFile = (kRoot / "levels" / level).string();
+        def.levelsFolder = (kRoot / "levels").string();
+        def.settingsFolder = settings.string();
+        screen = std::make_unique<ui::GameScreen>(*context, nullptr, def);
+        for (int i = 0; i < 2; ++i)
+            screen->frame(1.0 / 60.0);
+    }
+};
+
+} // namespace test_game
