@@ -14,7 +14,9 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <unistd.h>
@@ -121,6 +123,38 @@ TEST(PanelScale, ALayoutSavedInASmallWindowIsMovedToFitALargeOne) {
         EXPECT_NEAR(p.y0, 2 * physics.y0, 2.0);
         EXPECT_NEAR(2560 - s.x1, 2 * (1280 - stats.x1), 2.0);
         EXPECT_NEAR(s.y0, 2 * stats.y0, 2.0);
+    }
+    fs::remove_all(settings);
+}
+
+// A damaged layout: a display size that is none (inf, 1e30) leaves the panels where the
+// file put them; one that is a size, with a panel far off at its edge, moves it within
+// what the layout can hold (ImGui keeps positions in shorts), not past it.
+TEST(PanelScale, ADamagedLayoutIsTakenAsItIsOrMovedWithinBounds) {
+    const fs::path settings =
+        fs::temp_directory_path() / ("artillery-panel-damaged-" + std::to_string(::getpid()));
+    auto layout = [&](const std::string& display) {
+        fs::remove_all(settings);
+        fs::create_directories(settings);
+        std::ofstream(settings / "imgui.ini")
+            << "[Window][Stats]\nPos=900,44\nSize=330,600\n\n"
+               "[Window][Physics]\nPos=32000,32000\nSize=380,20\n\n"
+               "[ArtilleryDisplay][Display]\nSize="
+            << display << "\n";
+    };
+    layout("inf,1e30");
+    {
+        Castle c(2560, 1440, settings);
+        ASSERT_NE(c.screen, nullptr);
+        EXPECT_EQ(rectOf("Stats").x0, 900.0f) << "not a display: the layout as it is";
+    }
+    layout("640,360");
+    {
+        Castle c(2560, 1440, settings);
+        ASSERT_NE(c.screen, nullptr);
+        const Rect p = rectOf("Physics");
+        EXPECT_TRUE(std::isfinite(p.x0) && std::isfinite(p.y0));
+        EXPECT_LE(p.x0, 32767.0f);
     }
     fs::remove_all(settings);
 }

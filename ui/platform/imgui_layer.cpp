@@ -10,6 +10,7 @@
 #include <imgui.h>
 #include <imgui_internal.h> // the windows of the last frame, for pressOnWindow
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
@@ -50,10 +51,19 @@ float gPanelScale = 1.0f;
 void* openDisplayEntry(ImGuiContext*, ImGuiSettingsHandler*, const char* name) {
     return std::strcmp(name, "Display") == 0 ? reinterpret_cast<void*>(1) : nullptr;
 }
+// A display of at most kMaxDisplay points a side; a damaged file's other sizes (0, -1,
+// inf, nan, 1e30) are not one, and the layout is then taken as it is.
+constexpr float kMaxDisplay = 16384.0f;
 void readDisplayLine(ImGuiContext*, ImGuiSettingsHandler* handler, void*, const char* line) {
     float w = 0.0f, h = 0.0f;
-    if (std::sscanf(line, "Size=%f,%f", &w, &h) == 2 && w > 0.0f && h > 0.0f)
+    if (std::sscanf(line, "Size=%f,%f", &w, &h) == 2 && w >= 1.0f && w <= kMaxDisplay &&
+        h >= 1.0f && h <= kMaxDisplay)
         *static_cast<Vec2*>(handler->UserData) = {w, h};
+}
+
+// A position or size for the layout's settings, which ImGui keeps in shorts.
+short settingsShort(float v) {
+    return static_cast<short>(std::clamp(std::round(v), -32768.0f, 32767.0f));
 }
 void writeDisplay(ImGuiContext*, ImGuiSettingsHandler* handler, ImGuiTextBuffer* out) {
     const Vec2 size = *static_cast<const Vec2*>(handler->UserData);
@@ -177,8 +187,8 @@ void ImGuiLayer::keepPanelsInPlace(Vec2 was, Vec2 now) {
         if (ImGui::FindWindowByID(s->ID)) continue;
         const ImVec2 size(s->Size.x, s->Size.y);
         const ImVec2 at = place(ImVec2(s->Pos.x, s->Pos.y), size);
-        s->Pos = ImVec2ih(static_cast<short>(at.x), static_cast<short>(at.y));
-        s->Size = ImVec2ih(static_cast<short>(size.x * k), static_cast<short>(size.y * k));
+        s->Pos = ImVec2ih(settingsShort(at.x), settingsShort(at.y));
+        s->Size = ImVec2ih(settingsShort(size.x * k), settingsShort(size.y * k));
     }
 }
 
