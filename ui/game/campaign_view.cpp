@@ -18,12 +18,6 @@ const ImVec4 kLocked(0.5f, 0.52f, 0.56f, 1.0f);
 const ImVec4 kError(1.0f, 0.4f, 0.4f, 1.0f);
 constexpr float kTableHeight = 470.0f; ///< px: the chapters scroll inside the menu
 
-game::Mode modeOf(const LevelEntry& e) {
-    return e.mode == game::modeName(game::Mode::Duel)      ? game::Mode::Duel
-           : e.mode == game::modeName(game::Mode::Sandbox) ? game::Mode::Sandbox
-                                                           : game::Mode::Practice;
-}
-
 std::string fileName(const std::string& path) {
     return std::filesystem::path(path).filename().string();
 }
@@ -40,7 +34,7 @@ void resultCell(const LevelEntry& e, const game::Progress& progress) {
     const game::LevelResult* r = progress.result(e.file);
     if (!r) {
         ImGui::TextColored(kDim, "-");
-    } else if (e.mode == "duel") {
+    } else if (e.mode == game::Mode::Duel) {
         ImGui::TextColored(kGold, "%s", r->won ? "won" : "played");
     } else {
         ImGui::TextColored(kGold, "%s %d%s", starsText(r->stars).c_str(), r->bestScore,
@@ -68,7 +62,7 @@ void levelRow(const std::string& number, const LevelEntry& e, const game::Lock& 
                                             : ("Locked: " + lock.why + "\n" + e.lesson).c_str());
     ImGui::PopID();
     ImGui::TableNextColumn();
-    ImGui::TextColored(kDim, "%s", e.mode.c_str());
+    ImGui::TextColored(kDim, "%s", e.error.empty() ? game::modeName(e.mode) : "");
     ImGui::TableNextColumn();
     if (!e.error.empty())
         ImGui::TextColored(kError, "%s", e.error.c_str());
@@ -92,7 +86,7 @@ bool chapterRow(std::size_t c, const game::Chapter& ch, const std::vector<LevelE
     ImGui::TableNextColumn();
     int practice = 0;
     for (const LevelEntry& e : levels)
-        practice += e.mode == "practice";
+        practice += e.mode == game::Mode::Practice && e.error.empty();
     ImGui::TextColored(kGold, "%d/%d *", game::chapterStars(ch, progress), 3 * practice);
     ImGui::TableNextColumn();
     ImGui::TextColored(lock.open ? ImVec4(1, 1, 1, 1) : kLocked, "%s", ch.title.c_str());
@@ -175,13 +169,13 @@ void campaignTable(const CampaignMenu& menu, const game::Progress& progress, Men
             choice.lessonThenLevel.clear();
         }
         for (std::size_t l = 0; l < levels.size(); ++l) {
-            const game::Lock lock = game::levelLock(campaign, c, l, progress, modeOf(levels[l]));
+            const game::Lock lock = game::levelLock(campaign, c, l, progress, levels[l].mode);
             bool clicked = false;
             levelRow(std::to_string(c + 1) + "." + std::to_string(l + 1), levels[l], lock, progress,
                      clicked);
             // The next level to play on the way through the campaign (the duels, always
             // open, are not the way).
-            if (scrollToNext && lock.open && modeOf(levels[l]) != game::Mode::Duel &&
+            if (scrollToNext && lock.open && levels[l].mode != game::Mode::Duel &&
                 !game::cleared(progress, levels[l].file)) {
                 ImGui::SetScrollHereY(0.3f);
                 scrollToNext = false;
@@ -221,7 +215,7 @@ MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progres
     const LevelEntry& e = menu.chapters[next->chapter][next->level];
     const game::Chapter& ch = menu.campaign.chapters[next->chapter];
     const game::Lock lock =
-        game::levelLock(menu.campaign, next->chapter, next->level, progress, modeOf(e));
+        game::levelLock(menu.campaign, next->chapter, next->level, progress, e.mode);
     // Just below the results card in the middle of the screen (ui/game/match_view.cpp).
     const ImVec2 d = ImGui::GetIO().DisplaySize;
     const auto belowCard = static_cast<float>(86.0 * hudScale(d.x, d.y));

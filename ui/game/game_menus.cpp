@@ -151,7 +151,7 @@ std::vector<LevelEntry> listLevels(const std::string& folder) {
             const game::Level l = game::loadLevel(e.file);
             e.name = l.name;
             e.lesson = l.lesson.empty() ? l.description : l.lesson;
-            e.mode = game::modeName(l.mode);
+            e.mode = l.mode;
         } catch (const std::exception& err) {
             e.name = f.path().filename().string();
             e.error = err.what();

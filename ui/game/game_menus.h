@@ -21,7 +21,7 @@ struct LevelEntry {
     std::string file;
     std::string name;
     std::string lesson;
-    std::string mode;
+    game::Mode mode = game::Mode::Practice; ///< what the file says (when it loads)
     std::string error; ///< why it does not load ("" when it does)
 };
 
