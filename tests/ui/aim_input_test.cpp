@@ -100,6 +100,42 @@ TEST(AimInput, SpaceChargeFiresAtTheChargedPower) {
     EXPECT_FALSE(in.charging());
 }
 
+// A player who drags the power and then presses Space, the usual fire key, means that
+// power: a tap fires at it, where a charge would fire at the few per cent reached.
+TEST(AimInput, ATapOfSpaceFiresAtThePowerSetNotAtTheCharge) {
+    ui::AimInput in; // a tap is under 0.2 s, full power after 1.5 s
+    const game::CannonState c = cannon(45.0, 20.0, 60.0);
+    in.sync(c);
+    in.beginDrag({0.0, 0.0}, {100.0, -100.0}, 60.0); // 45 degrees, 141 px of 260
+    const auto dragged = in.endDrag(c);
+    ASSERT_EQ(dragged.size(), 1u); // the angle is unchanged: the power
+    const double power = dragged[0].number;
+    ASSERT_GT(power, 30.0);
+    game::CannonState aimed = c;
+    aimed.speedMps = power;
+    in.sync(aimed);
+    in.startCharge();
+    for (int i = 0; i < 6; ++i)
+        in.updateCharge(1.0 / 60.0); // 0.1 s
+    EXPECT_TRUE(in.charging());
+    EXPECT_FALSE(in.chargeFraction()); // the power bar still shows the power set
+    const auto cmds = in.releaseCharge(aimed);
+    ASSERT_EQ(cmds.size(), 1u); // nothing to change: fire
+    EXPECT_EQ(cmds[0].kind, CommandKind::Fire);
+    EXPECT_DOUBLE_EQ(in.pending().speedMps, power);
+    EXPECT_FALSE(in.charging());
+
+    // Held past the tap, it is a charge from zero as before.
+    in.startCharge();
+    for (int i = 0; i < 15; ++i)
+        in.updateCharge(1.0 / 60.0); // 0.25 s: a sixth
+    ASSERT_TRUE(in.chargeFraction());
+    const auto charged = in.releaseCharge(aimed);
+    ASSERT_EQ(charged.size(), 2u);
+    EXPECT_EQ(charged[0].kind, CommandKind::Power);
+    EXPECT_DOUBLE_EQ(charged[0].number, 10.0);
+}
+
 TEST(AimInput, ChargeBeyondFullIsClampedAndSendsPowerThenFire) {
     ui::AimInput in;
     const game::CannonState c = cannon(45.0, 10.0, 50.0);

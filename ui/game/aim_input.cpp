@@ -86,6 +86,10 @@ void AimInput::updateCharge(double dt) {
 
 std::vector<game::Command> AimInput::releaseCharge(const game::CannonState& cannon) {
     if (!charge_) return {};
+    if (tapped()) {
+        charge_.reset();
+        return fire(cannon);
+    }
     pending_.speedMps = std::max(0.0, round1(*charge_ * cannon.def.maxSpeedMps));
     pending_.speedMps = std::min(pending_.speedMps, cannon.def.maxSpeedMps);
     charge_.reset();

@@ -21,6 +21,9 @@ namespace ui {
 struct AimInputDef {
     double fullPowerPixels = 260.0; ///< drag length from the cannon that means full power, px
     double chargeSeconds = 1.5;     ///< holding Space this long charges from 0 to full power, s
+    /// Space released sooner than this is a tap, not a charge: it fires at the power set
+    /// (by a drag, say), as Enter does, instead of at the few per cent charged, s.
+    double tapSeconds = 0.2;
     double angleRate = 40.0;        ///< deg/s while an arrow key is held (x0.2 with Shift)
     double powerRate = 15.0;        ///< m/s per s while up/down is held
     double stickDeadzone = 0.3;     ///< stick deflection (0..1) under which it is ignored
@@ -60,9 +63,13 @@ class AimInput {
     void startCharge();
     void updateCharge(double dt);
     bool charging() const { return charge_.has_value(); }
-    /// 0..1 of full power, while charging.
-    std::optional<double> chargeFraction() const { return charge_; }
-    /// Space released: power = charge x maximum, then aim, power and fire.
+    /// 0..1 of full power, while charging and past a tap (before that the power set is
+    /// what a release fires).
+    std::optional<double> chargeFraction() const {
+        return charge_ && !tapped() ? charge_ : std::nullopt;
+    }
+    /// Space released: power = charge x maximum, then aim, power and fire; after a tap,
+    /// aim, the power set and fire.
     std::vector<game::Command> releaseCharge(const game::CannonState& cannon);
     /// Drops a charge without firing (Esc, or the turn passed).
     void cancelCharge() { charge_.reset(); }
@@ -77,6 +84,9 @@ class AimInput {
     static std::optional<game::Command> select(const game::CannonState& cannon, std::size_t index);
 
   private:
+    /// Space has been held for less than a tap.
+    bool tapped() const { return charge_ && *charge_ * def_.chargeSeconds < def_.tapSeconds; }
+
     AimInputDef def_;
     PendingAim pending_;
     bool dirty_ = false;

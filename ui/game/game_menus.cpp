@@ -358,7 +358,7 @@ void helpOverlay(bool& open) {
         {"left / right", "turn the barrel (Shift: fine)"},
         {"up / down", "power (Shift: fine)"},
         {"hold Space, release", "charge the power from zero and fire"},
-        {"Enter or F", "fire at the power set"},
+        {"tap Space, Enter, F", "fire at the power set"},
         {"1 .. 8, Tab", "choose the projectile"},
         {"E", "end the turn (duels)"},
         {"P / V / H", "launch-arc preview / full preview / firing-solution hint (the last two: at "

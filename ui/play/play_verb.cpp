@@ -40,7 +40,7 @@ Plays LEVEL in a window; without LEVEL the level select screen opens (the campai
 levels/ in chapters with their lessons, your stars, and what opens next; any level
 opens here as LEVEL, locked or not). Aim by dragging from the cannon
 (direction = angle, length = power) or with the arrow keys, hold Space to charge and
-release to fire, 1-8 pick the projectile. Every change you make, physics settings
+release to fire (a tap fires at the power set), 1-8 pick the projectile. Every change you make, physics settings
 included, is a command the session records, so each game is a replay. Progress, choices
 and the panel layout are kept in $XDG_CONFIG_HOME/artillery (~/.config/artillery), the
 replays in its replays/ folder ("Replays" on the level select screen lists them).
@@ -99,7 +99,7 @@ draw (the physics panel's "draw" toggles, on from the start; levels and --demo):
                         asleep blue, fixed grey, Box2D pink (asleep: dark pink)
 
 keys:  mouse drag aim   arrows angle/power   hold Space charge, release fire
-       Enter/F fire   1-8 projectile   E end turn   P preview   H hint
+       Space tap, Enter/F fire at the power set   1-8 projectile   E end turn   P preview   H hint
        Esc pause menu   F1 or ? help   F2 physics panel   . one tick
        K pause/resume   Backspace (hold) rewind 1 s, play on as a branch
        [ ] slower/faster   R restart   L levels   F12 screenshot
