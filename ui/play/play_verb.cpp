@@ -40,10 +40,11 @@ Plays LEVEL in a window; without LEVEL the level select screen opens (the campai
 levels/ in chapters with their lessons, your stars, and what opens next; any level
 opens here as LEVEL, locked or not). Aim by dragging from the cannon
 (direction = angle, length = power) or with the arrow keys, hold Space to charge and
-release to fire (a tap fires at the power set), 1-8 pick the projectile. Every change you make, physics settings
-included, is a command the session records, so each game is a replay. Progress, choices
-and the panel layout are kept in $XDG_CONFIG_HOME/artillery (~/.config/artillery), the
-replays in its replays/ folder ("Replays" on the level select screen lists them).
+release to fire (a tap fires at the power set), 1-8 pick the projectile. Every change
+you make, physics settings included, is a command the session records, so each game
+is a replay. Progress, choices and the panel layout are kept in
+$XDG_CONFIG_HOME/artillery (~/.config/artillery), the replays in its replays/ folder
+("Replays" on the level select screen lists them).
 
 With --replay the window watches a recorded game instead: play / pause, one tick, any
 speed from x1/8 to x16, a scrub bar over the whole game (going back re-simulates it
@@ -99,8 +100,9 @@ draw (the physics panel's "draw" toggles, on from the start; levels and --demo):
                         asleep blue, fixed grey, Box2D pink (asleep: dark pink)
 
 keys:  mouse drag aim   arrows angle/power   hold Space charge, release fire
-       Space tap, Enter/F fire at the power set   1-8 projectile   E end turn   P preview   H hint
-       Esc pause menu   F1 or ? help   F2 physics panel   . one tick
+       Space tap or Enter/F fire at the power set   1-8 projectile   E end turn
+       P preview   H hint   Esc pause menu   F1 or ? help   F2 physics panel
+       . one tick
        K pause/resume   Backspace (hold) rewind 1 s, play on as a branch
        [ ] slower/faster   R restart   L levels   F12 screenshot
 replay: Space or K play/pause   . one tick   , one tick back   [ ] speed x1/8..x16
