@@ -17,8 +17,9 @@
 //
 // `--heap N --seconds S` instead drops the staggered heap of tests/physics/pile_test.cpp
 // (N balls, each row offset by half a spacing) and prints, every simulated second, how
-// many balls sleep, the kinetic energy and the fastest ball: whether a big heap comes
-// to rest. `--drop N --seconds S` does the same for the bench's own pile of N balls.
+// many balls sleep, the kinetic energy, the fastest ball and the deepest overlap (in
+// radii): whether a big heap comes to rest, and how far inside itself it rests.
+// `--drop N --seconds S` does the same for the bench's own pile of N balls.
 //
 // Usage: bench_pile [--balls N] [--skip S] [--ticks T] [--side particles|rigid|both]
 //                   [--tuned] [--trace] [--csv]
@@ -76,12 +77,42 @@ struct Options {
     double seconds = 20.0;
 };
 
+// The deepest overlap of two balls, or of a ball and a static segment, in radii of the
+// ball (the smaller one's): how far the contact solver leaves the pile inside itself.
+// Pairs by a sweep along x.
+double worstOverlapInRadii(const World& w) {
+    const ParticleSet& p = w.particles;
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < p.slots(); ++i)
+        if (p.flags[i] & kAlive) order.push_back(i);
+    std::sort(order.begin(), order.end(), [&](auto i, auto j) { return p.px[i] < p.px[j]; });
+    double widest = 0.0;
+    for (const std::size_t i : order)
+        widest = std::max(widest, p.radius[i]);
+    double worst = 0.0;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const std::size_t i = order[k];
+        const Vec2 pi = p.position(static_cast<ParticleId>(i));
+        for (const Segment& s : w.shapes.segments)
+            worst = std::max(worst, (p.radius[i] - closestPoint(s, pi).distance) / p.radius[i]);
+        for (std::size_t m = k + 1; m < order.size(); ++m) {
+            const std::size_t j = order[m];
+            if (p.px[j] - pi.x >= p.radius[i] + widest) break;
+            const double reach = p.radius[i] + p.radius[j];
+            const double gap = length(p.position(static_cast<ParticleId>(j)) - pi) - reach;
+            worst = std::max(worst, -gap / std::min(p.radius[i], p.radius[j]));
+        }
+    }
+    return worst;
+}
+
 // Every simulated second until `seconds`: how many balls sleep, the kinetic energy, the
-// fastest ball, the wall ms per tick and the hash: whether a big pile comes to rest.
+// fastest ball, the deepest overlap, the wall ms per tick and the hash: whether a big pile
+// comes to rest, and how well it is solved.
 void printSettling(World& w, double seconds) {
     const int perSecond = static_cast<int>(std::lround(1.0 / w.def().tickSeconds));
-    std::printf("%8s %9s %12s %12s %10s %16s\n", "time_s", "asleep", "kinetic_J", "fastest_m_s",
-                "ms_per_tick", "hash");
+    std::printf("%8s %9s %12s %12s %11s %10s %16s\n", "time_s", "asleep", "kinetic_J",
+                "fastest_m_s", "overlap_r", "ms_per_tick", "hash");
     for (int s = 1; s <= static_cast<int>(std::lround(seconds)); ++s) {
         const auto t0 = Clock::now();
         stepParticlePile(w, perSecond);
@@ -90,8 +121,9 @@ void printSettling(World& w, double seconds) {
         const ParticleSet& p = w.particles;
         for (std::size_t i = 0; i < p.slots(); ++i)
             fastest = std::max(fastest, std::hypot(p.vx[i], p.vy[i]));
-        std::printf("%8d %9d %12.4g %12.4g %10.3f %016llx\n", s, sleepers(p),
-                    energy(p, w.springs, w.def().forces).kinetic, fastest, ms,
+        std::printf("%8d %9d %12.4g %12.4g %11.4f %10.3f %016llx\n", s, sleepers(p),
+                    energy(p, w.springs, w.def().forces).kinetic, fastest,
+                    worstOverlapInRadii(w), ms,
                     static_cast<unsigned long long>(w.hash()));
     }
 }
