@@ -102,7 +102,7 @@ void Synthesizer::click() {
 void Synthesizer::forgetMatch() {
     for (Voice& v : voices_)
         if (v.kind == VoiceKind::Whistle) v.keys.push_back({cursor_, 0.0, 0.0, v.pan, true});
-    whistleId_ = 0;
+    whistles_.clear();
     seen_ = false;
     seenEvents_ = 0;
     waterEntry_.forget();
@@ -174,41 +174,79 @@ void Synthesizer::hearEvents(const Match& m) {
 }
 
 void Synthesizer::hearShell(const Match& m) {
-    const auto shell = m.shell();
     // A splash where the shell went into the water since the last look.
     if (const auto entry = waterEntry_.look(m))
         start(splash(entry->downSpeed), m.tick(), entry->point, 0x5b1a5b);
-    Voice* whistling = nullptr;
-    for (Voice& v : voices_)
-        if (v.id == whistleId_ && !v.ending) whistling = &v;
-    const std::int64_t at = atTick(m.tick());
-    if (!shell) {
-        if (whistling)
-            whistling->keys.push_back({at, whistling->targetHz, 0.0, whistling->pan, true});
-        whistleId_ = 0;
-        return;
+    std::optional<ShellSound> heard;
+    if (const auto shell = m.shell()) {
+        const phys::ParticleSet& p = m.world().particles;
+        heard = ShellSound{p.position(*shell), p.velocity(*shell)};
+        // Under water the air is gone: no whistle (water drag stops the shell within metres).
+        heard->underwater =
+            m.level().physics.water && heard->position.y < m.level().physics.waterLevel;
     }
-    const Vec2 p = m.world().particles.position(*shell);
-    const Vec2 v = m.world().particles.velocity(*shell);
-    const double speed = length(v);
-    // Doppler: the listener sits at the middle of the view, half its width in front of
-    // the screen; f' = f c / (c + v_r), v_r the speed away from the listener.
-    const double half = 0.5 * (view_.right - view_.left);
-    const Vec2 listener{0.5 * (view_.left + view_.right),
-                        0.5 * (m.level().worldMin.y + m.level().worldMax.y)};
-    const Vec2 away = p - listener;
-    const double distance = std::sqrt(dot(away, away) + half * half);
-    const double receding = dot(v, away) / std::max(1e-9, distance);
-    const double pitch = whistlePitch(speed) * kSpeedOfSound / (kSpeedOfSound + receding);
-    if (!whistling) {
-        start(whistle(), m.tick(), p, 0);
-        whistling = &voices_.back(); // a whistle is always admitted
-        whistleId_ = whistling->id;
+    // One whistle, whichever shell the match follows.
+    std::vector<KeyedShell> flying;
+    if (heard) flying.push_back({0, *heard});
+    followWhistles(flying, m.tick(), 0.5 * (m.level().worldMin.y + m.level().worldMax.y));
+}
+
+void Synthesizer::followWhistles(const std::vector<KeyedShell>& shells, std::uint64_t tick,
+                                 double listenerY) {
+    const std::int64_t at = atTick(tick);
+    auto voiceOf = [&](std::uint64_t id) -> Voice* {
+        for (Voice& v : voices_)
+            if (v.id == id && !v.ending) return &v;
+        return nullptr;
+    };
+    // A shell no longer told: its whistle fades out.
+    std::erase_if(whistles_, [&](const Whistling& w) {
+        const bool flying = std::any_of(shells.begin(), shells.end(),
+                                        [&](const KeyedShell& s) { return s.key == w.key; });
+        if (flying) return false;
+        if (Voice* v = voiceOf(w.voice)) v->keys.push_back({at, v->targetHz, 0.0, v->pan, true});
+        return true;
+    });
+    for (const KeyedShell& s : shells) {
+        const Vec2 p = s.shell.position;
+        const Vec2 v = s.shell.velocity;
+        const double speed = length(v);
+        // Doppler: the listener sits at the middle of the view, half its width in front
+        // of the screen; f' = f c / (c + v_r), v_r the speed away from the listener.
+        const double half = 0.5 * (view_.right - view_.left);
+        const Vec2 listener{0.5 * (view_.left + view_.right), listenerY};
+        const Vec2 away = p - listener;
+        const double distance = std::sqrt(dot(away, away) + half * half);
+        const double receding = dot(v, away) / std::max(1e-9, distance);
+        const double pitch = whistlePitch(speed) * kSpeedOfSound / (kSpeedOfSound + receding);
+        auto w = std::find_if(whistles_.begin(), whistles_.end(),
+                              [&](const Whistling& x) { return x.key == s.key; });
+        Voice* whistling = w == whistles_.end() ? nullptr : voiceOf(w->voice);
+        if (!whistling) {
+            start(whistle(), tick, p, 0);
+            whistling = &voices_.back(); // a whistle is always admitted
+            if (w == whistles_.end())
+                whistles_.push_back({s.key, whistling->id});
+            else
+                w->voice = whistling->id;
+        }
+        const double gain = s.shell.underwater ? 0.0 : whistleGain(speed);
+        whistling->keys.push_back({at, pitch, gain, panOf(p), false});
     }
-    // Under water the air is gone: no whistle (water drag stops the shell within metres).
-    const bool underwater = m.level().physics.water && p.y < m.level().physics.waterLevel;
-    const double gain = underwater ? 0.0 : whistleGain(speed);
-    if (whistling) whistling->keys.push_back({at, pitch, gain, panOf(p), false});
+}
+
+// ---- a scene that is not a match -------------------------------------------------------
+void Synthesizer::hearShot(Vec2 muzzle, double muzzleSpeed) {
+    start(report(muzzleSpeed), 0, muzzle, ++toldEvents_);
+}
+
+void Synthesizer::hearLanding(Vec2 where, double speed, Timbre surface) {
+    if (!(speed > def_.impactSpeedMps)) return;
+    start(impact(surface, speed, 0.0), 0, where, ++toldEvents_);
+}
+
+void Synthesizer::hearShellsInFlight(const std::vector<KeyedShell>& shells, double listenerY) {
+    followWhistles(shells, 0, listenerY);
 }
 
 void Synthesizer::hearContacts(const Match& m) {

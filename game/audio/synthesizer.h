@@ -25,7 +25,9 @@
 // Section index
 //   SoundMix      master, effects and UI volume, mute
 //   ViewFrame     what the listener sees (panning)
-//   Synthesizer   observe(match) after each tick, render(frames), click()
+//   ShellSound    a shell in flight as the whistle hears it
+//   Synthesizer   observe(match) after each tick, render(frames), click(); a scene that
+//                 is not a match (the physics lab) tells it its shots, landings and shell
 #pragma once
 
 #include "game/audio/voices.h"
@@ -34,6 +36,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace game::audio {
@@ -52,6 +55,17 @@ struct SoundMix {
 struct ViewFrame {
     double left = 0.0;
     double right = 200.0;
+};
+
+/// A shell in flight, as its whistle follows it.
+struct ShellSound {
+    phys::Vec2 position, velocity; ///< m, m/s
+    bool underwater = false;       ///< the air is gone: no whistle
+};
+/// A shell and what tells it from the others in flight (its particle, say).
+struct KeyedShell {
+    std::uint64_t key = 0;
+    ShellSound shell;
 };
 
 struct SynthesizerDef {
@@ -78,6 +92,18 @@ class Synthesizer {
     /// Forgets the match (voices sounding play out).
     void forgetMatch();
 
+    // A scene that is not a match (the physics lab) tells what happens as it happens;
+    // each sounds at the next sample to play (a live synthesizer's clock).
+    /// A shot leaving the muzzle at `muzzleSpeed` m/s: the report.
+    void hearShot(phys::Vec2 muzzle, double muzzleSpeed);
+    /// A shell coming down on `surface` at `speed` m/s (and staying there): a thud, or
+    /// nothing below the impact threshold.
+    void hearLanding(phys::Vec2 where, double speed, Timbre surface);
+    /// The shells in flight, each frame: each has a whistle of its own while its key is
+    /// told, which fades out when it no longer is. The listener is at the middle of the
+    /// view, at height `listenerY`.
+    void hearShellsInFlight(const std::vector<KeyedShell>& shells, double listenerY);
+
     void setMix(const SoundMix& mix) { mix_ = mix; }
     const SoundMix& mix() const { return mix_; }
     /// The listener's view (live: the camera; offline: the level's bounds by default).
@@ -101,6 +127,9 @@ class Synthesizer {
     void followClock(const Match& m);
     void hearEvents(const Match& m);
     void hearShell(const Match& m);
+    /// Each whistle follows its shell from tick `tick` on; one not told fades out.
+    void followWhistles(const std::vector<KeyedShell>& shells, std::uint64_t tick,
+                        double listenerY);
     void hearContacts(const Match& m);
     void hearBlocks(const Match& m);
 
@@ -121,8 +150,13 @@ class Synthesizer {
     std::uint64_t baseTick_ = 0;
     std::int64_t baseSample_ = 0;
     std::int64_t tickMilliHz_ = 0;
-    // The shell's whistle (an index into voices_ is unstable: found by this id).
-    std::uint64_t whistleId_ = 0;
+    // The shells' whistles (an index into voices_ is unstable: each found by its id).
+    struct Whistling {
+        std::uint64_t key;   ///< the shell's (KeyedShell::key)
+        std::uint64_t voice; ///< Voice::id
+    };
+    std::vector<Whistling> whistles_;
+    std::uint64_t toldEvents_ = 0; ///< shots and landings told: each one's noise differs
     WaterEntryWatch waterEntry_; ///< the shell's crossings of the water line: splashes
     // Blocks' velocities at the last look.
     std::vector<phys::Vec2> blockVelocity_;

@@ -385,3 +385,53 @@ TEST(Sound, ABallStrikingABlockIsHeard) {
     }
     EXPECT_GT(struck, 0) << "the ball falls onto the block within 2 s";
 }
+
+// A scene that is not a match (the physics lab) tells the synthesizer what happens: a
+// shot is a report at once, louder for a faster shell; a landing a thud, none below the
+// impact threshold; a shell in flight a whistle whose pitch follows it, faded out when
+// none is told.
+TEST(Sound, ASceneThatIsNotAMatchIsHeardAsItTells) {
+    auto heard = [](auto tell) {
+        Synthesizer synth{SynthesizerDef{.live = true}};
+        synth.setView({0.0, 60.0});
+        tell(synth);
+        std::vector<float> s(2 * kTenthSecond * 5);
+        synth.render(s.data(), s.size() / 2);
+        return std::pair{rms(s, 0, kTenthSecond), s};
+    };
+    const auto [slow, slowTrack] = heard([](Synthesizer& s) { s.hearShot({0.0, 1.0}, 20.0); });
+    const auto [fast, fastTrack] = heard([](Synthesizer& s) { s.hearShot({0.0, 1.0}, 60.0); });
+    EXPECT_GT(slow, 0.02);
+    EXPECT_GT(fast, slow);
+
+    const auto [thud, thudTrack] = heard([](Synthesizer& s) {
+        s.hearLanding({40.0, 0.2}, 20.0, Timbre::Earth);
+    });
+    EXPECT_GT(thud, 0.01);
+    EXPECT_GT(rms(thudTrack, 0, kTenthSecond, 1), rms(thudTrack, 0, kTenthSecond, 0))
+        << "at 40 of 0..60 m it is right of the middle";
+    const auto [soft, softTrack] = heard([](Synthesizer& s) {
+        s.hearLanding({40.0, 0.2}, 1.0, Timbre::Earth);
+    });
+    EXPECT_EQ(soft, 0.0) << "1 m/s is below the impact threshold";
+
+    Synthesizer synth{SynthesizerDef{.live = true}};
+    synth.setView({0.0, 60.0});
+    synth.hearShellsInFlight({{7, ShellSound{{10.0, 10.0}, {40.0, 10.0}}}}, 20.0);
+    EXPECT_EQ(synth.started(VoiceKind::Whistle), 1u);
+    std::vector<float> s(2 * kTenthSecond);
+    synth.render(s.data(), kTenthSecond);
+    EXPECT_GT(rms(s, kTenthSecond / 2, kTenthSecond), 0.0);
+    synth.hearShellsInFlight({{7, ShellSound{{14.0, 11.0}, {40.0, 9.0}}}}, 20.0);
+    EXPECT_EQ(synth.started(VoiceKind::Whistle), 1u) << "the same whistle follows the shell";
+    synth.hearShellsInFlight(
+        {{7, ShellSound{{18.0, 11.8}, {40.0, 8.0}}}, {9, ShellSound{{1.0, 2.0}, {30.0, 30.0}}}},
+        20.0);
+    EXPECT_EQ(synth.started(VoiceKind::Whistle), 2u) << "a second shell: a second whistle";
+    EXPECT_EQ(synth.voices(), 2u);
+    synth.hearShellsInFlight({}, 20.0);
+    for (int k = 0; k < 10; ++k)
+        synth.render(s.data(), kTenthSecond);
+    EXPECT_EQ(rms(s, 0, kTenthSecond), 0.0) << "no shell: the whistle has faded out";
+    EXPECT_EQ(synth.voices(), 0u);
+}

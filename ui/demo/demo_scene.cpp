@@ -31,6 +31,7 @@ void DemoScene::reset() {
     world = phys::World(settings);
     shells_.clear();
     landings_.clear();
+    shotsFired_ = landingsMade_ = 0;
     world.particles.reserve(64);
     buildChain();
     nextShot_ = 0.1;
@@ -89,6 +90,7 @@ void DemoScene::fire() {
     const bool airActs = f.drag != phys::DragModel::None;
     if (airActs) launch(true);
     launch(false);
+    ++shotsFired_;
     nextShot_ = world.time() + def_.fireInterval;
 }
 
@@ -123,8 +125,10 @@ void DemoScene::retireLandedShells() {
             }
             at.y = def_.groundY + def_.shellRadius;
             s.trail.push_back(at);
+            const double speed = length(world.particles.velocity(s.id));
             landings_.push_back(
-                {at, world.time(), at.x - def_.cannonPivot.x, s.vacuum, std::move(s.trail)});
+                {at, world.time(), at.x - def_.cannonPivot.x, speed, s.vacuum, std::move(s.trail)});
+            ++landingsMade_;
             if (landings_.size() > kLandingsKept) landings_.erase(landings_.begin());
         }
         world.particles.remove(s.id);

@@ -7,6 +7,7 @@
 
 #include "physics/world.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace ui {
@@ -50,6 +51,7 @@ struct Landing {
     Vec2 at;            ///< m
     double time = 0.0;  ///< s, when it landed
     double range = 0.0; ///< horizontal distance from the cannon (the ruler's 0), m
+    double speed = 0.0; ///< m/s as it came down (its last tick's)
     bool vacuum = false;
     std::vector<Vec2> trail; ///< the whole flight, kept to fade out
 };
@@ -72,6 +74,10 @@ class DemoScene {
     const std::vector<Landing>& landings() const { return landings_; }
     /// Seconds of simulated time until the next shot.
     double nextShotIn() const { return nextShot_ - world.time(); }
+    /// Shots fired (a shell and, with air, its drag-free twin) and shells landed since the
+    /// opening or the last reset: what is new since a count was last looked at.
+    std::uint64_t shotsFired() const { return shotsFired_; }
+    std::uint64_t landingsMade() const { return landingsMade_; }
 
   private:
     void buildChain();
@@ -81,6 +87,7 @@ class DemoScene {
     std::vector<ShellTrack> shells_;
     std::vector<Landing> landings_;
     double nextShot_ = 0.0;
+    std::uint64_t shotsFired_ = 0, landingsMade_ = 0;
 };
 
 } // namespace ui

@@ -132,4 +132,12 @@ std::string savePlayerSettings(const std::string& file, const PlayerSettings& s)
     return "";
 }
 
+game::audio::SoundMix playerSoundMix(bool checkRun) {
+    const std::string folder = configFolder();
+    if (checkRun || folder.empty()) return {};
+    std::string warning; // a damaged file: the game says so when it opens; here, the defaults
+    return loadPlayerSettings((std::filesystem::path(folder) / "settings.json").string(), warning)
+        .sound;
+}
+
 } // namespace ui

@@ -61,4 +61,9 @@ PlayerSettings loadPlayerSettings(const std::string& file, std::string& warning)
 /// Writes atomically, creating the folder. Returns "" or why it failed.
 std::string savePlayerSettings(const std::string& file, const PlayerSettings& settings);
 
+/// The player's volumes, as the game's pause menu set them (settings.json in the config
+/// folder), else the defaults: for the windows that are not the game's (the network duel,
+/// the physics lab). A check run (`--frames`) reads nothing of the player's.
+game::audio::SoundMix playerSoundMix(bool checkRun);
+
 } // namespace ui

@@ -153,16 +153,6 @@ void drawStatus(const NetDuel& duel, const std::deque<std::string>& log,
     ImGui::End();
 }
 
-/// The player's volumes, as the game's pause menu set them (settings.json in the config
-/// folder), else the defaults. A check run (`--frames`) reads nothing of the player's.
-game::audio::SoundMix playerSoundMix(bool checkRun) {
-    const std::string folder = configFolder();
-    if (checkRun || folder.empty()) return {};
-    std::string warning; // a damaged file: the game says so when it opens; here, the defaults
-    return loadPlayerSettings((std::filesystem::path(folder) / "settings.json").string(), warning)
-        .sound;
-}
-
 } // namespace
 
 int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 
 namespace ui {
@@ -35,6 +36,20 @@ PlayScreen::PlayScreen(GLContext& context, SdlWindow* window, const PlayScreenDe
     view_ = def_.view;
     def_.msaaSamples = autoSamples(def_.msaaSamples);
     msaa_.resize(context.width(), context.height(), def_.msaaSamples);
+    if (def_.sound) {
+        audio_ = std::make_unique<AudioDevice>();
+        if (audio_->silent()) std::cerr << "artillery: playing silent (" << audio_->why() << ")\n";
+        sound_.setMix(def_.mix);
+    }
+}
+
+void PlayScreen::hearFrame() {
+    if (!audio_ || audio_->silent()) return;
+    // Panned across what the camera shows, heard from its middle.
+    const Vec2 lo = camera_.visibleMin(), hi = camera_.visibleMax();
+    sound_.setView({lo.x, hi.x});
+    demoSound_.hear(scene_, sound_, 0.5 * (lo.y + hi.y));
+    audio_->feed(sound_);
 }
 
 void PlayScreen::applySettings(const phys::WorldDef& def) {
@@ -120,6 +135,7 @@ void PlayScreen::frame(double wallSeconds) {
         }
         msaa_.resize(w, h, def_.msaaSamples);
     }
+    hearFrame();
 
     imgui_.newFrame(wallSeconds);
 
@@ -143,6 +159,10 @@ void PlayScreen::frame(double wallSeconds) {
             previous_ = {};
             ghosts_.clear();
         }
+        // A click for every button, box and slider pressed, as in the game.
+        if (audio_ && !audio_->silent() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
+            ImGui::IsAnyItemHovered())
+            sound_.click();
     }
     imgui_.drawLabels(renderer_.labels());
     imgui_.render();

@@ -3,9 +3,12 @@
 // feeds it time and events differs (ui/play/play_verb.cpp).
 #pragma once
 
+#include "game/audio/synthesizer.h"
 #include "physics/clock.h"
 #include "ui/demo/demo_scene.h"
+#include "ui/demo/demo_sound.h"
 #include "ui/demo/demo_view.h"
+#include "ui/platform/audio_device.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
 #include "ui/play/physics_panel.h"
@@ -15,6 +18,7 @@
 #include "ui/render/screenshot.h"
 #include "ui/render/world_view.h"
 
+#include <memory>
 #include <string>
 
 union SDL_Event;
@@ -31,6 +35,10 @@ struct PlayScreenDef {
     ViewControls view; ///< what to draw at the start
     phys::WorldDef world = demoWorldDef();
     DemoDef demo;
+    /// Heard through the sound card (a window; never headless): the shots, the shell's
+    /// whistle and its landings, at the player's volumes.
+    bool sound = false;
+    game::audio::SoundMix mix;
 };
 
 class PlayScreen final : public Screen {
@@ -68,6 +76,8 @@ class PlayScreen final : public Screen {
     void drawHud();
     /// After each tick: what the overlays keep across ticks (the ghosts' launches).
     void observeTick();
+    /// After the frame's ticks: what the scene did, to the sound card.
+    void hearFrame();
 
     GLContext& context_;
     bool glLoaded_;
@@ -87,6 +97,9 @@ class PlayScreen final : public Screen {
     phys::ClosedFormGhosts ghosts_;
     bool screenshotRequested_ = false;
     int framesMeasured_ = 0;
+    std::unique_ptr<AudioDevice> audio_; ///< null headless
+    game::audio::Synthesizer sound_{game::audio::SynthesizerDef{.live = true}};
+    DemoSound demoSound_;
 };
 
 /// A screenshot file name that does not exist yet: artillery-YYYYMMDD-HHMMSS.png.

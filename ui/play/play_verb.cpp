@@ -5,6 +5,7 @@
 #include "game/files/json_reader.h"
 #include "game/replay.h"
 #include "ui/game/game_screen.h"
+#include "ui/game/player_settings.h"
 #include "ui/platform/sdl_window.h"
 #include "ui/play/play_screen.h"
 
@@ -80,7 +81,8 @@ options:
                         physics and the wind; checked live as `check` does; saved
                         into your maps folder; F5 plays it, F4 comes back
   --demo                the physics demo scene instead of a level (a cannon with a
-                        drag-free twin and a swinging spring chain); with it:
+                        drag-free twin and a swinging spring chain; heard in a
+                        window: reports, whistles, landings); with it:
                         --integrator NAME, --planet NAME | --gravity G, --wind VX,
                         --no-drag
   --json                print the run's figures as JSON
@@ -240,8 +242,10 @@ double msSince(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-PlayScreenDef screenDef(const PlayOptions& o) {
+PlayScreenDef screenDef(const PlayOptions& o, const SdlWindow* window) {
     PlayScreenDef d;
+    d.sound = window != nullptr;
+    d.mix = playerSoundMix(o.frames.has_value());
     d.msaaSamples = o.msaa;
     d.panel = o.panel;
     d.view = o.view;
@@ -265,7 +269,7 @@ std::string levelsFolder() {
 std::unique_ptr<Screen> makeScreen(GLContext& context, SdlWindow* window, const PlayOptions& o) {
     const bool demo = o.demo || (o.level.empty() && o.replay.empty() && o.progress.empty() &&
                                  !o.edit && !window);
-    if (demo) return std::make_unique<PlayScreen>(context, window, screenDef(o));
+    if (demo) return std::make_unique<PlayScreen>(context, window, screenDef(o, window));
     GameScreenDef d;
     d.levelFile = o.level;
     d.replayFile = o.replay;
