@@ -413,8 +413,11 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
     const ImVec2 d = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(besideAimReadout(d.x, d.y), d.y - hudMargin(d.x, d.y)),
                             ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
-    ImGui::SetNextWindowSize(ImVec2(panelPx(250), 0), ImGuiCond_FirstUseEver);
+    // As tall as what it holds, every frame: a duel's line or a branch's note is never cut
+    // off by a size saved in a practice level.
+    ImGui::SetNextWindowSize(ImVec2(panelPx(250), 0), ImGuiCond_Always);
     ImGui::Begin("Match", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
+    keepPanelOnScreen(hudMargin(d.x, d.y));
     const game::CannonState& c = m.cannon();
     ImGui::BeginDisabled(!humanTurn);
     ImGui::PushItemWidth(panelPx(150));

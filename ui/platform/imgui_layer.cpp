@@ -114,6 +114,15 @@ float panelPx(float designPixels) {
     return designPixels * gPanelScale;
 }
 
+void keepPanelOnScreen(float margin) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    ImVec2 in = pos;
+    if (pos.x + size.x > display.x) in.x = std::max(0.0f, display.x - margin - size.x);
+    if (pos.y + size.y > display.y) in.y = std::max(0.0f, display.y - margin - size.y);
+    if (in.x != pos.x || in.y != pos.y) ImGui::SetWindowPos(in);
+}
+
 // The font is rasterized at the scaled size, not magnified (crisp text), and every size
 // of the style (padding, spacing, rounding) scales with it.
 void ImGuiLayer::setPanelScale(float scale) {

@@ -25,6 +25,11 @@ std::optional<PixelRect> openWindowRect(const char* name);
 /// scales with their text on a large screen.
 float panelPx(float designPixels);
 
+/// Call between Begin and End: a panel that grew past the bottom or the right of the
+/// display (it fits what it holds, and holds more now) moves back in, `margin` pixels
+/// from that edge.
+void keepPanelOnScreen(float margin);
+
 /// Where a panel's edge goes (one axis) when the display goes from `was` to `now`
 /// pixels and the panels' scale by a factor `k`: a panel nearer the start keeps its
 /// margin to the start, scaled; one nearer the end its margin to the end.

@@ -1,0 +1,38 @@
+// The Match panel holds what the match has (a duel's computer line, a branch's note) in
+// full, wherever a saved layout put it and however tall it was saved: a size saved in a
+// practice level must not cut a duel's rewind slider off, nor push the panel off the
+// bottom of the screen.
+#include "headless_game.h"
+
+#include <gtest/gtest.h>
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+TEST(MatchPanel, ADuelsPanelFitsWhatItHoldsWhateverSizeWasSaved) {
+    const fs::path settings =
+        fs::temp_directory_path() / ("artillery-match-panel-" + std::to_string(::getpid()));
+    fs::remove_all(settings);
+    fs::create_directories(settings);
+    // What a practice level leaves at 1280x720: the panel as tall as its five rows.
+    std::ofstream(settings / "imgui.ini") << "[Window][Match]\nPos=342,524\nSize=250,184\n\n"
+                                             "[ArtilleryDisplay][Display]\nSize=1280,720\n";
+    {
+        test_game::HeadlessGame duel("10_duel.json", 1280, 720, settings);
+        ASSERT_NE(duel.screen, nullptr);
+        const ImGuiWindow* w = ImGui::FindWindowByName("Match");
+        ASSERT_NE(w, nullptr);
+        // Nothing scrolls out of sight: the panel is as tall as its content.
+        EXPECT_EQ(w->ScrollMax.y, 0.0f) << "the rewind slider is cut off";
+        EXPECT_GT(w->Size.y, 184.0f) << "a duel has one more line than a practice level";
+        EXPECT_LE(w->Pos.y + w->Size.y, 720.0f) << "the panel runs off the bottom";
+        EXPECT_GE(w->Pos.y, 0.0f);
+    }
+    fs::remove_all(settings);
+}
