@@ -36,3 +36,24 @@ TEST(MatchPanel, ADuelsPanelFitsWhatItHoldsWhateverSizeWasSaved) {
     }
     fs::remove_all(settings);
 }
+
+// On a screen too narrow for both, the Physics and Stats panels at the top right open
+// under the wind gauge, not over it; on a 720p one they stay at the top.
+TEST(MatchPanel, TheTopRightPanelsOpenUnderTheWindGaugeOnANarrowScreen) {
+    const fs::path settings =
+        fs::temp_directory_path() / ("artillery-match-narrow-" + std::to_string(::getpid()));
+    auto top = [&](int w, int h, const char* name) {
+        fs::remove_all(settings);
+        test_game::HeadlessGame game("03_windy_valley.json", w, h, settings);
+        EXPECT_NE(game.screen, nullptr);
+        const ImGuiWindow* panel = ImGui::FindWindowByName(name);
+        EXPECT_NE(panel, nullptr) << name;
+        return panel ? panel->Pos.y : -1.0f;
+    };
+    // 800x600: the HUD at 0.625 of its 1280x720 design, the gauge 68 x 0.625 = 42.5 deep.
+    EXPECT_GE(top(800, 600, "Physics"), 42.5f);
+    EXPECT_GE(top(800, 600, "Stats"), 42.5f + 34.0f);
+    EXPECT_EQ(top(1280, 720, "Physics"), 10.0f);
+    EXPECT_EQ(top(1280, 720, "Stats"), 44.0f);
+    fs::remove_all(settings);
+}

@@ -74,6 +74,15 @@ inline float besideAimReadout(double width, double height) {
 inline float hudMargin(double width, double height) {
     return static_cast<float>(12.0 * hudScale(width, height));
 }
+/// Where the panels at the top right start, in screen pixels: at the top, `margin` from
+/// it, or under the wind gauge (the middle 180 design pixels of the top, 68 deep) when a
+/// panel `panelWidth` wide at the right edge would reach over it (screens narrower than
+/// about 940 pixels).
+inline float topRightPanelsTop(double width, double height, float panelWidth, float margin) {
+    const double u = hudScale(width, height);
+    const bool overGauge = width - margin - panelWidth < 0.5 * width + 90.0 * u + margin;
+    return overGauge ? static_cast<float>(68.0 * u) + margin : margin;
+}
 /// Where the panels under the level's heading at the top left start, in screen pixels
 /// (the heading ends at 112 design pixels in a duel, 96 otherwise).
 inline float belowLevelHeading(double width, double height) {

@@ -90,7 +90,9 @@ std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const 
     // Right, under the Physics window's title bar (the HUD holds the top left).
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowPos(ImVec2(display.x - panelPx(342), panelPx(44)), ImGuiCond_FirstUseEver);
+    const float top = topRightPanelsTop(display.x, display.y, panelPx(380), panelPx(10));
+    ImGui::SetNextWindowPos(ImVec2(display.x - panelPx(342), top + panelPx(34)),
+                            ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(panelPx(330), panelPx(600)), ImGuiCond_FirstUseEver);
     expanded_ = ImGui::Begin("Stats", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
     if (expanded_) {

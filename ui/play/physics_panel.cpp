@@ -2,6 +2,7 @@
 
 #include "game/settings.h"
 #include "physics/integrators.h"
+#include "ui/game/match_view.h"
 #include "ui/platform/imgui_layer.h"
 
 #include <imgui.h>
@@ -287,9 +288,12 @@ namespace {
 bool drawPanel(phys::WorldDef& def, game::LiveSettings* live, const game::MaterialsInPlay* inPlay,
                TimeControls& time, ViewControls& view, SceneRequests& scene, const FrameStats& stats) {
     bool changed = false;
-    // Top right: the shots rise on the left, and the sky over the landing zone is free.
+    // Top right: the shots rise on the left, and the sky over the landing zone is free; in
+    // a match, under the wind gauge when the screen is too narrow for both.
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x - panelPx(10), panelPx(10)), ImGuiCond_FirstUseEver,
+    const float top =
+        live ? topRightPanelsTop(display.x, display.y, panelPx(380), panelPx(10)) : panelPx(10);
+    ImGui::SetNextWindowPos(ImVec2(display.x - panelPx(10), top), ImGuiCond_FirstUseEver,
                             ImVec2(1.0f, 0.0f));
     // As wide as the material pairs' table.
     ImGui::SetNextWindowSize(ImVec2(panelPx(380), 0), ImGuiCond_FirstUseEver);
