@@ -139,6 +139,46 @@ CampaignMenu campaignMenu(const std::string& folder, const std::vector<LevelEntr
     return menu;
 }
 
+std::optional<game::LevelPlace> levelOnTheWay(const CampaignMenu& menu,
+                                              const game::Progress& progress) {
+    const game::Campaign& campaign = menu.campaign;
+    for (std::size_t c = 0; c < campaign.chapters.size() && c < menu.chapters.size(); ++c)
+        for (std::size_t l = 0; l < menu.chapters[c].size(); ++l) {
+            const LevelEntry& e = menu.chapters[c][l];
+            if (e.mode == game::Mode::Duel || !e.error.empty() || game::cleared(progress, e.file))
+                continue;
+            if (game::levelLock(campaign, c, l, progress, e.mode).open)
+                return game::LevelPlace{c, l};
+        }
+    return std::nullopt;
+}
+
+void chooseLevel(const CampaignMenu& menu, game::LevelPlace place, const game::Progress& progress,
+                 MenuChoice& choice) {
+    const LevelEntry& e = menu.chapters[place.chapter][place.level];
+    if (!progress.lessonsSeen.count(menu.campaign.chapters[place.chapter].id)) {
+        choice.showLesson = place.chapter;
+        choice.lessonThenLevel = e.file;
+    } else {
+        choice.openLevel = e.file;
+    }
+}
+
+void playNextButton(const CampaignMenu& menu, const game::Progress& progress, MenuChoice& choice) {
+    const auto next = levelOnTheWay(menu, progress);
+    if (!next) return;
+    const std::string label = "Play next: " + std::to_string(next->chapter + 1) + "." +
+                              std::to_string(next->level + 1) + "  " +
+                              menu.chapters[next->chapter][next->level].name + "  (Enter)";
+    ImGui::PushStyleColor(ImGuiCol_Text, kGold);
+    const bool pressed = ImGui::Button(label.c_str());
+    ImGui::PopStyleColor();
+    // Enter as well, unless a text field (the random map's seed, a level's name) has it.
+    if (pressed || (!ImGui::GetIO().WantTextInput &&
+                    ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false)))
+        chooseLevel(menu, *next, progress, choice);
+}
+
 void campaignTable(const CampaignMenu& menu, const game::Progress& progress, MenuChoice& choice) {
     if (!menu.error.empty()) ImGui::TextColored(kError, "%s", menu.error.c_str());
     // When the screen opens, the list scrolls to the first open level not yet cleared:
@@ -161,6 +201,7 @@ void campaignTable(const CampaignMenu& menu, const game::Progress& progress, Men
     ImGui::TableSetupColumn("best", ImGuiTableColumnFlags_WidthFixed, panelPx(150));
     ImGui::TableHeadersRow();
     const game::Campaign& campaign = menu.campaign;
+    const auto onTheWay = levelOnTheWay(menu, progress);
     for (std::size_t c = 0; c < campaign.chapters.size(); ++c) {
         const game::Chapter& ch = campaign.chapters[c];
         const std::vector<LevelEntry>& levels = menu.chapters[c];
@@ -173,21 +214,11 @@ void campaignTable(const CampaignMenu& menu, const game::Progress& progress, Men
             bool clicked = false;
             levelRow(std::to_string(c + 1) + "." + std::to_string(l + 1), levels[l], lock, progress,
                      clicked);
-            // The next level to play on the way through the campaign (the duels, always
-            // open, are not the way).
-            if (scrollToNext && lock.open && levels[l].mode != game::Mode::Duel &&
-                !game::cleared(progress, levels[l].file)) {
+            if (scrollToNext && onTheWay == game::LevelPlace{c, l}) {
                 ImGui::SetScrollHereY(0.3f);
                 scrollToNext = false;
             }
-            if (!clicked) continue;
-            // The chapter's lesson comes first, once, before the level it opens with.
-            if (!progress.lessonsSeen.count(ch.id)) {
-                choice.showLesson = c;
-                choice.lessonThenLevel = levels[l].file;
-            } else {
-                choice.openLevel = levels[l].file;
-            }
+            if (clicked) chooseLevel(menu, {c, l}, progress, choice);
         }
     }
     if (!menu.outside.empty()) {
@@ -213,7 +244,6 @@ MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progres
     const auto next = game::nextLevel(menu.campaign, levelFile);
     if (!next) return choice;
     const LevelEntry& e = menu.chapters[next->chapter][next->level];
-    const game::Chapter& ch = menu.campaign.chapters[next->chapter];
     const game::Lock lock =
         game::levelLock(menu.campaign, next->chapter, next->level, progress, e.mode);
     // Just below the results card in the middle of the screen (ui/game/match_view.cpp).
@@ -228,14 +258,7 @@ MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progres
     const std::string label = "Next: " + std::to_string(next->chapter + 1) + "." +
                               std::to_string(next->level + 1) + "  " + e.name;
     ImGui::BeginDisabled(!lock.open || !e.error.empty());
-    if (ImGui::Button(label.c_str())) {
-        if (!progress.lessonsSeen.count(ch.id)) {
-            choice.showLesson = next->chapter;
-            choice.lessonThenLevel = e.file;
-        } else {
-            choice.openLevel = e.file;
-        }
-    }
+    if (ImGui::Button(label.c_str())) chooseLevel(menu, *next, progress, choice);
     ImGui::EndDisabled();
     if (!lock.open) ImGui::TextColored(kLocked, "locked: %s", lock.why.c_str());
     ImGui::SameLine();

@@ -27,6 +27,18 @@ struct CampaignMenu {
 /// Sorts `levels` (listLevels of `folder`) into the chapters of `folder`/campaign.json.
 CampaignMenu campaignMenu(const std::string& folder, const std::vector<LevelEntry>& levels);
 
+/// The next level on the way through the campaign: the first open practice level not
+/// cleared yet, where the player left off (the duels, always open, are not the way);
+/// none when every one is cleared or the campaign is empty.
+std::optional<game::LevelPlace> levelOnTheWay(const CampaignMenu& menu,
+                                              const game::Progress& progress);
+/// Opens the level at `place` as a click on its row does: its chapter's lesson first,
+/// the first time.
+void chooseLevel(const CampaignMenu& menu, game::LevelPlace place, const game::Progress& progress,
+                 MenuChoice& choice);
+/// The level select's "Play next" button (and Enter): levelOnTheWay, chosen.
+void playNextButton(const CampaignMenu& menu, const game::Progress& progress, MenuChoice& choice);
+
 /// The chapters and their levels as table rows; a click on an open level or a lesson
 /// button is written into `choice` (openLevel, or showLesson with lessonThenLevel).
 void campaignTable(const CampaignMenu& menu, const game::Progress& progress, MenuChoice& choice);

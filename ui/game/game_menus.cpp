@@ -219,6 +219,7 @@ MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress&
     }
     if (campaign.chapters.empty() && campaign.outside.empty())
         ImGui::TextWrapped("No level files found (looked for levels/*.json).");
+    playNextButton(campaign, progress, choice);
     campaignTable(campaign, progress, choice);
     ImGui::Separator();
     ImGui::PushItemWidth(panelPx(120));

@@ -1,0 +1,95 @@
+// The level select's way through the campaign: "Play next" (and Enter) opens the first
+// open practice level not cleared yet, where the player left off, its chapter's lesson
+// first the first time; duels, open from the start, are not the way.
+#include "game/progress.h"
+#include "ui/game/campaign_view.h"
+#include "ui/game/game_menus.h"
+#include "ui/game/game_screen.h"
+#include "ui/platform/gl_context.h"
+
+#include <SDL.h>
+#include <imgui.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace {
+
+const std::string kLevels =
+    (std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "levels").string();
+
+std::string fileName(const ui::CampaignMenu& menu, game::LevelPlace p) {
+    return std::filesystem::path(menu.chapters[p.chapter][p.level].file).filename().string();
+}
+
+} // namespace
+
+TEST(CampaignView, PlayNextIsWhereThePlayerLeftOff) {
+    const ui::CampaignMenu menu = ui::campaignMenu(kLevels, ui::listLevels(kLevels));
+    ASSERT_TRUE(menu.error.empty()) << menu.error;
+    game::Progress progress;
+
+    auto next = ui::levelOnTheWay(menu, progress);
+    ASSERT_TRUE(next);
+    EXPECT_EQ(*next, (game::LevelPlace{0, 0}));
+    EXPECT_EQ(fileName(menu, *next), "12_first_shot.json");
+
+    // The chapter's lesson comes first, the first time.
+    ui::MenuChoice choice;
+    ui::chooseLevel(menu, *next, progress, choice);
+    ASSERT_TRUE(choice.showLesson);
+    EXPECT_EQ(*choice.showLesson, 0u);
+    EXPECT_EQ(std::filesystem::path(choice.lessonThenLevel).filename(), "12_first_shot.json");
+    EXPECT_FALSE(choice.openLevel);
+
+    // One star on the first level: the next is the second, and the lesson is not shown
+    // again once read.
+    progress.record("12_first_shot.json", 100, 1, false);
+    progress.lessonsSeen.insert(menu.campaign.chapters[0].id);
+    next = ui::levelOnTheWay(menu, progress);
+    ASSERT_TRUE(next);
+    EXPECT_EQ(*next, (game::LevelPlace{0, 1}));
+    choice = {};
+    ui::chooseLevel(menu, *next, progress, choice);
+    EXPECT_FALSE(choice.showLesson);
+    ASSERT_TRUE(choice.openLevel);
+    EXPECT_EQ(std::filesystem::path(*choice.openLevel).filename(), fileName(menu, *next));
+
+    // Every practice level cleared: nothing is on the way, whatever the duels say.
+    for (const auto& chapter : menu.chapters)
+        for (const ui::LevelEntry& e : chapter)
+            if (e.mode != game::Mode::Duel)
+                progress.record(std::filesystem::path(e.file).filename().string(), 100, 3, false);
+    EXPECT_FALSE(ui::levelOnTheWay(menu, progress));
+}
+
+// From the first screen to the first shot with the keyboard alone: Enter on the level
+// select opens the first chapter's lesson, Enter there the level. Headless there is no
+// SDL backend, so the key goes into ImGui's input as the backend puts it there.
+TEST(CampaignView, EnterTwiceFromTheLevelSelectPlaysTheFirstLevel) {
+    std::string error;
+    auto context = ui::createHeadlessContext(1280, 720, ui::HeadlessBackend::Auto, error);
+    ASSERT_NE(context, nullptr) << error;
+    ui::GameScreenDef def;
+    def.levelsFolder = kLevels;
+    ui::GameScreen screen(*context, nullptr, def);
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyMap[ImGuiKey_Enter] = SDL_SCANCODE_RETURN;
+    auto enter = [&] {
+        io.KeysDown[SDL_SCANCODE_RETURN] = true;
+        screen.frame(1.0 / 60.0);
+        io.KeysDown[SDL_SCANCODE_RETURN] = false;
+        screen.frame(1.0 / 60.0);
+        screen.frame(1.0 / 60.0);
+    };
+    for (int i = 0; i < 3; ++i)
+        screen.frame(1.0 / 60.0);
+    ASSERT_EQ(screen.session(), nullptr) << "the level select comes first";
+    enter();
+    EXPECT_EQ(screen.session(), nullptr) << "the lesson, not yet the level";
+    enter();
+    ASSERT_NE(screen.session(), nullptr);
+    EXPECT_EQ(screen.session()->match().level().name, "First shot");
+}
