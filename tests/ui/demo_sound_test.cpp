@@ -1,5 +1,5 @@
 // The physics lab heard: each shot once, each landing of the shell (not of its drag-free
-// twin) once, the shell's whistle while it flies; a reset starts the counts again.
+// twin) once, the shell's whistle while it flies; after a reset too.
 #include "game/audio/synthesizer.h"
 #include "ui/demo/demo_scene.h"
 #include "ui/demo/demo_sound.h"
@@ -53,7 +53,7 @@ TEST(DemoSound, EachShotAndEachLandingOfTheShellIsHeardOnce) {
     EXPECT_EQ(synth.started(VoiceKind::Whistle), 4u) << "one whistle a shell";
     EXPECT_GT(synth.voices(), 0u);
 
-    // A reset: the scene counts from zero again, and nothing is heard twice.
+    // A reset: the counts go on, and nothing is heard twice.
     scene.reset();
     play(scene, sound, synth, 1.0);
     EXPECT_EQ(synth.started(VoiceKind::Report), 5u);

@@ -31,7 +31,6 @@ void DemoScene::reset() {
     world = phys::World(settings);
     shells_.clear();
     landings_.clear();
-    shotsFired_ = landingsMade_ = 0;
     world.particles.reserve(64);
     buildChain();
     nextShot_ = 0.1;

@@ -75,7 +75,7 @@ class DemoScene {
     /// Seconds of simulated time until the next shot.
     double nextShotIn() const { return nextShot_ - world.time(); }
     /// Shots fired (a shell and, with air, its drag-free twin) and shells landed since the
-    /// opening or the last reset: what is new since a count was last looked at.
+    /// scene was made, resets included: what is new since a count was last looked at.
     std::uint64_t shotsFired() const { return shotsFired_; }
     std::uint64_t landingsMade() const { return landingsMade_; }
 

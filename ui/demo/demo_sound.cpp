@@ -5,10 +5,6 @@
 namespace ui {
 
 void DemoSound::hear(const DemoScene& scene, game::audio::Synthesizer& synth, double listenerY) {
-    // A reset starts the counts again.
-    shotsHeard_ = std::min(shotsHeard_, scene.shotsFired());
-    landingsHeard_ = std::min(landingsHeard_, scene.landingsMade());
-
     for (; shotsHeard_ < scene.shotsFired(); ++shotsHeard_)
         synth.hearShot(scene.muzzle(), scene.def().muzzleSpeed);
 
