@@ -25,9 +25,9 @@
 // Section index
 //   SoundMix      master, effects and UI volume, mute
 //   ViewFrame     what the listener sees (panning)
-//   ShellSound    a shell in flight as the whistle hears it
+//   ShellSound    a shell in flight as its whistle hears it (KeyedShell: one of several)
 //   Synthesizer   observe(match) after each tick, render(frames), click(); a scene that
-//                 is not a match (the physics lab) tells it its shots, landings and shell
+//                 is not a match (the physics lab) tells it its shots, landings and shells
 #pragma once
 
 #include "game/audio/voices.h"
@@ -36,7 +36,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 namespace game::audio {
