@@ -373,6 +373,7 @@ void helpOverlay(bool& open) {
         {"K", "pause / resume the simulation"},
         {"Backspace (hold)",
          "rewind 1 s and play on from there (a new branch; the Match panel's slider goes further)"},
+        {"Z", "watch the last shot again; Z or Esc: back to the game"},
         {"replay: Space, . ,", "play / pause, one tick forward, one back"},
         {"replay: arrows, PgUp/PgDn", "1 s back / forward (Shift: 5 s), previous / next shot"},
         {"replay: [ ] \\, R, T", "speed x1/8 .. x16, x1; from the start; take over"},
@@ -458,6 +459,13 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
         ImGui::SetTooltip("Drag back and let go: the match returns to that moment and you play on "
                           "from there (a new branch). Backspace: 1 s back.");
     ImGui::PopItemWidth();
+    // Once a shot has landed: see it again, from half a second before it left.
+    const bool shotLanded = !m.shell() && std::any_of(m.events().begin(), m.events().end(),
+                                                      [](const game::GameEvent& e) {
+                                                          return e.kind == game::EventKind::Fired;
+                                                      });
+    if (shotLanded && ImGui::Button("Watch the last shot again (Z)", ImVec2(panelPx(226), 0)))
+        req.watchLastShot = true;
     if (!branch.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, kGoldText);
         ImGui::TextWrapped("%s", branch.c_str());

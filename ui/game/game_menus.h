@@ -112,6 +112,7 @@ struct MatchPanelRequests {
     std::optional<std::size_t> projectile;
     bool settingsChanged = false;
     std::optional<std::uint64_t> rewindTo; ///< go back to this tick and play on (a branch)
+    bool watchLastShot = false;            ///< the last shot again (GameScreen::watchLastShot)
 };
 
 /// The match panel's rewind slider: the moment it points at while it is dragged.

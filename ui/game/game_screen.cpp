@@ -217,6 +217,7 @@ game::SessionOptions GameScreen::liveOptions(const std::string& recordFile) cons
 }
 
 void GameScreen::restart() {
+    if (instantReplay()) backToLive(); // R restarts the level, not the shot watched
     if (viewer_) {
         viewer_->requestSeek(0); // a replay restarts from its beginning
         return;
@@ -517,6 +518,40 @@ void GameScreen::showReplays() {
     overlay_ = Overlay::Replays;
 }
 
+namespace {
+
+/// The tick of the match's last shot (any cannon's), if one was fired.
+std::optional<std::uint64_t> lastShotTick(const game::Match& m) {
+    const auto& events = m.events();
+    for (auto e = events.rbegin(); e != events.rend(); ++e)
+        if (e->kind == game::EventKind::Fired) return e->tick;
+    return std::nullopt;
+}
+
+} // namespace
+
+void GameScreen::watchLastShot() {
+    if (!session_ || viewer_ || session_->match().shell()) return;
+    const game::Match& m = session_->match();
+    const auto fired = lastShotTick(m);
+    if (!fired) return;
+    const auto lead = static_cast<std::uint64_t>(0.5 / m.world().def().tickSeconds);
+    aim_.cancelCharge();
+    viewer_ =
+        std::make_unique<ReplayViewer>("the last shot", m.level(), session_->finishedRecording());
+    viewer_->makeInstant(*fired > lead ? *fired - lead : 0);
+}
+
+void GameScreen::backToLive() {
+    // Watched to its end, the replay stands where the game does, trails and all; left
+    // sooner, the view starts again from the game as it stands.
+    const bool atTheGame = viewer_ && viewer_->player().atEnd();
+    viewer_.reset();
+    if (atTheGame || !session_) return;
+    matchView_.reset();
+    matchView_.observe(session_->match());
+}
+
 void GameScreen::takeOverReplay() {
     const double dt = viewer_->match().world().def().tickSeconds;
     const std::uint64_t at = viewer_->player().tick();
@@ -642,15 +677,18 @@ void GameScreen::drawPanels() {
             showReplays();
         else if (req.exportVideo)
             viewer_->exportVideo(replaysFolder());
+        else if (req.backToGame)
+            backToLive();
     }
     bool sceneToEditor = false;
-    if (session_ && overlay_ == Overlay::None) {
+    if (session_ && !viewer_ && overlay_ == Overlay::None) {
         game::Match& m = session_->match();
         const MatchPanelRequests req = matchPanel(m, humanTurn(), settings_, settings_.difficulty,
                                                   hotseatInUse(), rewind_, branchNote_);
         if (req.projectile)
             if (auto c = AimInput::select(m.cannon(), *req.projectile)) submit(*c);
         if (req.fire && humanTurn()) submit(aim_.fire(m.cannon()));
+        if (req.watchLastShot) watchLastShot();
         submit(sandboxTools_.panel(m));
         sceneToEditor = sandboxTools_.takeSaveAsLevel();
         if (playtest_) {
@@ -762,6 +800,7 @@ void GameScreen::frame(double wallSeconds) {
         // The level being made is not simulated: it is drawn at its first tick.
     } else if (viewer_) {
         viewer_->advance(wallSeconds, overlay_ != Overlay::None || helpOpen_, matchView_);
+        if (instantReplay() && viewer_->player().atEnd()) backToLive();
     } else if (session_) {
         pollHeldInput(wallSeconds);
         simulate(wallSeconds);
@@ -848,6 +887,8 @@ bool GameScreen::keyDown(const SDL_Event& e) {
     if (key == SDLK_ESCAPE) {
         if (helpOpen_)
             helpOpen_ = false;
+        else if (instantReplay() && overlay_ == Overlay::None)
+            backToLive();
         else if (aim_.charging())
             aim_.cancelCharge();
         else if (overlay_ == Overlay::Replays || overlay_ == Overlay::Lesson)
@@ -888,6 +929,9 @@ bool GameScreen::keyDown(const SDL_Event& e) {
         if (humanTurn()) submit(end);
         break;
     }
+    case SDLK_z:
+        watchLastShot();
+        break;
     case SDLK_TAB:
         if (auto s = AimInput::select(c, (c.projectile + 1) % c.def.projectiles.size())) submit(*s);
         break;
@@ -950,6 +994,9 @@ bool GameScreen::replayKey(const SDL_Event& e) {
     if (req.takeOver) takeOverReplay();
     if (handled || e.key.repeat) return true;
     switch (e.key.keysym.sym) {
+    case SDLK_z:
+        if (instantReplay()) backToLive();
+        break;
     case SDLK_l:
         overlay_ = Overlay::LevelSelect;
         break;
@@ -996,7 +1043,7 @@ bool GameScreen::handleEvent(const SDL_Event& e) {
         submit(aim_.releaseCharge(session_->match().cannon()));
     const bool panelsMouse = (uiWants && imgui_.wantsMouse()) || imgui_.pressOnWindow(e);
     if (viewer_ && !panelsMouse && overlay_ == Overlay::None) cameraEvent(e);
-    if (!session_) return running_;
+    if (!session_ || viewer_) return running_;
     game::Match& m = session_->match();
     switch (padAction) {
     case PadAction::Fire:

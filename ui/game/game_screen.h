@@ -124,6 +124,13 @@ class GameScreen final : public Screen {
     void showReplays();
     void takeOverReplay();
     void rewindLive(std::uint64_t tick);
+    /// The live game's last shot again (Z): its recording so far, watched from half a
+    /// second before the shot, while the game waits; at the end (or Z, Esc) play goes on
+    /// where it stood. Take over (T) plays on from the moment watched instead, as a branch.
+    void watchLastShot();
+    void backToLive();
+    /// Watching the live game's last shot (the game waits behind it).
+    bool instantReplay() const { return viewer_ && viewer_->instant() && session_; }
     bool replayKey(const SDL_Event& e);
     std::string liveBanner(const game::Match& m) const;
     void cameraEvent(const SDL_Event& e);

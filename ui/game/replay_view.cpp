@@ -56,6 +56,11 @@ ReplayViewer::ReplayViewer(std::string file, const game::Level& level, game::Rep
     clock_ = phys::FixedClock(cd);
 }
 
+void ReplayViewer::makeInstant(std::uint64_t fromTick) {
+    instant_ = true;
+    seek_ = fromTick;
+}
+
 game::Session ReplayViewer::takeOver(const game::SessionOptions& options) {
     game::Session s = std::move(*player_).takeOver(options);
     player_.reset();
@@ -201,11 +206,15 @@ ReplayRequests ReplayViewer::panel() {
         ImGui::SetTooltip("Play on from this moment: the commands so far are kept and a new replay "
                           "branches from here");
     ImGui::SameLine();
-    if (buttonWhen(video_.state() != VideoExport::State::Running, "Export video",
-                   "write the whole replay as an MP4 with sound, beside the replays"))
-        req.exportVideo = true;
-    ImGui::SameLine();
-    if (ImGui::Button("Replays")) req.close = true;
+    if (instant_) {
+        if (ImGui::Button("Back to the game (Z)")) req.backToGame = true;
+    } else {
+        if (buttonWhen(video_.state() != VideoExport::State::Running, "Export video",
+                       "write the whole replay as an MP4 with sound, beside the replays"))
+            req.exportVideo = true;
+        ImGui::SameLine();
+        if (ImGui::Button("Replays")) req.close = true;
+    }
     // The keys on a line of their own (beside the buttons they ran past the panel's
     // edge); the export's state takes their place (the panel keeps its height).
     if (!videoLine())
@@ -307,6 +316,9 @@ std::string ReplayViewer::banner() const {
         std::snprintf(line, sizeof line, "REPLAY DIVERGED");
     else if (p.atEnd())
         std::snprintf(line, sizeof line, "REPLAY ended (T plays on)");
+    else if (instant_)
+        std::snprintf(line, sizeof line, "LAST SHOT %s  %.1f s", kSpeedNames[speed_],
+                      static_cast<double>(p.tick()) * tickSeconds());
     else if (paused_)
         std::snprintf(line, sizeof line, "REPLAY paused  %.1f s",
                       static_cast<double>(p.tick()) * tickSeconds());

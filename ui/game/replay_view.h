@@ -29,6 +29,7 @@ struct ReplayRequests {
     bool takeOver = false; ///< play on from here, recording a branch
     bool close = false;    ///< back to the list of replays
     bool exportVideo = false; ///< write the replay as a video (exportVideo())
+    bool backToGame = false;  ///< an instant replay: back to the live game (makeInstant())
 };
 
 /// Replay speeds the [ and ] keys step through (simulated seconds per wall second).
@@ -64,6 +65,11 @@ class ReplayViewer {
     void exportVideo(const std::string& folder);
     /// The match as a live session from the current tick (the viewer is spent).
     game::Session takeOver(const game::SessionOptions& options);
+    /// An instant replay of the live game (its recording so far, watched from `fromTick`):
+    /// the panel offers the way back to the game in place of the list of replays and the
+    /// export (the recording is not a file yet).
+    void makeInstant(std::uint64_t fromTick);
+    bool instant() const { return instant_; }
 
   private:
     void togglePlay();
@@ -81,6 +87,7 @@ class ReplayViewer {
     std::optional<game::ReplayPlayer> player_;
     phys::FixedClock clock_;
     bool paused_ = false;
+    bool instant_ = false;
     bool stepRequested_ = false;
     int speed_ = 3;                     ///< index into kReplaySpeeds (x1)
     std::optional<std::uint64_t> seek_; ///< a jump asked for, done at the next advance()

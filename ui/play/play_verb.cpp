@@ -53,7 +53,8 @@ from the start), the previous or next shot, and "Take over" (T), which hands you
 match at that moment to play on; the branch is recorded as a new replay. The viewer
 compares the replay's checkpoints as it plays and says so if the game diverges. In a
 game, Backspace (or the Match panel's rewind slider) goes back in time the same way
-and play goes on from there.
+and play goes on from there, and Z watches the last shot again in the viewer, then
+goes back to the game where it stood.
 
 options:
   LEVEL                 a level file (levels/*.json)
@@ -106,6 +107,7 @@ keys:  mouse drag aim   arrows angle/power   hold Space charge, release fire
        P preview   H hint   Esc pause menu   F1 or ? help   F2 physics panel
        . one tick
        K pause/resume   Backspace (hold) rewind 1 s, play on as a branch
+       Z the last shot again (Z or Esc: back to the game)
        [ ] slower/faster   R restart   L levels   F12 screenshot
 replay: Space or K play/pause   . one tick   , one tick back   [ ] speed x1/8..x16
        \ x1   left/right 1 s back/forward (Shift 5 s)   PgUp/PgDn previous/next shot

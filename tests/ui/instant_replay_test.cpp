@@ -1,0 +1,84 @@
+// The last shot again (Z): the live game's recording so far, watched from half a second
+// before the shot while the game waits, then play goes on where it stood; the game is
+// the same to the bit for it.
+#include "headless_game.h"
+
+#include "ui/game/replay_view.h"
+
+#include <SDL.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void key(ui::GameScreen& screen, SDL_Keycode k) {
+    SDL_Event e{};
+    e.type = SDL_KEYDOWN;
+    e.key.keysym.sym = k;
+    screen.handleEvent(e);
+    e.type = SDL_KEYUP;
+    screen.handleEvent(e);
+}
+
+} // namespace
+
+TEST(InstantReplay, TheLastShotIsWatchedAgainAndTheGameWaitsForIt) {
+    const fs::path settings =
+        fs::temp_directory_path() / ("artillery-instant-" + std::to_string(::getpid()));
+    fs::remove_all(settings);
+    {
+        test_game::HeadlessGame game("05_castle.json", 1280, 720, settings);
+        ASSERT_NE(game.screen, nullptr);
+        ui::GameScreen& screen = *game.screen;
+        key(screen, SDLK_z);
+        EXPECT_EQ(screen.replayViewer(), nullptr) << "no shot yet: nothing to watch";
+
+        for (int f = 0; f < 120; ++f) // two seconds of aiming
+            screen.frame(1.0 / 60.0);
+        key(screen, SDLK_RETURN); // fire at the cannon's aim
+        const game::Match& live = screen.session()->match();
+        for (int f = 0; f < 60 * 20 && (live.shotsFired() == 0 || live.shell()); ++f)
+            screen.frame(1.0 / 60.0);
+        ASSERT_EQ(live.shotsFired(), 1);
+        ASSERT_FALSE(live.shell()) << "the shot is over";
+        const std::uint64_t tick = live.tick();
+        const std::uint64_t hash = live.hash();
+
+        key(screen, SDLK_z);
+        ASSERT_NE(screen.replayViewer(), nullptr);
+        EXPECT_TRUE(screen.replayViewer()->instant());
+        std::uint64_t fired = 0;
+        for (const game::GameEvent& e : live.events())
+            if (e.kind == game::EventKind::Fired) fired = e.tick;
+        ASSERT_GT(fired, 60u);
+        screen.frame(1.0 / 60.0); // the jump, and a frame's two ticks
+        EXPECT_EQ(screen.replayViewer()->player().tick(), fired - 60 + 2)
+            << "half a second before the shot (120 Hz)";
+        // Watched at x1 to its end: the game waits meanwhile, then goes on.
+        int frames = 0;
+        while (screen.replayViewer() && frames < 60 * 30) {
+            EXPECT_EQ(live.tick(), tick);
+            screen.frame(1.0 / 60.0);
+            ++frames;
+        }
+        EXPECT_EQ(screen.replayViewer(), nullptr) << "back to the game at the end";
+        EXPECT_NEAR(frames, static_cast<double>(tick - (fired - 60)) / 2.0, 3.0)
+            << "the replay plays in real time";
+        EXPECT_EQ(live.tick(), tick);
+        EXPECT_EQ(live.hash(), hash) << "watching changed nothing";
+        screen.frame(1.0 / 60.0);
+        EXPECT_GT(live.tick(), tick) << "play goes on";
+
+        // Z again leaves at once.
+        key(screen, SDLK_z);
+        ASSERT_NE(screen.replayViewer(), nullptr);
+        key(screen, SDLK_z);
+        EXPECT_EQ(screen.replayViewer(), nullptr);
+    }
+    fs::remove_all(settings);
+}
