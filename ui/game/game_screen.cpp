@@ -2,7 +2,8 @@
 //   set-up       GameScreen(), openLevel, restart, persistence
 //   commands     submit: the only way the window changes the match
 //   time         simulate: fixed ticks from the clock, held keys and the controller
-//   replays      openReplay, takeOverReplay, rewindLive: watching, branching, rewinding
+//   replays      openReplay, takeOverReplay, rewindLive, watchLastShot: watching, branching,
+//                rewinding, the last shot again
 //   drawing      frame, drawPlaying, drawPanels
 //   events       handleEvent: mouse aim, keys, controller buttons
 #include "ui/platform/gl_setup.h"
