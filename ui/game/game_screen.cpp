@@ -529,6 +529,18 @@ std::optional<std::uint64_t> lastShotTick(const game::Match& m) {
     return std::nullopt;
 }
 
+/// Where the shot fired at `fired` first met something: its first bounce, burst or hit,
+/// or the tick it was over.
+std::optional<std::uint64_t> impactTick(const game::Match& m, std::uint64_t fired) {
+    using game::EventKind;
+    for (const game::GameEvent& e : m.events())
+        if (e.tick > fired && (e.kind == EventKind::Bounce || e.kind == EventKind::Burst ||
+                               e.kind == EventKind::TargetHit || e.kind == EventKind::CannonHit ||
+                               e.kind == EventKind::ShotOver))
+            return e.tick;
+    return std::nullopt;
+}
+
 } // namespace
 
 void GameScreen::watchLastShot() {
@@ -540,7 +552,7 @@ void GameScreen::watchLastShot() {
     aim_.cancelCharge();
     viewer_ =
         std::make_unique<ReplayViewer>("the last shot", m.level(), session_->finishedRecording());
-    viewer_->makeInstant(*fired > lead ? *fired - lead : 0);
+    viewer_->makeInstant(*fired > lead ? *fired - lead : 0, impactTick(m, *fired));
 }
 
 void GameScreen::backToLive() {

@@ -27,6 +27,10 @@ const ImVec4 kBadText(1.0f, 0.4f, 0.4f, 1.0f);
 
 const char* const kSpeedNames[] = {"x1/8", "x1/4", "x1/2", "x1", "x2", "x4", "x8", "x16"};
 static_assert(std::size(kSpeedNames) == std::size(kReplaySpeeds));
+/// An instant replay slows to this around the impact, from kSlowBeforeSeconds before it to
+/// kSlowAfterSeconds after (simulated time): the moment the shot lands, four times as long.
+constexpr float kSlowMotionSpeed = 0.25f;
+constexpr double kSlowBeforeSeconds = 0.25, kSlowAfterSeconds = 0.75;
 
 /// x16 at 30 frames per second is 64 ticks of 1/120 s a frame; a cap well above it.
 constexpr int kMaxReplayTicksPerFrame = 256;
@@ -56,9 +60,27 @@ ReplayViewer::ReplayViewer(std::string file, const game::Level& level, game::Rep
     clock_ = phys::FixedClock(cd);
 }
 
-void ReplayViewer::makeInstant(std::uint64_t fromTick) {
+void ReplayViewer::makeInstant(std::uint64_t fromTick, std::optional<std::uint64_t> impactTick) {
     instant_ = true;
     seek_ = fromTick;
+    if (!impactTick) return;
+    const auto before = static_cast<std::uint64_t>(std::lround(kSlowBeforeSeconds / tickSeconds()));
+    const auto after = static_cast<std::uint64_t>(std::lround(kSlowAfterSeconds / tickSeconds()));
+    slowMotion_ = {*impactTick > before ? *impactTick - before : 0, *impactTick + after};
+}
+
+float ReplayViewer::speedNow() const {
+    const std::uint64_t t = player_->tick();
+    const bool slow =
+        slowMotion_ && !speedPicked_ && t >= slowMotion_->first && t < slowMotion_->second;
+    return slow ? kSlowMotionSpeed : kReplaySpeeds[speed_];
+}
+
+const char* ReplayViewer::speedNameNow() const {
+    const float now = speedNow();
+    for (std::size_t k = 0; k < std::size(kReplaySpeeds); ++k)
+        if (kReplaySpeeds[k] == now) return kSpeedNames[k];
+    return kSpeedNames[speed_];
 }
 
 game::Session ReplayViewer::takeOver(const game::SessionOptions& options) {
@@ -88,7 +110,7 @@ void ReplayViewer::advance(double wallSeconds, bool held, MatchView& view) {
     // A `set tick_hz` command in the replay changes the tick; the clock follows.
     if (clock_.def().tickSeconds != tickSeconds()) clock_.setTickSeconds(tickSeconds());
     clock_.setPaused(paused_ || held || p.atEnd());
-    clock_.setTimeScale(kReplaySpeeds[speed_]);
+    clock_.setTimeScale(speedNow());
     if (stepRequested_) {
         clock_.requestSingleStep();
         stepRequested_ = false;
@@ -123,6 +145,7 @@ void ReplayViewer::togglePlay() {
 
 void ReplayViewer::changeSpeed(int by) {
     speed_ = std::clamp(speed_ + by, 0, static_cast<int>(std::size(kReplaySpeeds)) - 1);
+    speedPicked_ = true;
 }
 
 void ReplayViewer::jumpBy(double seconds) {
@@ -181,8 +204,9 @@ ReplayRequests ReplayViewer::panel() {
     if (buttonWhen(nextShot.has_value(), "shot >|", "next shot (Page Down)")) seek_ = nextShot;
     ImGui::SameLine();
     ImGui::SetNextItemWidth(panelPx(110));
-    ImGui::SliderInt("speed", &speed_, 0, static_cast<int>(std::size(kReplaySpeeds)) - 1,
-                     kSpeedNames[speed_], ImGuiSliderFlags_NoInput);
+    speedPicked_ |=
+        ImGui::SliderInt("speed", &speed_, 0, static_cast<int>(std::size(kReplaySpeeds)) - 1,
+                         kSpeedNames[speed_], ImGuiSliderFlags_NoInput);
 
     // Is the re-simulation still the recorded game?
     if (const auto& div = p.divergence()) {
@@ -260,6 +284,7 @@ ReplayRequests ReplayViewer::key(const SDL_Keysym& k, bool repeat, bool& handled
         break;
     case SDLK_BACKSLASH:
         speed_ = 3;
+        speedPicked_ = true;
         break;
     case SDLK_r:
         if (!repeat) seek_ = 0;
@@ -317,7 +342,7 @@ std::string ReplayViewer::banner() const {
     else if (p.atEnd())
         std::snprintf(line, sizeof line, "REPLAY ended (T plays on)");
     else if (instant_)
-        std::snprintf(line, sizeof line, "LAST SHOT %s  %.1f s", kSpeedNames[speed_],
+        std::snprintf(line, sizeof line, "LAST SHOT %s  %.1f s", speedNameNow(),
                       static_cast<double>(p.tick()) * tickSeconds());
     else if (paused_)
         std::snprintf(line, sizeof line, "REPLAY paused  %.1f s",

@@ -67,8 +67,10 @@ class ReplayViewer {
     game::Session takeOver(const game::SessionOptions& options);
     /// An instant replay of the live game (its recording so far, watched from `fromTick`):
     /// the panel offers the way back to the game in place of the list of replays and the
-    /// export (the recording is not a file yet).
-    void makeInstant(std::uint64_t fromTick);
+    /// export (the recording is not a file yet). Around `impactTick` (from a quarter of a
+    /// second before to three quarters after) it plays at x1/4, unless the player picks a
+    /// speed.
+    void makeInstant(std::uint64_t fromTick, std::optional<std::uint64_t> impactTick = {});
     bool instant() const { return instant_; }
 
   private:
@@ -88,6 +90,12 @@ class ReplayViewer {
     phys::FixedClock clock_;
     bool paused_ = false;
     bool instant_ = false;
+    /// An instant replay's slow motion around the impact: ticks [first, second).
+    std::optional<std::pair<std::uint64_t, std::uint64_t>> slowMotion_;
+    bool speedPicked_ = false; ///< the player chose a speed: no slow motion then
+    /// The speed the replay plays at now (the slow motion's, or the one chosen).
+    float speedNow() const;
+    const char* speedNameNow() const;
     bool stepRequested_ = false;
     int speed_ = 3;                     ///< index into kReplaySpeeds (x1)
     std::optional<std::uint64_t> seek_; ///< a jump asked for, done at the next advance()
