@@ -186,13 +186,13 @@ void Synthesizer::hearShell(const Match& m) {
         heard->underwater =
             m.level().physics.water && heard->position.y < m.level().physics.waterLevel;
     }
-    // One whistle, whichever shell the match follows.
-    std::vector<KeyedShell> flying;
-    if (heard) flying.push_back({0, *heard});
-    followWhistles(flying, m.tick(), 0.5 * (m.level().worldMin.y + m.level().worldMax.y));
+    // One whistle, whichever shell the match follows (none: it fades out).
+    const KeyedShell flying{0, heard.value_or(ShellSound{})};
+    followWhistles(std::span(&flying, heard ? 1 : 0), m.tick(),
+                   0.5 * (m.level().worldMin.y + m.level().worldMax.y));
 }
 
-void Synthesizer::followWhistles(const std::vector<KeyedShell>& shells, std::uint64_t tick,
+void Synthesizer::followWhistles(std::span<const KeyedShell> shells, std::uint64_t tick,
                                  double listenerY) {
     const std::int64_t at = atTick(tick);
     auto voiceOf = [&](std::uint64_t id) -> Voice* {
@@ -246,7 +246,7 @@ void Synthesizer::hearLanding(Vec2 where, double speed, Timbre surface) {
     start(impact(surface, speed, 0.0), 0, where, ++toldEvents_);
 }
 
-void Synthesizer::hearShellsInFlight(const std::vector<KeyedShell>& shells, double listenerY) {
+void Synthesizer::hearShellsInFlight(std::span<const KeyedShell> shells, double listenerY) {
     followWhistles(shells, 0, listenerY);
 }
 

@@ -36,6 +36,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace game::audio {
@@ -101,7 +102,7 @@ class Synthesizer {
     /// The shells in flight, each frame: each has a whistle of its own while its key is
     /// told, which fades out when it no longer is. The listener is at the middle of the
     /// view, at height `listenerY`.
-    void hearShellsInFlight(const std::vector<KeyedShell>& shells, double listenerY);
+    void hearShellsInFlight(std::span<const KeyedShell> shells, double listenerY);
 
     void setMix(const SoundMix& mix) { mix_ = mix; }
     const SoundMix& mix() const { return mix_; }
@@ -127,8 +128,7 @@ class Synthesizer {
     void hearEvents(const Match& m);
     void hearShell(const Match& m);
     /// Each whistle follows its shell from tick `tick` on; one not told fades out.
-    void followWhistles(const std::vector<KeyedShell>& shells, std::uint64_t tick,
-                        double listenerY);
+    void followWhistles(std::span<const KeyedShell> shells, std::uint64_t tick, double listenerY);
     void hearContacts(const Match& m);
     void hearBlocks(const Match& m);
 

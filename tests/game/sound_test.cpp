@@ -417,16 +417,17 @@ TEST(Sound, ASceneThatIsNotAMatchIsHeardAsItTells) {
 
     Synthesizer synth{SynthesizerDef{.live = true}};
     synth.setView({0.0, 60.0});
-    synth.hearShellsInFlight({{7, ShellSound{{10.0, 10.0}, {40.0, 10.0}}}}, 20.0);
+    using Shells = std::vector<KeyedShell>;
+    synth.hearShellsInFlight(Shells{{7, ShellSound{{10.0, 10.0}, {40.0, 10.0}}}}, 20.0);
     EXPECT_EQ(synth.started(VoiceKind::Whistle), 1u);
     std::vector<float> s(2 * kTenthSecond);
     synth.render(s.data(), kTenthSecond);
     EXPECT_GT(rms(s, kTenthSecond / 2, kTenthSecond), 0.0);
-    synth.hearShellsInFlight({{7, ShellSound{{14.0, 11.0}, {40.0, 9.0}}}}, 20.0);
+    synth.hearShellsInFlight(Shells{{7, ShellSound{{14.0, 11.0}, {40.0, 9.0}}}}, 20.0);
     EXPECT_EQ(synth.started(VoiceKind::Whistle), 1u) << "the same whistle follows the shell";
-    synth.hearShellsInFlight(
-        {{7, ShellSound{{18.0, 11.8}, {40.0, 8.0}}}, {9, ShellSound{{1.0, 2.0}, {30.0, 30.0}}}},
-        20.0);
+    synth.hearShellsInFlight(Shells{{7, ShellSound{{18.0, 11.8}, {40.0, 8.0}}},
+                                    {9, ShellSound{{1.0, 2.0}, {30.0, 30.0}}}},
+                             20.0);
     EXPECT_EQ(synth.started(VoiceKind::Whistle), 2u) << "a second shell: a second whistle";
     EXPECT_EQ(synth.voices(), 2u);
     synth.hearShellsInFlight({}, 20.0);

@@ -460,11 +460,8 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
                           "from there (a new branch). Backspace: 1 s back.");
     ImGui::PopItemWidth();
     // Once a shot has landed: see it again, from half a second before it left.
-    const bool shotLanded = !m.shell() && std::any_of(m.events().begin(), m.events().end(),
-                                                      [](const game::GameEvent& e) {
-                                                          return e.kind == game::EventKind::Fired;
-                                                      });
-    if (shotLanded && ImGui::Button("Watch the last shot again (Z)", ImVec2(panelPx(226), 0)))
+    if (m.shotsFired() > 0 && !m.shell() &&
+        ImGui::Button("Watch the last shot again (Z)", ImVec2(panelPx(226), 0)))
         req.watchLastShot = true;
     if (!branch.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, kGoldText);

@@ -27,9 +27,10 @@ const ImVec4 kBadText(1.0f, 0.4f, 0.4f, 1.0f);
 
 const char* const kSpeedNames[] = {"x1/8", "x1/4", "x1/2", "x1", "x2", "x4", "x8", "x16"};
 static_assert(std::size(kSpeedNames) == std::size(kReplaySpeeds));
-/// An instant replay slows to this around the impact, from kSlowBeforeSeconds before it to
-/// kSlowAfterSeconds after (simulated time): the moment the shot lands, four times as long.
-constexpr float kSlowMotionSpeed = 0.25f;
+/// An instant replay slows to this speed (x1/4) around the impact, from kSlowBeforeSeconds
+/// before it to kSlowAfterSeconds after (simulated time): the moment the shot lands, four
+/// times as long.
+constexpr int kSlowMotionSpeed = 1;
 constexpr double kSlowBeforeSeconds = 0.25, kSlowAfterSeconds = 0.75;
 
 /// x16 at 30 frames per second is 64 ticks of 1/120 s a frame; a cap well above it.
@@ -69,18 +70,11 @@ void ReplayViewer::makeInstant(std::uint64_t fromTick, std::optional<std::uint64
     slowMotion_ = {*impactTick > before ? *impactTick - before : 0, *impactTick + after};
 }
 
-float ReplayViewer::speedNow() const {
+int ReplayViewer::speedNow() const {
     const std::uint64_t t = player_->tick();
     const bool slow =
         slowMotion_ && !speedPicked_ && t >= slowMotion_->first && t < slowMotion_->second;
-    return slow ? kSlowMotionSpeed : kReplaySpeeds[speed_];
-}
-
-const char* ReplayViewer::speedNameNow() const {
-    const float now = speedNow();
-    for (std::size_t k = 0; k < std::size(kReplaySpeeds); ++k)
-        if (kReplaySpeeds[k] == now) return kSpeedNames[k];
-    return kSpeedNames[speed_];
+    return slow ? kSlowMotionSpeed : speed_;
 }
 
 game::Session ReplayViewer::takeOver(const game::SessionOptions& options) {
@@ -110,7 +104,7 @@ void ReplayViewer::advance(double wallSeconds, bool held, MatchView& view) {
     // A `set tick_hz` command in the replay changes the tick; the clock follows.
     if (clock_.def().tickSeconds != tickSeconds()) clock_.setTickSeconds(tickSeconds());
     clock_.setPaused(paused_ || held || p.atEnd());
-    clock_.setTimeScale(speedNow());
+    clock_.setTimeScale(kReplaySpeeds[speedNow()]);
     if (stepRequested_) {
         clock_.requestSingleStep();
         stepRequested_ = false;
@@ -342,7 +336,7 @@ std::string ReplayViewer::banner() const {
     else if (p.atEnd())
         std::snprintf(line, sizeof line, "REPLAY ended (T plays on)");
     else if (instant_)
-        std::snprintf(line, sizeof line, "LAST SHOT %s  %.1f s", speedNameNow(),
+        std::snprintf(line, sizeof line, "LAST SHOT %s  %.1f s", kSpeedNames[speedNow()],
                       static_cast<double>(p.tick()) * tickSeconds());
     else if (paused_)
         std::snprintf(line, sizeof line, "REPLAY paused  %.1f s",

@@ -93,9 +93,9 @@ class ReplayViewer {
     /// An instant replay's slow motion around the impact: ticks [first, second).
     std::optional<std::pair<std::uint64_t, std::uint64_t>> slowMotion_;
     bool speedPicked_ = false; ///< the player chose a speed: no slow motion then
-    /// The speed the replay plays at now (the slow motion's, or the one chosen).
-    float speedNow() const;
-    const char* speedNameNow() const;
+    /// The speed the replay plays at now, an index into kReplaySpeeds: the slow
+    /// motion's, or the one chosen.
+    int speedNow() const;
     bool stepRequested_ = false;
     int speed_ = 3;                     ///< index into kReplaySpeeds (x1)
     std::optional<std::uint64_t> seek_; ///< a jump asked for, done at the next advance()
