@@ -250,6 +250,10 @@ void Synthesizer::hearShellsInFlight(std::span<const KeyedShell> shells, double 
     followWhistles(shells, 0, listenerY);
 }
 
+void Synthesizer::stillWhistles() {
+    followWhistles({}, 0, 0.0);
+}
+
 void Synthesizer::hearContacts(const Match& m) {
     // What one contact sounds like: where, how hard, of what, how elastic.
     struct Hit {

@@ -103,6 +103,9 @@ class Synthesizer {
     /// told, which fades out when it no longer is. The listener is at the middle of the
     /// view, at height `listenerY`.
     void hearShellsInFlight(std::span<const KeyedShell> shells, double listenerY);
+    /// Time stands still (paused, a menu open): nothing flies, so every whistle fades
+    /// out; a shell heard again afterwards (observe, hearShellsInFlight) starts a new one.
+    void stillWhistles();
 
     void setMix(const SoundMix& mix) { mix_ = mix; }
     const SoundMix& mix() const { return mix_; }

@@ -357,6 +357,37 @@ TEST(Sound, APausedMatchIsHeardOnce) {
     EXPECT_EQ(synth.started(VoiceKind::Impact), heard);
 }
 
+// Time standing still (paused, a menu open) silences the whistle: the shell hangs in the
+// air. When time goes on, the shell whistles again.
+TEST(Sound, TheWhistleFallsSilentWhileTimeStandsStill) {
+    Match m(level("01_earth_basics.json"));
+    shoot(m, 45.0, 40.0);
+    Synthesizer synth(SynthesizerDef{.live = true});
+    std::vector<float> s(2 * kTenthSecond);
+    auto play = [&](int tenths, bool still) {
+        for (int k = 0; k < tenths; ++k) {
+            if (still) {
+                synth.stillWhistles();
+            } else {
+                for (int t = 0; t < 12; ++t) { // a tenth of a second at 120 Hz
+                    m.step();
+                    synth.observe(m);
+                }
+            }
+            synth.render(s.data(), kTenthSecond);
+        }
+    };
+    play(15, false);
+    ASSERT_TRUE(m.shell()) << "a shot at 40 m/s flies for seconds";
+    ASSERT_EQ(synth.started(VoiceKind::Whistle), 1u);
+    EXPECT_GT(rms(s, 0, kTenthSecond), 0.0) << "in flight, the shell whistles";
+    play(10, true);
+    EXPECT_EQ(rms(s, 0, kTenthSecond), 0.0) << "stopped, it has faded out";
+    play(2, false);
+    EXPECT_EQ(synth.started(VoiceKind::Whistle), 2u) << "going on, it whistles anew";
+    EXPECT_GT(rms(s, 0, kTenthSecond), 0.0);
+}
+
 // A ball dropped on a block is heard the tick it strikes it (the coupling's impulse), as
 // the block's material.
 TEST(Sound, ABallStrikingABlockIsHeard) {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -22,7 +23,7 @@ void play(ui::DemoScene& scene, ui::DemoSound& sound, game::audio::Synthesizer& 
     for (int t = 1; t <= ticks; ++t) {
         scene.tick();
         if (t % 2 == 0) {
-            sound.hear(scene, synth, 10.0);
+            sound.hear(scene, synth, 10.0, false);
             synth.render(frame.data(), 800);
         }
     }
@@ -58,4 +59,23 @@ TEST(DemoSound, EachShotAndEachLandingOfTheShellIsHeardOnce) {
     play(scene, sound, synth, 1.0);
     EXPECT_EQ(synth.started(VoiceKind::Report), 5u);
     EXPECT_EQ(synth.started(VoiceKind::Impact), 3u);
+}
+
+// Paused, the shell hangs in the air: its whistle fades out, and comes back with time.
+TEST(DemoSound, APausedLabIsSilent) {
+    ui::DemoScene scene;
+    ui::DemoSound sound;
+    game::audio::Synthesizer synth{game::audio::SynthesizerDef{.live = true}};
+    synth.setView({-5.0, 65.0});
+    play(scene, sound, synth, 1.5); // the first shell is in flight, its report over
+    ASSERT_EQ(synth.started(VoiceKind::Whistle), 1u);
+    std::vector<float> frame(2 * 800);
+    for (int f = 0; f < 60; ++f) { // a second of paused frames
+        sound.hear(scene, synth, 10.0, true);
+        synth.render(frame.data(), 800);
+    }
+    EXPECT_TRUE(std::all_of(frame.begin(), frame.end(), [](float x) { return x == 0.0f; }));
+    EXPECT_EQ(synth.voices(), 0u);
+    play(scene, sound, synth, 0.1);
+    EXPECT_EQ(synth.started(VoiceKind::Whistle), 2u) << "going on, the shell whistles anew";
 }

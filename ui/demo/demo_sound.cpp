@@ -4,7 +4,8 @@
 
 namespace ui {
 
-void DemoSound::hear(const DemoScene& scene, game::audio::Synthesizer& synth, double listenerY) {
+void DemoSound::hear(const DemoScene& scene, game::audio::Synthesizer& synth, double listenerY,
+                     bool stopped) {
     for (; shotsHeard_ < scene.shotsFired(); ++shotsHeard_)
         synth.hearShot(scene.muzzle(), scene.def().muzzleSpeed);
 
@@ -17,6 +18,10 @@ void DemoSound::hear(const DemoScene& scene, game::audio::Synthesizer& synth, do
             synth.hearLanding(landings[k].at, landings[k].speed, game::audio::Timbre::Earth);
     landingsHeard_ = scene.landingsMade();
 
+    if (stopped) {
+        synth.stillWhistles();
+        return;
+    }
     flying_.clear();
     for (const ShellTrack& s : scene.shells())
         if (!s.vacuum)

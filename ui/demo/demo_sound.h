@@ -19,8 +19,9 @@ class DemoSound {
     /// What happened in `scene` since the last call: a report for each shot, a thud for
     /// each landing of a shell, and the whistle of each shell in flight (a shot leaves
     /// before the last one lands), heard from the middle of the view at height
-    /// `listenerY` (m).
-    void hear(const DemoScene& scene, game::audio::Synthesizer& synth, double listenerY);
+    /// `listenerY` (m). While time is `stopped` (paused) nothing flies: no whistle.
+    void hear(const DemoScene& scene, game::audio::Synthesizer& synth, double listenerY,
+              bool stopped);
 
   private:
     std::uint64_t shotsHeard_ = 0, landingsHeard_ = 0;

@@ -800,10 +800,17 @@ void GameScreen::hearFrame() {
     if (!hearing()) return;
     sound_.setMix(settings_.sound);
     // A live match was heard tick by tick (simulate); a replay is heard once a frame.
-    if (viewer_)
-        hearTick(viewer_->match());
-    else if (!session_)
+    // Stopped time (paused, a menu open) silences the whistle: the shell hangs still.
+    if (viewer_) {
+        if (viewer_->stopped())
+            sound_.stillWhistles();
+        else
+            hearTick(viewer_->match());
+    } else if (!session_) {
         sound_.forgetMatch();
+    } else if (clock_.paused()) {
+        sound_.stillWhistles();
+    }
     audio_->feed(sound_);
 }
 

@@ -57,6 +57,8 @@ class ReplayViewer {
     /// The line on top of the picture: "REPLAY x2  12.3 s", "REPLAY paused", ...
     std::string banner() const;
 
+    /// No tick plays (paused, held by a menu, or at the end).
+    bool stopped() const { return clock_.paused(); }
     const game::Match& match() const { return player_->match(); }
     const game::ReplayPlayer& player() const { return *player_; }
     const std::string& file() const { return file_; }

@@ -48,7 +48,7 @@ void PlayScreen::hearFrame() {
     // Panned across what the camera shows, heard from its middle.
     const Vec2 lo = camera_.visibleMin(), hi = camera_.visibleMax();
     sound_.setView({lo.x, hi.x});
-    demoSound_.hear(scene_, sound_, 0.5 * (lo.y + hi.y));
+    demoSound_.hear(scene_, sound_, 0.5 * (lo.y + hi.y), clock_.paused());
     audio_->feed(sound_);
 }
 
