@@ -10,7 +10,7 @@ PACKAGES := cmake g++ make pkg-config libbox2d-dev libsdl2-dev libimgui-dev \
             libosmesa6-dev libegl-dev libegl-mesa0 libgl-dev libstb-dev fonts-dejavu-core \
             nlohmann-json3-dev libgtest-dev libbenchmark-dev libeigen3-dev xvfb xauth \
             libenet-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev \
-            libswresample-dev
+            libswresample-dev xdotool
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps configure build play test bench charts clean sanitize fuzz cli-docs screenshots

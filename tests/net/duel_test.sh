@@ -2,8 +2,8 @@
 # Networked duels between real processes over 127.0.0.1 (ports chosen by the system,
 # so tests running side by side never collide). Every wait is bounded.
 #   duel_test.sh EXE RELAY SOURCE_DIR WORK_DIR MODE
-# MODE: loopback | relay | tamper | reconnect | rejoin | timeout | refuse | window
-#   (window: XVFB_RUN in the environment names xvfb-run)
+# MODE: loopback | relay | tamper | reconnect | rejoin | timeout | refuse | window | played
+#   (window, played: XVFB_RUN in the environment names xvfb-run; played: xdotool too)
 set -u
 EXE=$1 RELAY=$2 SRC=$3 WORK=$4 MODE=$5
 rm -rf "$WORK" && mkdir -p "$WORK" && cd "$SRC" || exit 2
@@ -123,6 +123,38 @@ refuse)
     duel edited --wait 3 -- --levels "$WORK/levels"
     [ $JOIN_RC = 1 ] || fail "join exited $JOIN_RC, expected 1"
     grep -q "the host refused: level differs: host plays 10_duel.json (content hash [0-9a-f]*), bob has content hash [0-9a-f]*" "$WORK/edited.join.log" || fail "no level message"
+    ;;
+played)
+    # A person plays the host's window: the gestures run inside the virtual display.
+    "$XVFB_RUN" -a -s "-screen 0 960x540x24" bash "$0" "$EXE" "$RELAY" "$SRC" "$WORK/inside" played_inside \
+        || fail "the played window failed"
+    ;;
+played_inside)
+    # The host's window (960x540, at the screen's corner) waits for its player; the guest
+    # is the computer. Once it has joined: a drag from the cannon's pivot (about 87, 377
+    # in the window) to 173 px right and 100 px up, i.e. 30 degrees and 200 of the 260 px
+    # that mean full power (70 m/s): 53.8 m/s; then Enter fires. The guest leaves at 10 s
+    # of match time, so the window closes (abandoned, after its 1 s --timeout) and saves
+    # the replay, which must hold that aim, that power and the fire, as cannon 0's.
+    timeout 120 "$EXE" host levels/10_duel.json --port 0 --name ada --window --timeout 1 \
+        --close-when-over --record "$WORK/played.json" > "$WORK/h.log" 2>&1 &
+    H=$!
+    HP=$(port_of "$WORK/h.log") || fail "the host did not start"
+    timeout 120 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob --quit-at-tick 1200 \
+        > "$WORK/j.log" 2>&1 &
+    for _ in $(seq 100); do grep -q "bob joined from" "$WORK/h.log" && break; sleep 0.1; done
+    grep -q "bob joined from" "$WORK/h.log" || fail "nobody joined"
+    sleep 1
+    xdotool mousemove 120 360 mousedown 1 sleep 0.2 mousemove 200 300 sleep 0.2 \
+        mousemove 260 277 sleep 0.3 mouseup 1 sleep 0.3 key Return || fail "xdotool failed"
+    wait $H
+    # The first aim, power and fire of the replay (its commands, one field a line).
+    first() { sed -n "s/.*\"$1\": *\([0-9.]*\).*/\1/p" "$WORK/played.json" | head -1; }
+    AIM=$(first angle_deg) POWER=$(first speed_mps)
+    echo "the window's first aim: $AIM deg, $POWER m/s"
+    grep -q '"cmd": *"fire"' "$WORK/played.json" || fail "the window fired nothing"
+    awk -v a="$AIM" -v p="$POWER" 'BEGIN { exit !(a > 25 && a < 35 && p > 49 && p < 59) }' \
+        || fail "the replay's aim is not the drag's"
     ;;
 window)
     # The host plays in its window under a virtual display ($XVFB_RUN): the duel is heard

@@ -17,6 +17,7 @@
 #include "ui/game/random_map.h"
 #include "ui/game/settings_commands.h"
 #include "ui/game/target_inset.h"
+#include "ui/game/turn_controls.h"
 #include "ui/platform/imgui_layer.h"
 #include "ui/platform/sdl_window.h"
 #include "ui/render/design_canvas.h"
@@ -428,32 +429,16 @@ void GameScreen::recordResultOnce() {
 // ---- time -----------------------------------------------------------------------------
 void GameScreen::pollHeldInput(double dt) {
     const game::Match& m = session_->match();
-    const game::CannonState& c = m.cannon();
-    if (!humanTurn() || m.shell()) {
-        aim_.cancelCharge();
-        aim_.sync(c);
-        return;
+    HeldAxes axes;
+    if (humanTurn() && !m.shell()) {
+        if (!imgui_.wantsKeyboard() && window_ && overlay_ == Overlay::None) axes = heldArrowKeys();
+        if (pad_.connected()) {
+            const PadAxes pad = pad_.axes();
+            aim_.stick(pad.stickX, pad.stickY);
+            axes.power += pad.power;
+        }
     }
-    double angleAxis = 0.0, powerAxis = 0.0;
-    if (!imgui_.wantsKeyboard() && window_ && overlay_ == Overlay::None) {
-        const Uint8* keys = SDL_GetKeyboardState(nullptr);
-        const double fine = (keys[SDL_SCANCODE_LSHIFT] || keys[SDL_SCANCODE_RSHIFT]) ? 0.2 : 1.0;
-        angleAxis = fine * ((keys[SDL_SCANCODE_LEFT] ? 1.0 : 0.0) - (keys[SDL_SCANCODE_RIGHT] ? 1.0 : 0.0));
-        powerAxis = fine * ((keys[SDL_SCANCODE_UP] ? 1.0 : 0.0) - (keys[SDL_SCANCODE_DOWN] ? 1.0 : 0.0));
-    }
-    if (pad_.connected()) {
-        const PadAxes pad = pad_.axes();
-        aim_.stick(pad.stickX, pad.stickY);
-        powerAxis += pad.power;
-    }
-    if (angleAxis != 0.0 || powerAxis != 0.0) {
-        aim_.hold(angleAxis, powerAxis, dt, c.def.maxSpeedMps);
-    } else if (aim_.editing() && !aim_.dragging() && !aim_.charging()) {
-        // Keys released (or the stick let go): the aim settles and becomes commands.
-        submit(aim_.commit(c));
-    }
-    aim_.updateCharge(dt);
-    aim_.sync(c);
+    submit(holdToAim(axes, dt, aim_, m, humanTurn()));
 }
 
 void GameScreen::simulate(double wallSeconds) {
@@ -884,9 +869,14 @@ void GameScreen::setMeasuredFrameMs(double ms) {
 }
 
 // ---- events ---------------------------------------------------------------------------
-phys::Vec2 GameScreen::pointerPixels(int x, int y) const {
+phys::Vec2 GameScreen::pixelsPerPoint() const {
     // Window points to framebuffer pixels (they differ on high-DPI screens).
     const ImVec2 s = ImGui::GetIO().DisplayFramebufferScale;
+    return {s.x, s.y};
+}
+
+phys::Vec2 GameScreen::pointerPixels(int x, int y) const {
+    const phys::Vec2 s = pixelsPerPoint();
     return {x * s.x, y * s.y};
 }
 
@@ -933,27 +923,14 @@ bool GameScreen::keyDown(const SDL_Event& e) {
     }
     if (!session_ || overlay_ != Overlay::None || e.key.repeat) return true;
     game::Match& m = session_->match();
-    const game::CannonState& c = m.cannon();
+    if (humanTurn())
+        if (auto commands = pressTurnKey(key, aim_, m)) {
+            submit(*commands);
+            return true;
+        }
     switch (key) {
-    case SDLK_SPACE:
-        if (humanTurn() && !m.shell()) aim_.startCharge();
-        break;
-    case SDLK_RETURN:
-    case SDLK_KP_ENTER:
-    case SDLK_f:
-        if (humanTurn()) submit(aim_.fire(c));
-        break;
-    case SDLK_e: {
-        game::Command end;
-        end.kind = game::CommandKind::EndTurn;
-        if (humanTurn()) submit(end);
-        break;
-    }
     case SDLK_z:
         watchLastShot();
-        break;
-    case SDLK_TAB:
-        if (auto s = AimInput::select(c, (c.projectile + 1) % c.def.projectiles.size())) submit(*s);
         break;
     case SDLK_p:
         settings_.trajectoryPreview = !settings_.trajectoryPreview;
@@ -1001,8 +978,6 @@ bool GameScreen::keyDown(const SDL_Event& e) {
         cameraMoved_ = false;
         break;
     default:
-        if (key >= SDLK_1 && key <= SDLK_8)
-            if (auto s = AimInput::select(c, static_cast<std::size_t>(key - SDLK_1))) submit(*s);
         break;
     }
     return true;
@@ -1059,8 +1034,7 @@ bool GameScreen::handleEvent(const SDL_Event& e) {
     if (editing_) return editorEvent(e);
     const PadAction padAction = pad_.handle(e);
     if (e.type == SDL_KEYDOWN && !imgui_.wantsKeyboard()) return keyDown(e) && running_;
-    if (e.type == SDL_KEYUP && e.key.keysym.sym == SDLK_SPACE && session_ && aim_.charging())
-        submit(aim_.releaseCharge(session_->match().cannon()));
+    if (e.type == SDL_KEYUP && session_) submit(releaseTurnKey(e.key.keysym.sym, aim_, session_->match()));
     const bool panelsMouse = (uiWants && imgui_.wantsMouse()) || imgui_.pressOnWindow(e);
     if (viewer_ && !panelsMouse && overlay_ == Overlay::None) cameraEvent(e);
     if (!session_ || viewer_) return running_;
@@ -1101,18 +1075,11 @@ bool GameScreen::handleEvent(const SDL_Event& e) {
         if (!left || e.type == SDL_MOUSEMOTION) cameraEvent(e); // right drag still pans
         return running_;
     }
-    if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT) {
-        if (humanTurn() && !m.shell())
-            aim_.beginDrag(pivotPixels(), pointerPixels(e.button.x, e.button.y),
-                           m.cannon().def.maxSpeedMps);
-    } else if (e.type == SDL_MOUSEBUTTONUP && e.button.button == SDL_BUTTON_LEFT) {
-        submit(aim_.endDrag(m.cannon()));
-    } else if (e.type == SDL_MOUSEMOTION && aim_.dragging()) {
-        aim_.dragTo(pivotPixels(), pointerPixels(e.motion.x, e.motion.y),
-                    m.cannon().def.maxSpeedMps);
-    } else {
+    std::vector<game::Command> aimed;
+    if (dragToAim(e, aim_, m, humanTurn(), pivotPixels(), pixelsPerPoint(), aimed))
+        submit(aimed);
+    else
         cameraEvent(e); // wheel zooms, right (or middle) drag pans
-    }
     return running_;
 }
 

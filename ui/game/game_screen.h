@@ -158,6 +158,7 @@ class GameScreen final : public Screen {
     void hearTick(const game::Match& m);
     void hearFrame();
     phys::Vec2 pivotPixels() const;
+    phys::Vec2 pixelsPerPoint() const;
     phys::Vec2 pointerPixels(int x, int y) const;
     bool keyDown(const SDL_Event& e);
 

@@ -2,8 +2,11 @@
 
 #include "game/cli/args.h"
 #include "game/audio/synthesizer.h"
+#include "ui/game/aim_input.h"
+#include "ui/game/game_menus.h"
 #include "ui/game/match_frame.h"
 #include "ui/game/player_settings.h"
+#include "ui/game/turn_controls.h"
 #include "ui/platform/audio_device.h"
 #include "ui/platform/gl_setup.h"
 #include "ui/platform/imgui_layer.h"
@@ -42,7 +45,28 @@ struct Form {
     char name[game::net::kMaxNameBytes + 1] = "player";
     int port = kDefaultPort;
     bool autoplay = false;
+    std::vector<LevelEntry> maps; ///< the duel levels of the levels folder
 };
+
+/// The duel maps the host can pick by name (any other file can be typed in).
+std::vector<LevelEntry> duelMaps(const std::string& folder) {
+    std::vector<LevelEntry> maps = listLevels(folder);
+    std::erase_if(maps, [](const LevelEntry& e) {
+        return e.mode != game::Mode::Duel || !e.error.empty();
+    });
+    return maps;
+}
+
+/// The map list: picking one fills in its file.
+void pickMap(Form& f) {
+    const char* shown = "another file";
+    for (const LevelEntry& e : f.maps)
+        if (e.file == f.level) shown = e.name.c_str();
+    if (!ImGui::BeginCombo("map (host)", shown)) return;
+    for (const LevelEntry& e : f.maps)
+        if (ImGui::Selectable(e.name.c_str(), e.file == f.level)) copyInto(f.level, sizeof f.level, e.file);
+    ImGui::EndCombo();
+}
 
 /// Draws the host/join form; true when the player pressed Host, Join or Watch (and
 /// `o` then holds the choice).
@@ -54,7 +78,8 @@ bool drawForm(Form& f, NetOptions& o, const std::string& error) {
         "Host a duel (you play cannon 0) or join one (cannon 1). Both sides need the "
         "same program and the same level file.");
     ImGui::InputText("your name", f.name, sizeof f.name);
-    ImGui::InputText("level (host)", f.level, sizeof f.level);
+    pickMap(f);
+    ImGui::InputText("level file (host)", f.level, sizeof f.level);
     ImGui::InputText("address (join)", f.address, sizeof f.address);
     ImGui::InputInt("port", &f.port);
     if (f.port < 1) f.port = 1;
@@ -89,43 +114,38 @@ bool drawForm(Form& f, NetOptions& o, const std::string& error) {
     return go;
 }
 
-/// The local cannon's keys as commands (only in one's own turn; the duel refuses others).
-void keyCommand(NetDuel& duel, SDL_Keycode key, std::string& status) {
+/// Whether the local player may aim now: their own turn of a match still on.
+bool myTurn(const NetDuel& duel) {
     const auto* ls = duel.lockstep();
-    if (!ls || !ls->localTurn()) return;
-    const game::CannonState& c = ls->match().cannon();
-    game::Command cmd;
-    switch (key) {
-    case SDLK_LEFT:
-        cmd.kind = game::CommandKind::Aim;
-        cmd.number = c.angleDeg + 1.0;
-        break;
-    case SDLK_RIGHT:
-        cmd.kind = game::CommandKind::Aim;
-        cmd.number = c.angleDeg - 1.0;
-        break;
-    case SDLK_UP:
-        cmd.kind = game::CommandKind::Power;
-        cmd.number = std::min(c.def.maxSpeedMps, c.speedMps + 1.0);
-        break;
-    case SDLK_DOWN:
-        cmd.kind = game::CommandKind::Power;
-        cmd.number = std::max(0.0, c.speedMps - 1.0);
-        break;
-    case SDLK_TAB:
-        cmd.kind = game::CommandKind::Select;
-        cmd.text = c.def.projectiles[(c.projectile + 1) % c.def.projectiles.size()];
-        break;
-    case SDLK_SPACE:
-        cmd.kind = game::CommandKind::Fire;
-        break;
-    case SDLK_RETURN:
-        cmd.kind = game::CommandKind::EndTurn;
-        break;
-    default:
-        return;
+    return ls && ls->localTurn() && !ls->over();
+}
+
+/// The local player's commands go to the duel (which refuses them outside one's turn).
+void submitAll(NetDuel& duel, const std::vector<game::Command>& commands, std::string& status) {
+    for (const game::Command& c : commands)
+        if (std::string why = duel.submit(c); !why.empty()) status = why;
+}
+
+/// A window event as the local player's turn at the cannon (turn_controls.h, as in the
+/// game's window), and P for the launch arc's preview.
+void turnEvent(NetDuel& duel, const SDL_Event& e, AimInput& aim, phys::Vec2 pivotPx,
+               bool& preview, std::string& status) {
+    const auto* ls = duel.lockstep();
+    if (!ls) return;
+    const game::Match& m = ls->match();
+    const bool mine = myTurn(duel);
+    if (e.type == SDL_KEYDOWN && !e.key.repeat) {
+        if (e.key.keysym.sym == SDLK_p) preview = !preview;
+        if (mine)
+            if (auto commands = pressTurnKey(e.key.keysym.sym, aim, m))
+                submitAll(duel, *commands, status);
+    } else if (e.type == SDL_KEYUP) {
+        submitAll(duel, releaseTurnKey(e.key.keysym.sym, aim, m), status);
+    } else {
+        const ImVec2 s = ImGui::GetIO().DisplayFramebufferScale;
+        std::vector<game::Command> aimed;
+        if (dragToAim(e, aim, m, mine, pivotPx, {s.x, s.y}, aimed)) submitAll(duel, aimed, status);
     }
-    if (std::string why = duel.submit(cmd); !why.empty()) status = why;
 }
 
 void drawStatus(const NetDuel& duel, const std::deque<std::string>& log,
@@ -142,7 +162,8 @@ void drawStatus(const NetDuel& duel, const std::deque<std::string>& log,
                     duel.playerName(1).c_str(), me < 0 ? "   watching" : "");
         ImGui::Text("tick %llu   %s", static_cast<unsigned long long>(ls->match().tick()),
                     ls->over()        ? "match over"
-                    : ls->localTurn() ? "your turn (arrows aim, Tab shell, Space fire)"
+                    : ls->localTurn() && ls->match().shell() ? "your shot is in the air"
+                    : ls->localTurn() ? "your turn: drag or arrows aim, Space or Enter fires"
                     : duel.paused()   ? "connection lost: paused"
                     : ls->canStep()   ? "their turn"
                                       : "waiting for the other side");
@@ -174,6 +195,7 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
     Renderer2D renderer;
     MatchView view;
     Form form;
+    form.maps = duelMaps(opt.duel.levelsDir);
     copyInto(form.name, sizeof form.name, opt.duel.name);
     if (!opt.duel.levelFile.empty()) copyInto(form.level, sizeof form.level, opt.duel.levelFile);
     copyInto(form.address, sizeof form.address, opt.duel.address);
@@ -192,6 +214,9 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
         }
     };
     if (opt.startNow) begin(chosen);
+    AimInput aim;
+    bool preview = true; // the launch arc, as in a duel at home (P)
+    Camera camera;       // the last frame's: where the cannon is on screen
     auto last = Clock::now();
     double owed = 0.0;
     long long overFrames = 0;
@@ -200,10 +225,16 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
         SDL_Event e;
         while (SDL_PollEvent(&e)) {
             if (window->toggleFullScreenOn(e)) continue;
-            const bool uiWants = imgui.processEvent(e);
+            imgui.processEvent(e);
             if (e.type == SDL_QUIT) running = false;
-            if (e.type == SDL_KEYDOWN && !uiWants && duel)
-                keyCommand(*duel, e.key.keysym.sym, status);
+            // A key typed into the form's fields, or the mouse over a panel, is the
+            // panels'; a key let go ends a charge wherever it is.
+            const bool forPanels = e.type == SDL_KEYDOWN ? imgui.wantsKeyboard()
+                                   : e.type == SDL_KEYUP ? false
+                                                         : imgui.wantsMouse() || imgui.pressOnWindow(e);
+            if (!forPanels && duel && duel->lockstep())
+                turnEvent(*duel, e, aim, camera.toPixel(duel->lockstep()->match().cannon().def.position),
+                          preview, status);
         }
         const auto now = Clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();
@@ -224,6 +255,13 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
             }
             if (duel->result() != NetResult::Running && opt.closeWhenOver && ++overFrames > 30)
                 running = false;
+            if (duel->lockstep()) {
+                const bool typing = imgui.wantsKeyboard();
+                submitAll(*duel,
+                          holdToAim(typing ? HeldAxes{} : heldArrowKeys(), dt, aim,
+                                    duel->lockstep()->match(), myTurn(*duel)),
+                          status);
+            }
         }
         const int w = window->width(), h = window->height();
         imgui.newFrame(dt);
@@ -233,12 +271,18 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
             view.observe(*match);
             MatchViewOptions o;
             o.playerNames = {duel->playerName(0), duel->playerName(1)};
-            o.trajectoryPreview = false;
+            // In one's own turn, the aim being edited and the launch arc (never the
+            // whole path, nor the computer's hint: both players see the same aids).
+            const bool mine = myTurn(*duel);
+            o.trajectoryPreview = preview && mine;
+            o.fullPreview = false;
             o.solutionHint = false;
+            if (mine && aim.editing()) o.pending = aim.pending();
+            o.charge = aim.chargeFraction();
             if (match->over())
                 o.banner = match->winner() < 0 ? std::string("draw")
                                                : duel->playerName(match->winner()) + " wins";
-            const Camera camera = levelCamera(*match, w, h);
+            camera = levelCamera(*match, w, h);
             drawMatchFrame(renderer, view, *match, camera, o);
             if (!audio.silent()) {
                 sound.setView({camera.visibleMin().x, camera.visibleMax().x});

@@ -1,7 +1,7 @@
 // The network duel in a window: a host/join screen (address, port, level, names), then
 // the match drawn with the window's drawing code while a NetDuel runs it in lockstep.
-// The local cannon is aimed with the keys (Left/Right angle, Up/Down power, Tab
-// projectile, Space fire, Enter end turn) or played by the computer (--autoplay).
+// The local cannon is played as in the game's window (turn_controls.h: drag or arrows
+// aim, Space or Enter fires, E ends the turn) or by the computer (--autoplay).
 #pragma once
 
 #include "ui/net/net_duel.h"

@@ -30,9 +30,11 @@ LEVEL is a duel level (default levels/10_duel.json).
   --record FILE     save the match as a replay (also when it ends by desync or timeout)
   --timeout S       how long a dropped player may take to come back (default 60 s)
   --wait S          how long to wait for a player to join (default 120 s)
-  --window          play in a window: the host/join form (address, port, level, names),
-                    then the match; aim with the keys (Left/Right, Up/Down, Tab, Space,
-                    Enter). With --autoplay or --commands the form is skipped.
+  --window          play in a window: the host/join form (the duel map, address, port,
+                    names), then the match, played as in the game's window (drag or
+                    arrows aim, Space or Enter fires, E ends the turn, Tab or 1-8 the
+                    shell, P the launch arc). The form is skipped when the command
+                    line chose already (host LEVEL, join HOST, --autoplay, --commands).
                     --screenshot F.png (last frame), --frames N, --close-when-over
   --json            {"result":"over|desync|abandoned|refused|failed","message":..,
                      "ticks":n,"final_hash":"hex","winner":i}
@@ -121,7 +123,9 @@ int runNet(const Args& args, std::ostream& out, bool host) {
     if (o.autoplay && !o.script.empty()) args.fail("takes --commands or --autoplay, not both");
     if (window) {
         wo.duel = o;
-        wo.startNow = o.autoplay || o.spectate || args.has("commands");
+        // The form is for choosing: a level or an address on the command line (or a
+        // player other than you) has chosen already.
+        wo.startNow = o.autoplay || o.spectate || args.has("commands") || !pos.empty();
         return runNetWindow(wo, out);
     }
     if (!o.spectate && !o.autoplay && !args.has("commands"))

@@ -43,7 +43,9 @@ class ImGuiLayer {
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
-    /// Passes an SDL event to ImGui; true when ImGui wants it (typing, over a panel).
+    /// Passes an SDL event to ImGui; true when its backend took it in (every key, button
+    /// and wheel event: that is not ImGui wanting it, which wantsMouse and wantsKeyboard
+    /// tell).
     bool processEvent(const SDL_Event& event);
     /// Starts an ImGui frame of `dtSeconds`.
     void newFrame(double dtSeconds);

@@ -1,0 +1,81 @@
+#include "ui/game/turn_controls.h"
+
+namespace ui {
+
+std::optional<std::vector<game::Command>> pressTurnKey(SDL_Keycode key, AimInput& aim,
+                                                       const game::Match& m) {
+    const game::CannonState& c = m.cannon();
+    auto selected = [](std::optional<game::Command> s) {
+        return s ? std::vector<game::Command>{*s} : std::vector<game::Command>{};
+    };
+    switch (key) {
+    case SDLK_SPACE:
+        if (!m.shell()) aim.startCharge();
+        return std::vector<game::Command>{};
+    case SDLK_RETURN:
+    case SDLK_KP_ENTER:
+    case SDLK_f:
+        return aim.fire(c);
+    case SDLK_e: {
+        game::Command end;
+        end.kind = game::CommandKind::EndTurn;
+        return std::vector<game::Command>{end};
+    }
+    case SDLK_TAB:
+        return selected(AimInput::select(c, (c.projectile + 1) % c.def.projectiles.size()));
+    default:
+        if (key >= SDLK_1 && key <= SDLK_8)
+            return selected(AimInput::select(c, static_cast<std::size_t>(key - SDLK_1)));
+        return std::nullopt;
+    }
+}
+
+std::vector<game::Command> releaseTurnKey(SDL_Keycode key, AimInput& aim, const game::Match& m) {
+    if (key != SDLK_SPACE || !aim.charging()) return {};
+    return aim.releaseCharge(m.cannon());
+}
+
+bool dragToAim(const SDL_Event& e, AimInput& aim, const game::Match& m, bool myTurn,
+               phys::Vec2 pivotPx, phys::Vec2 pixelsPerPoint, std::vector<game::Command>& out) {
+    const double maxSpeed = m.cannon().def.maxSpeedMps;
+    auto pixels = [&](int x, int y) { return phys::Vec2{x * pixelsPerPoint.x, y * pixelsPerPoint.y}; };
+    if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT) {
+        if (myTurn && !m.shell()) aim.beginDrag(pivotPx, pixels(e.button.x, e.button.y), maxSpeed);
+        return true;
+    }
+    if (e.type == SDL_MOUSEBUTTONUP && e.button.button == SDL_BUTTON_LEFT) {
+        out = aim.endDrag(m.cannon());
+        return true;
+    }
+    if (e.type == SDL_MOUSEMOTION && aim.dragging()) {
+        aim.dragTo(pivotPx, pixels(e.motion.x, e.motion.y), maxSpeed);
+        return true;
+    }
+    return false;
+}
+
+HeldAxes heldArrowKeys() {
+    const Uint8* keys = SDL_GetKeyboardState(nullptr);
+    auto down = [&](SDL_Scancode k) { return keys[k] ? 1.0 : 0.0; };
+    const double fine = down(SDL_SCANCODE_LSHIFT) + down(SDL_SCANCODE_RSHIFT) > 0.0 ? 0.2 : 1.0;
+    return {fine * (down(SDL_SCANCODE_LEFT) - down(SDL_SCANCODE_RIGHT)),
+            fine * (down(SDL_SCANCODE_UP) - down(SDL_SCANCODE_DOWN))};
+}
+
+std::vector<game::Command> holdToAim(HeldAxes axes, double dt, AimInput& aim,
+                                     const game::Match& m, bool myTurn) {
+    const game::CannonState& c = m.cannon();
+    std::vector<game::Command> settled;
+    if (!myTurn || m.shell()) {
+        aim.cancelCharge();
+    } else if (axes.angle != 0.0 || axes.power != 0.0) {
+        aim.hold(axes.angle, axes.power, dt, c.def.maxSpeedMps);
+    } else if (aim.editing() && !aim.dragging() && !aim.charging()) {
+        settled = aim.commit(c); // keys released (or the stick let go): the aim settles
+    }
+    aim.updateCharge(dt);
+    aim.sync(c);
+    return settled;
+}
+
+} // namespace ui
