@@ -1,5 +1,7 @@
 #include "physics/clock.h"
 
+#include <algorithm>
+
 namespace phys {
 
 int FixedClock::advance(double frameSeconds) {
@@ -22,6 +24,12 @@ int FixedClock::advance(double frameSeconds) {
     }
     ticks_ += static_cast<std::uint64_t>(n);
     return n;
+}
+
+void FixedClock::dropTicks(int n) {
+    if (n <= 0) return;
+    ticks_ -= std::min(ticks_, static_cast<std::uint64_t>(n));
+    ++dropped_;
 }
 
 } // namespace phys

@@ -34,6 +34,9 @@ class FixedClock {
     std::uint64_t ticks() const { return ticks_; }
     /// Frames whose catch-up was capped (time was dropped, not simulated).
     std::uint64_t droppedFrames() const { return dropped_; }
+    /// The caller ran `n` fewer of the ticks the last advance() handed out (its frame ran
+    /// out of time): they are dropped, as a capped catch-up drops them.
+    void dropTicks(int n);
 
   private:
     ClockDef def_;

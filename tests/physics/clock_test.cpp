@@ -88,3 +88,16 @@ TEST(FixedClock, LongStallIsCappedNotReplayed) {
     EXPECT_EQ(c.droppedFrames(), 1u);
     EXPECT_EQ(c.advance(0.0), 0) << "the backlog was dropped";
 }
+
+// A frame that runs out of wall time before it has run every tick handed out drops the
+// rest: counted as dropped, never owed to the next frame.
+TEST(FixedClock, TicksAFrameHadNoTimeForAreDropped) {
+    FixedClock c({0.01, 1.0, 32});
+    ASSERT_EQ(c.advance(0.1), 10);
+    c.dropTicks(9);
+    EXPECT_EQ(c.ticks(), 1u);
+    EXPECT_EQ(c.droppedFrames(), 1u);
+    EXPECT_EQ(c.advance(0.01), 1) << "only the next frame's own time";
+    c.dropTicks(0);
+    EXPECT_EQ(c.droppedFrames(), 1u) << "nothing dropped, nothing counted";
+}

@@ -17,6 +17,7 @@
 #include "ui/game/random_map.h"
 #include "ui/game/settings_commands.h"
 #include "ui/game/target_inset.h"
+#include "ui/game/tick_budget.h"
 #include "ui/game/turn_controls.h"
 #include "ui/platform/imgui_layer.h"
 #include "ui/platform/sdl_window.h"
@@ -81,6 +82,8 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
     : context_(context), window_(window), def_(def), glLoaded_(loadGLOrThrow(context)),
       imgui_(context, window) {
     stats_.context = context.name();
+    tickBudget_ = def_.tickBudgetSeconds;
+    if (!tickBudget_ && window_) tickBudget_ = kWindowTickBudgetSeconds;
     samples_ = autoSamples(def_.msaaSamples);
     msaa_.resize(context.width(), context.height(), samples_);
     if (!def_.settingsFolder.empty()) {
@@ -449,15 +452,20 @@ void GameScreen::simulate(double wallSeconds) {
         clock_.requestSingleStep();
         time_.stepRequested = false;
     }
-    const int ticks = clock_.advance(wallSeconds);
+    const int wanted = clock_.advance(wallSeconds);
     double physicsUs = 0.0;
-    for (int i = 0; i < ticks; ++i) {
+    const TicksRun run = runTicksWithin(clock_, wanted, tickBudget_, [&] {
         session_->step();
         matchView_.observe(session_->match());
         statsPanel_.sample(session_->match());
         hearTick(session_->match());
         physicsUs += session_->match().world().profile().totalUs;
-    }
+    });
+    const int ticks = run.ran;
+    // Said for a second after the last frame the budget cut (not per frame: no flicker),
+    // with what a tick costs: the world, the blocks and the match together.
+    behindSeconds_ = ticks < wanted ? 1.0 : std::max(0.0, behindSeconds_ - wallSeconds);
+    if (ticks < wanted) tickWallMs_ = 1000.0 * run.seconds / ticks;
     const game::Match& m = session_->match();
     stats_.ticksThisFrame = ticks;
     if (ticks > 0) stats_.physicsUs = physicsUs / ticks;
@@ -598,12 +606,20 @@ phys::Vec2 GameScreen::pivotPixels() const {
     return camera_.toPixel(session_->match().cannon().def.position);
 }
 
+std::string GameScreen::banner() const {
+    if (viewer_) return viewer_->banner();
+    return session_ ? liveBanner(session_->match()) : std::string();
+}
+
 std::string GameScreen::liveBanner(const game::Match& m) const {
     char banner[64] = "";
     // A branch says so for its first seconds (simulated: it stays while paused).
     const auto branchTicks = static_cast<std::uint64_t>(3.0 / m.world().def().tickSeconds);
     if (time_.paused)
         std::snprintf(banner, sizeof banner, "PAUSED  (. steps one tick)");
+    else if (behindSeconds_ > 0.0)
+        std::snprintf(banner, sizeof banner, "SLOW MOTION: a tick of %.0f ms takes %.0f ms",
+                      1000.0 * m.world().def().tickSeconds, tickWallMs_);
     else if (time_.timeScale != 1.0f)
         std::snprintf(banner, sizeof banner, "speed x%g", static_cast<double>(time_.timeScale));
     else if (!branchNote_.empty() && m.tick() < branchTick_ + branchTicks)
@@ -804,7 +820,8 @@ void GameScreen::frame(double wallSeconds) {
     if (editing_) {
         // The level being made is not simulated: it is drawn at its first tick.
     } else if (viewer_) {
-        viewer_->advance(wallSeconds, overlay_ != Overlay::None || helpOpen_, matchView_);
+        viewer_->advance(wallSeconds, overlay_ != Overlay::None || helpOpen_, matchView_,
+                         tickBudget_);
         if (instantReplay() && viewer_->player().atEnd()) backToLive();
     } else if (session_) {
         pollHeldInput(wallSeconds);

@@ -69,6 +69,9 @@ struct GameScreenDef {
     bool edit = false;
     /// What to draw at the start: trails and the debug view's overlays (play flags).
     ViewControls view;
+    /// Wall time a frame may spend running ticks (tick_budget.h); none: the window's
+    /// kWindowTickBudgetSeconds, and no limit headless.
+    std::optional<double> tickBudgetSeconds;
 };
 
 class GameScreen final : public Screen {
@@ -88,6 +91,9 @@ class GameScreen final : public Screen {
     void setMeasuredFrameMs(double ms) override;
     void warmUp(double seconds) override;
 
+    /// The line at the top of the picture now ("PAUSED ...", "SLOW MOTION ...", a
+    /// replay's), "" for none.
+    std::string banner() const;
     /// The match being played, if any (null on the level select screen or in a replay).
     const game::Session* session() const { return session_.get(); }
     /// The refused command the HUD shows now ("spawn: ..."), "" for none.
@@ -199,6 +205,10 @@ class GameScreen final : public Screen {
     /// The first level, drawn behind the level select screen before any game starts.
     std::unique_ptr<game::Match> backdrop_;
     phys::FixedClock clock_;
+    std::optional<double> tickBudget_; ///< wall s a frame may spend on ticks (tick_budget.h)
+    /// Wall seconds until the slow-motion banner goes (the budget cut a frame's ticks).
+    double behindSeconds_ = 0.0;
+    double tickWallMs_ = 0.0; ///< wall ms a tick took when the budget last cut a frame
     TimeControls time_;
     ViewControls view_;
     MatchView matchView_;

@@ -533,7 +533,9 @@ void drawHud(Renderer2D& r, const Match& m, const MatchViewOptions& o, const Pen
 
     drawWindArrow(s, W / 2, 12, m.wind());
     if (!o.banner.empty()) {
-        s.panel(W / 2 - 120, 76, W / 2 + 120, 106, Color::hex(0x000000, 0.55f));
+        // Wide enough for the line: the HUD font averages under 8 design px a character.
+        const double half = std::max(120.0, 4.0 * static_cast<double>(o.banner.size()) + 14.0);
+        s.panel(W / 2 - half, 76, W / 2 + half, 106, Color::hex(0x000000, 0.55f));
         s.text(W / 2, 81, o.banner, kGold, 1.0f, 0.5f);
     }
 

@@ -4,6 +4,8 @@
 //   controls  panel, key, banner
 //   video     exportVideo, the panel's line about it
 #include "ui/game/replay_view.h"
+
+#include "ui/game/tick_budget.h"
 #include "ui/platform/imgui_layer.h"
 
 #include <SDL.h>
@@ -84,7 +86,8 @@ game::Session ReplayViewer::takeOver(const game::SessionOptions& options) {
 }
 
 // ---- time -----------------------------------------------------------------------------
-void ReplayViewer::advance(double wallSeconds, bool held, MatchView& view) {
+void ReplayViewer::advance(double wallSeconds, bool held, MatchView& view,
+                           std::optional<double> tickBudgetSeconds) {
     game::ReplayPlayer& p = *player_;
     if (seek_) {
         const std::uint64_t target = std::min(*seek_, p.lastTick());
@@ -109,10 +112,12 @@ void ReplayViewer::advance(double wallSeconds, bool held, MatchView& view) {
         clock_.requestSingleStep();
         stepRequested_ = false;
     }
-    for (int n = clock_.advance(wallSeconds); n > 0 && !p.atEnd(); --n) {
+    const int wanted = clock_.advance(wallSeconds);
+    runTicksWithin(clock_, wanted, tickBudgetSeconds, [&] {
+        if (p.atEnd()) return;
         p.step();
         view.observe(p.match());
-    }
+    });
     if (p.atEnd()) paused_ = true; // Space then plays it again from the start
     p.prepareRestartPoints(kRestartTicksPerFrame);
 }

@@ -43,8 +43,10 @@ class ReplayViewer {
     /// Feeds one frame's wall time: carries out a pending jump, then plays the ticks the
     /// clock hands out at the chosen speed (none while paused or while `held`, a menu
     /// being open). `view` observes every tick played and forgets its trails on a jump
-    /// back.
-    void advance(double wallSeconds, bool held, MatchView& view);
+    /// back. A frame spends at most `tickBudgetSeconds` of wall time on ticks
+    /// (tick_budget.h; none: no limit).
+    void advance(double wallSeconds, bool held, MatchView& view,
+                 std::optional<double> tickBudgetSeconds = std::nullopt);
     /// Plays `seconds` at once, without drawing (--warmup).
     void warmUp(double seconds, MatchView& view);
     /// The "Replay" window.

@@ -1,0 +1,46 @@
+// Wall time a frame may spend running ticks. A window that runs every tick its fixed-step
+// clock hands out freezes once a tick costs more wall time than it simulates (a heavy
+// sandbox, a level of many small blocks): the clock's catch-up cap of 32 ticks at 100 ms
+// a tick is a 3 s frame. Past the budget the frame's remaining ticks are dropped instead
+// (FixedClock::dropTicks), so the game runs in slow motion at a frame rate the player can
+// still steer and read. Only how many ticks a frame runs changes, never what a tick does:
+// the match, its replay and its hash are the same. Headless runs have no budget, so
+// their frames are the same on every machine.
+#pragma once
+
+#include "physics/clock.h"
+
+#include <chrono>
+#include <optional>
+
+namespace ui {
+
+/// The window's budget: a little more than a frame at 60 Hz, so a light level never
+/// meets it, and a heavy one still draws some 25 frames a second.
+inline constexpr double kWindowTickBudgetSeconds = 0.025;
+
+struct TicksRun {
+    int ran = 0;
+    double seconds = 0.0; ///< wall time they took
+};
+
+/// Runs `step` for up to `ticks` ticks, the first always, the others while the frame has
+/// spent less than `budgetSeconds` (none: no limit); the ticks left are dropped from
+/// `clock`.
+template <class Step>
+TicksRun runTicksWithin(phys::FixedClock& clock, int ticks, std::optional<double> budgetSeconds,
+                        Step&& step) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    auto spent = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+    TicksRun run;
+    for (; run.ran < ticks; ++run.ran) {
+        if (run.ran > 0 && budgetSeconds && spent() >= *budgetSeconds) break;
+        step();
+    }
+    run.seconds = spent();
+    if (run.ran < ticks) clock.dropTicks(ticks - run.ran);
+    return run;
+}
+
+} // namespace ui
