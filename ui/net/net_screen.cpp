@@ -182,6 +182,9 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
                                   opt.height, error);
     if (!window) {
         std::cerr << "artillery: " << error << "\n";
+        if (opt.personPlays)
+            std::cerr << "artillery: a person plays the duel in a window; without one, "
+                         "give --autoplay or --commands FILE\n";
         return game::cli::kBadInput;
     }
     loadGLOrThrow(*window);

@@ -19,6 +19,7 @@ struct NetWindowOptions {
     std::string screenshot;          ///< PNG of the last frame
     std::optional<long long> frames; ///< stop after this many frames
     bool closeWhenOver = false;      ///< leave a few frames after the match ends
+    bool personPlays = false;        ///< nobody else could play the cannon without a window
 };
 
 /// Runs the window; exit code as the headless verbs (0 match played to the end).

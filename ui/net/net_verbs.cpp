@@ -15,12 +15,13 @@ using game::cli::Args;
 
 const char* const kHostUsage =
     R"(usage: artillery host [LEVEL] [--port P] [--bind ADDR] [--name NAME]
-           (--commands FILE | --autoplay) [--record FILE] [--timeout S] [--wait S] [--json]
+           [--commands FILE | --autoplay] [--record FILE] [--timeout S] [--wait S] [--json]
 
 Hosts a duel over the network (ENet over UDP): the host plays cannon 0, the player who
 joins plays cannon 1, spectators may watch. Lockstep on the command stream: each side
 sends only its own commands, and both compare state hashes at every replay checkpoint.
-LEVEL is a duel level (default levels/10_duel.json).
+LEVEL is a duel level (default levels/10_duel.json). You play it in a window; with
+--autoplay or --commands the cannon is played for you, without one unless --window.
 
   --port P          UDP port (default 7777; 0 picks a free one, printed)
   --bind ADDR       address to listen on (default 127.0.0.1; 0.0.0.0 for every interface)
@@ -30,12 +31,12 @@ LEVEL is a duel level (default levels/10_duel.json).
   --record FILE     save the match as a replay (also when it ends by desync or timeout)
   --timeout S       how long a dropped player may take to come back (default 60 s)
   --wait S          how long to wait for a player to join (default 120 s)
-  --window          play in a window: the host/join form (the duel map, address, port,
-                    names), then the match, played as in the game's window (drag or
-                    arrows aim, Space or Enter fires, E ends the turn, Tab or 1-8 the
-                    shell, P the launch arc). The form is skipped when the command
-                    line chose already (host LEVEL, join HOST, --autoplay, --commands).
-                    --screenshot F.png (last frame), --frames N, --close-when-over
+  --window          the window also with --autoplay or --commands. Without LEVEL it
+                    opens on the host/join form (the duel map, address, port, names);
+                    the match plays as in the game's window (drag or arrows aim, Space
+                    or Enter fires, E ends the turn, Tab or 1-8 the shell, P the
+                    launch arc). --screenshot F.png (last frame), --frames N,
+                    --close-when-over
   --json            {"result":"over|desync|abandoned|refused|failed","message":..,
                      "ticks":n,"final_hash":"hex","winner":i}
   --limit S         stop after S seconds of wall time whatever happens (default 3600)
@@ -47,11 +48,12 @@ Exit: 0 the match was played to the end, 1 it was not (desync, abandoned, refuse
 )";
 
 const char* const kJoinUsage = R"(usage: artillery join HOST[:P] [--name NAME] [--spectate]
-           (--commands FILE | --autoplay) [--record FILE] [--levels DIR] [--timeout S] [--json]
+           [--commands FILE | --autoplay] [--record FILE] [--levels DIR] [--timeout S] [--json]
 
-Joins a duel hosted with `artillery host` and plays cannon 1, or watches it with
---spectate. The level is the host's: it is looked up by file name in DIR (default
-./levels) and must have the same content hash; the program version must match too.
+Joins a duel hosted with `artillery host` and plays cannon 1 in a window (with
+--autoplay or --commands without one, unless --window), or watches it with --spectate.
+The level is the host's: it is looked up by file name in DIR (default ./levels) and
+must have the same content hash; the program version must match too.
 
   HOST[:P]          the host's address and port (default port 7777)
   --name NAME       your name (default guest)
@@ -61,7 +63,8 @@ Joins a duel hosted with `artillery host` and plays cannon 1, or watches it with
   --record FILE     save the match as a replay
   --levels DIR      where to look for the host's level (default levels)
   --timeout S       how long to keep trying to reconnect after a drop (default 60 s)
-  --window          in a window, as for host (--screenshot, --frames, --close-when-over)
+  --window          a window also for --autoplay, --commands or --spectate, as for host
+                    (--screenshot, --frames, --close-when-over)
   --json            as for host (also --limit and the test hooks)
 Exit: 0 the match was played to the end, 1 it was not, 2 bad input.
 )";
@@ -112,7 +115,10 @@ int runNet(const Args& args, std::ostream& out, bool host) {
         }
     }
     const bool json = args.flag("json");
-    const bool window = args.flag("window");
+    // A person plays in a window; only the computer, a script or a spectator plays
+    // without one.
+    const bool player = !o.autoplay && !args.has("commands") && !o.spectate;
+    const bool window = args.flag("window") || player;
     NetWindowOptions wo;
     if (window) {
         wo.screenshot = args.text("screenshot", "");
@@ -123,13 +129,12 @@ int runNet(const Args& args, std::ostream& out, bool host) {
     if (o.autoplay && !o.script.empty()) args.fail("takes --commands or --autoplay, not both");
     if (window) {
         wo.duel = o;
+        wo.personPlays = player;
         // The form is for choosing: a level or an address on the command line (or a
         // player other than you) has chosen already.
         wo.startNow = o.autoplay || o.spectate || args.has("commands") || !pos.empty();
         return runNetWindow(wo, out);
     }
-    if (!o.spectate && !o.autoplay && !args.has("commands"))
-        args.fail("needs --commands FILE or --autoplay (or --spectate) to play without a window");
 
     NetDuel duel(o);
     std::string why;
