@@ -133,21 +133,33 @@ played_inside)
     # The host's window (960x540, at the screen's corner) waits for its player; the guest
     # is the computer. Once it has joined: a drag from the cannon's pivot (about 87, 377
     # in the window) to 173 px right and 100 px up, i.e. 30 degrees and 200 of the 260 px
-    # that mean full power (70 m/s): 53.8 m/s; then Enter fires. The guest leaves at 10 s
-    # of match time, so the window closes (abandoned, after its 1 s --timeout) and saves
-    # the replay, which must hold that aim, that power and the fire, as cannon 0's.
-    timeout 120 "$EXE" host levels/10_duel.json --port 0 --name ada --window --timeout 1 \
-        --close-when-over --record "$WORK/played.json" > "$WORK/h.log" 2>&1 &
+    # that mean full power (70 m/s): 53.8 m/s; then Enter fires. Then the window is closed
+    # (SIGTERM is SDL's quit, as the window's close button): the guest must learn it at
+    # once, not after its time to reconnect, and the host's replay must hold that aim,
+    # that power and the fire, as cannon 0's.
+    timeout 120 "$EXE" host levels/10_duel.json --port 0 --name ada \
+        --record "$WORK/played.json" > "$WORK/h.log" 2>&1 &
     H=$!
     HP=$(port_of "$WORK/h.log") || fail "the host did not start"
-    timeout 120 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob --quit-at-tick 1200 \
-        > "$WORK/j.log" 2>&1 &
+    timeout 120 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob > "$WORK/j.log" 2>&1 &
+    J=$!
     for _ in $(seq 100); do grep -q "bob joined from" "$WORK/h.log" && break; sleep 0.1; done
     grep -q "bob joined from" "$WORK/h.log" || fail "nobody joined"
     sleep 1
     xdotool mousemove 120 360 mousedown 1 sleep 0.2 mousemove 200 300 sleep 0.2 \
         mousemove 260 277 sleep 0.3 mouseup 1 sleep 0.3 key Return || fail "xdotool failed"
+    sleep 1
+    kill -TERM $H
     wait $H
+    SECONDS=0
+    wait $J
+    echo "the guest learnt that the host left within $SECONDS s"
+    [ $SECONDS -le 5 ] || fail "the guest took $SECONDS s to learn that the host left"
+    grep -q "the other side left at tick [0-9]*: ada closed the window" "$WORK/j.log" \
+        || fail "the guest was not told that the host left"
+    grep -q "left the duel at tick [0-9]*: ada closed the window" "$WORK/h.log" \
+        || fail "the host did not say it left"
+    "$EXE" replay verify "$WORK/played.json" > /dev/null || fail "the host's replay does not verify"
     # The first aim, power and fire of the replay (its commands, one field a line).
     first() { sed -n "s/.*\"$1\": *\([0-9.]*\).*/\1/p" "$WORK/played.json" | head -1; }
     AIM=$(first angle_deg) POWER=$(first speed_mps)

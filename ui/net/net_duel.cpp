@@ -108,9 +108,14 @@ void NetDuel::finish(NetResult r, std::string message) {
         // disconnect_later sends what is queued first; a spectator far behind (a busy
         // machine) may still be receiving the stream, so wait for every peer's
         // disconnection, at most kGoodbyeSeconds, before the socket closes.
+        // The other player, once it has said goodbye, may be gone already: nobody would
+        // answer a disconnection, so the link is dropped at once.
         std::size_t open = 0;
         for (PeerId p : {player_, server_})
-            if (p) link_->close(p), ++open;
+            if (p && peerBye_)
+                link_->cut(p);
+            else if (p)
+                link_->close(p), ++open;
         for (PeerId s : spectators_)
             link_->close(s), ++open;
         const auto closing = Clock::now();
@@ -119,6 +124,22 @@ void NetDuel::finish(NetResult r, std::string message) {
             if (e.kind == LinkEvent::Kind::Disconnected) --open;
         }
     }
+}
+
+void NetDuel::leave(const std::string& why) {
+    if (result_ != NetResult::Running) return;
+    if (link_) {
+        flushOutboxes(); // what was played so far reaches the other side first
+        const Message bye = reasonMessage(MessageType::Bye, why);
+        if (o_.host && player_) link_->send(player_, bye);
+        if (o_.host)
+            for (PeerId s : spectators_)
+                link_->send(s, bye);
+        if (!o_.host && server_) link_->send(server_, bye);
+        link_->flush();
+    }
+    const std::uint64_t tick = lockstep_ ? lockstep_->match().tick() : 0;
+    finish(NetResult::Abandoned, "left the duel at tick " + std::to_string(tick) + ": " + why);
 }
 
 void NetDuel::save() {
@@ -499,7 +520,7 @@ bool NetDuel::pump(std::uint32_t waitMs, std::uint64_t maxTicks) {
         return result_ == NetResult::Running;
     }
     if (peerBye_ && !ls.canStep() && ls.pending() == 0)
-        finish(NetResult::Failed, "the peer left at tick " + tick + ": " + peerByeReason_);
+        finish(NetResult::Abandoned, "the other side left at tick " + tick + ": " + peerByeReason_);
     return result_ == NetResult::Running;
 }
 

@@ -72,6 +72,10 @@ class NetDuel {
     bool paused() const { return paused_; }
     /// Saves the recording now (when --record was given).
     void save();
+    /// The local side leaves a duel still running (the window closed, --limit): the other
+    /// side is told at once, with `why`, instead of waiting out its time to reconnect;
+    /// the recording is saved and the result is Abandoned.
+    void leave(const std::string& why);
 
   private:
     using Clock = std::chrono::steady_clock;

@@ -316,7 +316,9 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
         window->present();
     }
     if (!duel) return game::cli::kCheckFailed;
-    if (duel->result() == NetResult::Running) duel->save();
+    duel->leave(chosen.name + " closed the window");
+    for (const std::string& line : duel->takeLog())
+        out << line << std::endl;
     return duel->result() == NetResult::Over ? game::cli::kOk : game::cli::kCheckFailed;
 }
 

@@ -154,7 +154,7 @@ int runNet(const Args& args, std::ostream& out, bool host) {
         printLog();
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
             limitSeconds) {
-            duel.save();
+            duel.leave(o.name + " stopped after --limit " + std::to_string(static_cast<int>(limitSeconds)) + " s");
             log << "stopped after --limit " << limitSeconds << " s\n";
             printLog();
             return game::cli::kCheckFailed;
