@@ -131,6 +131,16 @@ void Lockstep::step() {
     if (t % options_.checkpointEvery == 0) checkpoint();
 }
 
+void Lockstep::markProgress() {
+    const std::uint64_t t = match_->tick();
+    if (!localTurn() || catchingUp() || t <= lastMarkSent_) return;
+    Message mark;
+    mark.type = MessageType::Advance;
+    mark.tick = static_cast<std::uint32_t>(t);
+    lastMarkSent_ = t;
+    send(mark); // the host's spectators follow it too
+}
+
 void Lockstep::checkpoint() {
     const Checkpoint c = checkpointOf(*match_);
     checkpoints_.push_back(c);

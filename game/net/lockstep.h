@@ -61,6 +61,10 @@ class Lockstep {
     /// Runs the computer's turn if due, applies the received commands due now, steps one
     /// tick, checks the checkpoint. Does nothing when !canStep().
     void step();
+    /// In one's own turn, an advance mark at the current tick now rather than at the next
+    /// multiple of advanceEvery: a side about to leave tells how far it played, so the
+    /// other side plays the match to the same tick.
+    void markProgress();
 
     /// A message from the peer (for the host: from the joining player; for a spectator:
     /// from the host). Returns "" or the protocol error that must close the connection.

@@ -153,6 +153,29 @@ TEST(NetLockstep, TheFollowerWaitsForTheMarkAndOutOfOrderInputIsAnError) {
     EXPECT_EQ(joiner.receive(hello), "a hello message in the middle of a match");
 }
 
+// A side about to leave marks how far it played, so the other side plays to that very
+// tick, not to the last multiple of the mark's period.
+TEST(NetLockstep, ALeavingSideMarksItsTickSoTheOtherPlaysToIt) {
+    Lockstep host(duel(), side(0)), joiner(duel(), side(1));
+    for (int i = 0; i < 9; ++i)
+        host.step();
+    ASSERT_EQ(host.match().tick(), 9u);
+    host.markProgress();
+    host.markProgress(); // once: nothing new to mark
+    std::vector<Message> out = host.takeOutbox();
+    ASSERT_EQ(out.size(), 2u) << "the periodic mark at 6 and the one at 9";
+    EXPECT_EQ(out.back().type, MessageType::Advance);
+    EXPECT_EQ(out.back().tick, 9u);
+    for (const Message& m : out)
+        ASSERT_EQ(joiner.receive(m), "");
+    for (int i = 0; i < 100; ++i)
+        joiner.step();
+    EXPECT_EQ(joiner.match().tick(), 9u);
+    EXPECT_EQ(joiner.match().hash(), host.match().hash());
+    joiner.markProgress();
+    EXPECT_TRUE(joiner.takeOutbox().empty()) << "not its turn: it has nothing to mark";
+}
+
 TEST(NetLockstep, ASpectatorFollowsTheHostsStreamToTheSameEnd) {
     Lockstep host(duel(), side(0, true));
     Lockstep joiner(duel(), side(1, true));

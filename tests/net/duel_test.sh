@@ -141,7 +141,8 @@ played_inside)
         --record "$WORK/played.json" > "$WORK/h.log" 2>&1 &
     H=$!
     HP=$(port_of "$WORK/h.log") || fail "the host did not start"
-    timeout 120 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob > "$WORK/j.log" 2>&1 &
+    timeout 120 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob \
+        --record "$WORK/guest.json" > "$WORK/j.log" 2>&1 &
     J=$!
     for _ in $(seq 100); do grep -q "bob joined from" "$WORK/h.log" && break; sleep 0.1; done
     grep -q "bob joined from" "$WORK/h.log" || fail "nobody joined"
@@ -160,6 +161,8 @@ played_inside)
     grep -q "left the duel at tick [0-9]*: ada closed the window" "$WORK/h.log" \
         || fail "the host did not say it left"
     "$EXE" replay verify "$WORK/played.json" > /dev/null || fail "the host's replay does not verify"
+    "$EXE" replay verify "$WORK/guest.json" > /dev/null || fail "the guest's replay does not verify"
+    cmp "$WORK/played.json" "$WORK/guest.json" || fail "the two sides' replays differ"
     # The first aim, power and fire of the replay (its commands, one field a line).
     first() { sed -n "s/.*\"$1\": *\([0-9.]*\).*/\1/p" "$WORK/played.json" | head -1; }
     AIM=$(first angle_deg) POWER=$(first speed_mps)

@@ -128,6 +128,7 @@ void NetDuel::finish(NetResult r, std::string message) {
 
 void NetDuel::leave(const std::string& why) {
     if (result_ != NetResult::Running) return;
+    if (lockstep_) lockstep_->markProgress();
     if (link_) {
         flushOutboxes(); // what was played so far reaches the other side first
         const Message bye = reasonMessage(MessageType::Bye, why);
@@ -465,8 +466,10 @@ bool NetDuel::pump(std::uint32_t waitMs, std::uint64_t maxTicks) {
         onEvent(e);
     if (result_ != NetResult::Running) return false;
     const bool connected = o_.host ? player_ != nullptr : (server_ != nullptr && welcomed_);
-    // After the peer's goodbye the stream is complete: play it out, connected or not.
-    if (lockstep_ && (connected || peerBye_) && !paused_) stepMatch(maxTicks);
+    // After the peer's goodbye the stream is complete: play it out, connected or not, up
+    // to the local player's turn, which nobody would see.
+    const bool peerGone = lockstep_ && peerBye_ && !lockstep_->over() && lockstep_->localTurn();
+    if (lockstep_ && (connected || peerBye_) && !paused_ && !peerGone) stepMatch(maxTicks);
     if (result_ != NetResult::Running) return false;
     flushOutboxes();
     if (!lockstep_ || (!o_.host && !welcomed_ && !paused_)) {
@@ -519,7 +522,7 @@ bool NetDuel::pump(std::uint32_t waitMs, std::uint64_t maxTicks) {
                                         game::hex(ls.match().hash()));
         return result_ == NetResult::Running;
     }
-    if (peerBye_ && !ls.canStep() && ls.pending() == 0)
+    if (peerBye_ && (ls.localTurn() || (!ls.canStep() && ls.pending() == 0)))
         finish(NetResult::Abandoned, "the other side left at tick " + tick + ": " + peerByeReason_);
     return result_ == NetResult::Running;
 }

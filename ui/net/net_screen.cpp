@@ -114,10 +114,10 @@ bool drawForm(Form& f, NetOptions& o, const std::string& error) {
     return go;
 }
 
-/// Whether the local player may aim now: their own turn of a match still on.
+/// Whether the local player may aim now: their own turn of a duel still on.
 bool myTurn(const NetDuel& duel) {
     const auto* ls = duel.lockstep();
-    return ls && ls->localTurn() && !ls->over();
+    return ls && ls->localTurn() && !ls->over() && duel.result() == NetResult::Running;
 }
 
 /// The local player's commands go to the duel (which refuses them outside one's turn).
@@ -161,7 +161,8 @@ void drawStatus(const NetDuel& duel, const std::deque<std::string>& log,
         ImGui::Text("%s (cannon 0) vs %s (cannon 1)%s", duel.playerName(0).c_str(),
                     duel.playerName(1).c_str(), me < 0 ? "   watching" : "");
         ImGui::Text("tick %llu   %s", static_cast<unsigned long long>(ls->match().tick()),
-                    ls->over()        ? "match over"
+                    ls->over()                              ? "match over"
+                    : duel.result() != NetResult::Running ? "the duel has ended"
                     : ls->localTurn() && ls->match().shell() ? "your shot is in the air"
                     : ls->localTurn() ? "your turn: drag or arrows aim, Space or Enter fires"
                     : duel.paused()   ? "connection lost: paused"
@@ -285,6 +286,8 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
             if (match->over())
                 o.banner = match->winner() < 0 ? std::string("draw")
                                                : duel->playerName(match->winner()) + " wins";
+            else if (duel->result() != NetResult::Running)
+                o.banner = duel->message(); // "the other side left at tick 366: ..."
             camera = levelCamera(*match, w, h);
             drawMatchFrame(renderer, view, *match, camera, o);
             if (!audio.silent()) {

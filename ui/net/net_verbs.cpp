@@ -5,6 +5,7 @@
 #include "ui/net/net_screen.h"
 
 #include <chrono>
+#include <csignal>
 #include <iostream>
 
 namespace ui::net {
@@ -12,6 +13,13 @@ namespace ui::net {
 namespace {
 
 using game::cli::Args;
+
+// Ctrl+C (or a polite kill) in a headless duel: leave it with a goodbye at the next pump
+// rather than die and leave the other side waiting for a return.
+volatile std::sig_atomic_t gStopRequested = 0;
+extern "C" void requestStop(int) {
+    gStopRequested = 1;
+}
 
 const char* const kHostUsage =
     R"(usage: artillery host [LEVEL] [--port P] [--bind ADDR] [--name NAME]
@@ -149,17 +157,28 @@ int runNet(const Args& args, std::ostream& out, bool host) {
             log << line << std::endl;
     };
     printLog();
+    gStopRequested = 0;
+    std::signal(SIGINT, requestStop);
+    std::signal(SIGTERM, requestStop);
     // Bounded: every wait inside has its own timeout, and the whole run has --limit.
     while (duel.pump(5, 240)) {
         printLog();
+        if (gStopRequested) {
+            duel.leave(o.name + " stopped");
+            printLog();
+            break;
+        }
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
             limitSeconds) {
-            duel.leave(o.name + " stopped after --limit " + std::to_string(static_cast<int>(limitSeconds)) + " s");
+            duel.leave(o.name + " stopped after --limit " +
+                       std::to_string(static_cast<int>(limitSeconds)) + " s");
             log << "stopped after --limit " << limitSeconds << " s\n";
             printLog();
             return game::cli::kCheckFailed;
         }
     }
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
     printLog();
     if (json) {
         const auto* ls = duel.lockstep();
