@@ -33,6 +33,7 @@ namespace {
 
 /// How long both sides linger after the match to exchange the last checkpoints (s).
 constexpr double kGoodbyeSeconds = 10.0;
+constexpr double kAfterByeSeconds = 1.0;
 
 Message offerFor(const game::Level& level, const std::string& name, std::uint64_t every) {
     Message m;
@@ -108,18 +109,16 @@ void NetDuel::finish(NetResult r, std::string message) {
         // disconnect_later sends what is queued first; a spectator far behind (a busy
         // machine) may still be receiving the stream, so wait for every peer's
         // disconnection, at most kGoodbyeSeconds, before the socket closes.
-        // The other player, once it has said goodbye, may be gone already: nobody would
-        // answer a disconnection, so the link is dropped at once.
+        // The other player, once it has said goodbye, is leaving too: its disconnection
+        // crosses ours, or it has gone and nobody will answer, so it gets a second.
         std::size_t open = 0;
         for (PeerId p : {player_, server_})
-            if (p && peerBye_)
-                link_->cut(p);
-            else if (p)
-                link_->close(p), ++open;
+            if (p) link_->close(p), ++open;
         for (PeerId s : spectators_)
             link_->close(s), ++open;
+        const double wait = peerBye_ && spectators_.empty() ? kAfterByeSeconds : kGoodbyeSeconds;
         const auto closing = Clock::now();
-        while (open > 0 && since(closing) < kGoodbyeSeconds) {
+        while (open > 0 && since(closing) < wait) {
             const LinkEvent e = link_->poll(10);
             if (e.kind == LinkEvent::Kind::Disconnected) --open;
         }

@@ -175,6 +175,24 @@ void drawStatus(const NetDuel& duel, const std::deque<std::string>& log,
     ImGui::End();
 }
 
+/// Esc during a duel: leave it (the other side is told and the duel ends for both) or
+/// stay. True when the player chose to leave; `open` goes false on either choice.
+bool drawLeaveQuestion(bool& open, const std::string& opponent) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y / 2), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::Begin("Leave the duel?", nullptr,
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::Text("%s will be told, and the duel ends for both of you.",
+                opponent.empty() ? "The other side" : opponent.c_str());
+    const bool leave = ImGui::Button("Leave (Enter)") ||
+                       ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false);
+    ImGui::SameLine();
+    if (ImGui::Button("Stay (Esc)")) open = false;
+    ImGui::End();
+    if (leave) open = false;
+    return leave;
+}
+
 } // namespace
 
 int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
@@ -225,12 +243,21 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
     double owed = 0.0;
     long long overFrames = 0;
     bool running = true;
+    bool askingToLeave = false; // Esc in a running duel
+    std::string leaving = " closed the window"; // why, as the other side will read it
     for (long long f = 0; running && (!opt.frames || f < *opt.frames); ++f) {
         SDL_Event e;
         while (SDL_PollEvent(&e)) {
             if (window->toggleFullScreenOn(e)) continue;
             imgui.processEvent(e);
             if (e.type == SDL_QUIT) running = false;
+            if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_ESCAPE && duel &&
+                duel->result() == NetResult::Running) {
+                askingToLeave = !askingToLeave;
+                aim.cancelCharge();
+                continue;
+            }
+            if (askingToLeave) continue; // the question has the keys and the mouse
             // A key typed into the form's fields, or the mouse over a panel, is the
             // panels'; a key let go ends a charge wherever it is.
             const bool forPanels = e.type == SDL_KEYDOWN ? imgui.wantsKeyboard()
@@ -303,6 +330,11 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
             if (drawForm(form, chosen, formError)) begin(chosen);
         } else {
             drawStatus(*duel, log, status);
+            const int me = duel->lockstep() ? duel->lockstep()->localCannon() : 0;
+            if (askingToLeave && drawLeaveQuestion(askingToLeave, duel->playerName(me == 0 ? 1 : 0))) {
+                leaving = " left";
+                running = false; // leaves with a goodbye below
+            }
         }
         imgui.drawLabels(renderer.labels());
         imgui.render();
@@ -319,7 +351,7 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
         window->present();
     }
     if (!duel) return game::cli::kCheckFailed;
-    duel->leave(chosen.name + " closed the window");
+    duel->leave(chosen.name + leaving);
     for (const std::string& line : duel->takeLog())
         out << line << std::endl;
     return duel->result() == NetResult::Over ? game::cli::kOk : game::cli::kCheckFailed;
