@@ -125,18 +125,24 @@ void NetDuel::finish(NetResult r, std::string message) {
     }
 }
 
+void NetDuel::sayGoodbye(const std::string& why) {
+    const Message bye = reasonMessage(MessageType::Bye, why);
+    if (o_.host && player_) link_->send(player_, bye);
+    // Spectators too: behind the stream on a busy machine, they learn that it is complete
+    // and play the rest of it after the host has gone.
+    if (o_.host)
+        for (PeerId s : spectators_)
+            link_->send(s, bye);
+    if (!o_.host && server_) link_->send(server_, bye);
+    link_->flush();
+}
+
 void NetDuel::leave(const std::string& why) {
     if (result_ != NetResult::Running) return;
     if (lockstep_) lockstep_->markProgress();
     if (link_) {
         flushOutboxes(); // what was played so far reaches the other side first
-        const Message bye = reasonMessage(MessageType::Bye, why);
-        if (o_.host && player_) link_->send(player_, bye);
-        if (o_.host)
-            for (PeerId s : spectators_)
-                link_->send(s, bye);
-        if (!o_.host && server_) link_->send(server_, bye);
-        link_->flush();
+        sayGoodbye(why);
     }
     const std::uint64_t tick = lockstep_ ? lockstep_->match().tick() : 0;
     finish(NetResult::Abandoned, "left the duel at tick " + std::to_string(tick) + ": " + why);
@@ -501,15 +507,7 @@ bool NetDuel::pump(std::uint32_t waitMs, std::uint64_t maxTicks) {
         if (!byeSent_) {
             byeSent_ = true;
             overAt_ = Clock::now();
-            const Message bye = reasonMessage(MessageType::Bye, "match over");
-            if (o_.host && player_) link_->send(player_, bye);
-            // Spectators too: behind the stream on a busy machine, they learn that it is
-            // complete and play the rest of it after the host has gone.
-            if (o_.host)
-                for (PeerId s : spectators_)
-                    link_->send(s, bye);
-            if (!o_.host && server_) link_->send(server_, bye);
-            link_->flush();
+            sayGoodbye("match over");
         }
         const int winner = ls.match().winner();
         const std::string who =

@@ -86,6 +86,8 @@ class NetDuel {
     void stepMatch(std::uint64_t maxTicks);
     void flushOutboxes();
     void finish(NetResult r, std::string message);
+    /// Bye, with `why`, to the other player (and, from the host, to the spectators).
+    void sayGoodbye(const std::string& why);
     void closePeer(PeerId peer, const std::string& why);
     void reconnect();
     double since(Clock::time_point t) const;
