@@ -432,7 +432,18 @@ int play(PlayOptions o, std::ostream& out) {
     int code = -1;
     try {
         if (!o.headless && displayAvailable()) code = runWindow(o, report);
-        if (report.networkDuel) return net::runNetWindow({}, out); // its own window (ui/net)
+        // Network duel chosen in the menu: its own window (ui/net), the game's size; when
+        // it closes, back to the level select.
+        while (report.networkDuel && code == game::cli::kOk) {
+            net::NetWindowOptions duel;
+            duel.width = o.width, duel.height = o.height;
+            duel.duel.levelsDir = levelsFolder(); // the game's: its maps, by name
+            duel.duel.levelFile = (std::filesystem::path(duel.duel.levelsDir) / "10_duel.json").string();
+            net::runNetWindow(duel, out);
+            report = {};
+            o.level.clear(), o.replay.clear(), o.demo = o.edit = false;
+            code = runWindow(o, report);
+        }
         if (code < 0) {
             if (!o.headless && !displayAvailable())
                 std::cerr << "artillery play: no display (DISPLAY is not set); drawing headless\n";
