@@ -68,6 +68,16 @@ void pickMap(Form& f) {
     ImGui::EndCombo();
 }
 
+/// The player's replays folder's file for the last network duel ("" without a home).
+std::string lastNetworkDuelFile() {
+    const std::string config = configFolder();
+    if (config.empty()) return "";
+    const std::filesystem::path folder = std::filesystem::path(config) / "replays";
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    return ec ? "" : (folder / "network-last.json").string();
+}
+
 /// Draws the host/join form; true when the player pressed Host, Join or Watch (and
 /// `o` then holds the choice).
 bool drawForm(Form& f, NetOptions& o, const std::string& error) {
@@ -227,7 +237,11 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
     std::unique_ptr<NetDuel> duel;
     std::deque<std::string> log;
     std::string status, formError;
-    auto begin = [&](const NetOptions& o) {
+    auto begin = [&](NetOptions o) {
+        // Every game is a replay: without --record, a duel in the window goes where the
+        // game's own replays go (its Replays list), as the last network duel. Check runs
+        // (--frames) leave nothing behind.
+        if (o.recordFile.empty() && !opt.frames) o.recordFile = lastNetworkDuelFile();
         duel = std::make_unique<NetDuel>(o);
         std::string why;
         if (!duel->start(why)) {

@@ -36,7 +36,8 @@ LEVEL is a duel level (default levels/10_duel.json). You play it in a window; wi
   --name NAME       your name (at most 24 printable characters; default host)
   --commands FILE   a JSON commands list for your cannon, applied at their ticks in your turns
   --autoplay        the computer plays your cannon
-  --record FILE     save the match as a replay (also when it ends by desync or timeout)
+  --record FILE     save the match as a replay (also when it ends by desync or timeout);
+                    a window saves it without: network-last.json in your replays folder
   --timeout S       how long a dropped player may take to come back (default 60 s)
   --wait S          how long to wait for a player to join (default 120 s)
   --window          the window also with --autoplay or --commands. Without LEVEL it
@@ -68,7 +69,7 @@ must have the same content hash; the program version must match too.
   --spectate        watch only (the host's read-only command stream)
   --commands FILE   a JSON commands list for your cannon, applied at their ticks in your turns
   --autoplay        the computer plays your cannon
-  --record FILE     save the match as a replay
+  --record FILE     save the match as a replay (a window: network-last.json without it)
   --levels DIR      where to look for the host's level (default levels)
   --timeout S       how long to keep trying to reconnect after a drop (default 60 s)
   --window          a window also for --autoplay, --commands or --spectate, as for host
