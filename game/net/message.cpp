@@ -27,6 +27,8 @@ const char* messageName(MessageType t) {
         return "checkpoint";
     case MessageType::Bye:
         return "bye";
+    case MessageType::Aiming:
+        return "aiming";
     }
     return "?";
 }
@@ -186,6 +188,11 @@ void writePayload(Writer& w, const Message& m) {
         w.u64(m.bodies);
         w.u64(m.game);
         break;
+    case MessageType::Aiming:
+        w.u8(m.player);
+        w.f64(m.angleDeg);
+        w.f64(m.speedMps);
+        break;
     }
 }
 
@@ -245,6 +252,11 @@ bool readPayload(Reader& r, Message& m, std::string& error) {
         m.particles = r.u64();
         m.bodies = r.u64();
         m.game = r.u64();
+        break;
+    case MessageType::Aiming:
+        m.player = r.u8();
+        m.angleDeg = r.f64();
+        m.speedMps = r.f64();
         break;
     }
     return true;
@@ -307,6 +319,13 @@ std::string validate(const Message& m) {
     case MessageType::Checkpoint:
         if (m.tick > kMaxCommandTick) return what + ": tick is too large";
         return "";
+    case MessageType::Aiming:
+        if (m.player > 1) return what + ": player must be 0 or 1";
+        // The same bounds as the aim and power commands' numbers.
+        if (!std::isfinite(m.angleDeg) || std::fabs(m.angleDeg) > 1e6 ||
+            !std::isfinite(m.speedMps) || std::fabs(m.speedMps) > 1e6)
+            return what + ": angle and power must be finite and within +-1e6";
+        return "";
     }
     return "unknown message type";
 }
@@ -346,7 +365,7 @@ Decoded decode(const std::uint8_t* data, std::size_t size) {
         return d;
     }
     const std::uint8_t type = data[3];
-    if (type < 1 || type > static_cast<std::uint8_t>(MessageType::Bye)) {
+    if (type < 1 || type > static_cast<std::uint8_t>(MessageType::Aiming)) {
         d.error = "message type " + std::to_string(type) + " is unknown";
         return d;
     }

@@ -27,6 +27,9 @@
 //   Handover   the sender's turn ended at tick N (the receiver's turn starts there)
 //   Checkpoint state hashes at a replay checkpoint tick: particles, bodies, game
 //   Bye        the sender leaves; the reason (a desync, the match is over, quit)
+//   Aiming     the aim a player is editing in its turn (its cannon, angle, power): drawn
+//              on the other side as it moves; never a command, never recorded, never
+//              applied to the match (the aim and power commands settle it)
 #pragma once
 
 #include "game/command.h"
@@ -41,7 +44,7 @@ namespace game::net {
 
 inline constexpr std::uint8_t kProtocolVersion = 1;
 /// The program version both sides must run (the simulation's bits depend on it).
-inline constexpr const char* kProgramVersion = "artillery 0.16 (replay format 1)";
+inline constexpr const char* kProgramVersion = "artillery 0.17 (replay format 1)";
 /// Largest packet either side accepts; a longer one is refused before decoding.
 inline constexpr std::size_t kMaxMessageBytes = 512;
 inline constexpr std::size_t kHeaderBytes = 6;
@@ -61,6 +64,7 @@ enum class MessageType : std::uint8_t {
     Handover = 7,
     Checkpoint = 8,
     Bye = 9,
+    Aiming = 10,
 };
 const char* messageName(MessageType t);
 
@@ -79,9 +83,10 @@ struct Message {
         0; ///< Command: index in the match's list; Hello, Welcome: count held
     std::uint32_t tick =
         0; ///< Command, Advance, Handover, Checkpoint; Hello: resume tick; Welcome: host's tick
-    std::uint8_t player = 0;                           ///< Command: whose cannon
+    std::uint8_t player = 0;                           ///< Command, Aiming: whose cannon
     CommandKind kind = CommandKind::Fire;              ///< Command
     double number = 0.0;                               ///< Command: aim angle (deg) or power (m/s)
+    double angleDeg = 0.0, speedMps = 0.0;             ///< Aiming
     std::string text;                                  ///< Command: select's projectile
     std::uint64_t particles = 0, bodies = 0, game = 0; ///< Checkpoint
 };

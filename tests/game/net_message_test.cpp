@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -84,6 +86,31 @@ TEST(NetMessage, EveryTypeRoundTrips) {
     bye.type = MessageType::Bye;
     bye.reason = "desync at tick 240 (particles differ)";
     EXPECT_EQ(roundTrip(bye).reason, bye.reason);
+
+    Message aiming;
+    aiming.type = MessageType::Aiming;
+    aiming.player = 1;
+    aiming.angleDeg = 137.25;
+    aiming.speedMps = 48.5;
+    const Message a = roundTrip(aiming);
+    EXPECT_EQ(a.player, 1);
+    EXPECT_EQ(a.angleDeg, 137.25);
+    EXPECT_EQ(a.speedMps, 48.5);
+    EXPECT_EQ(encode(aiming).size(), kHeaderBytes + 17) << "a cannon and two doubles";
+}
+
+// An aim only drawn still has to be a number a cannon could take, from a duel's cannon.
+TEST(NetMessage, AnAimingMessageIsBoundedLikeTheAimCommands) {
+    Message m;
+    m.type = MessageType::Aiming;
+    m.angleDeg = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(validate(m), "aiming: angle and power must be finite and within +-1e6");
+    m.angleDeg = 45.0;
+    m.speedMps = 2e6;
+    EXPECT_EQ(validate(m), "aiming: angle and power must be finite and within +-1e6");
+    m.speedMps = 40.0;
+    m.player = 2;
+    EXPECT_EQ(validate(m), "aiming: player must be 0 or 1");
 }
 
 std::string errorOf(std::vector<std::uint8_t> bytes) {
@@ -187,7 +214,7 @@ TEST(NetMessage, TheFuzzSeedsDecode) {
         }
         ++files;
     }
-    EXPECT_EQ(files, 8);
+    EXPECT_EQ(files, 9);
 }
 
 } // namespace

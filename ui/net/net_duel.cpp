@@ -242,6 +242,26 @@ void NetDuel::hostHello(PeerId peer, const Message& m) {
         link_->send(peer, c);
 }
 
+void NetDuel::shareAim(std::optional<game::net::AimSeen> editing) {
+    const bool mine = lockstep_ && link_ && result_ == NetResult::Running && lockstep_->localTurn();
+    if (!aimSharing_.due(mine ? editing : std::nullopt, since(started_))) return;
+    Message m;
+    m.type = MessageType::Aiming;
+    m.player = static_cast<std::uint8_t>(lockstep_->localCannon());
+    m.angleDeg = editing->angleDeg;
+    m.speedMps = editing->speedMps;
+    if (o_.host && player_) link_->send(player_, m);
+    if (o_.host)
+        for (PeerId s : spectators_)
+            link_->send(s, m);
+    if (!o_.host && server_) link_->send(server_, m);
+}
+
+std::optional<game::net::AimSeen> NetDuel::peerAim() const {
+    if (!lockstep_) return std::nullopt;
+    return peerAim_.shown(lockstep_->match().currentPlayer(), since(started_));
+}
+
 void NetDuel::hostMessage(PeerId peer, const Message& m) {
     if (greeted_.count(peer)) {
         if (m.type != MessageType::Hello)
@@ -259,6 +279,12 @@ void NetDuel::hostMessage(PeerId peer, const Message& m) {
     if (m.type == MessageType::Bye) {
         peerBye_ = true;
         peerByeReason_ = m.reason;
+        return;
+    }
+    if (m.type == MessageType::Aiming) { // the player's, only drawn: the spectators see it too
+        peerAim_.heard({m.angleDeg, m.speedMps}, 1, since(started_));
+        for (PeerId s : spectators_)
+            link_->send(s, m);
         return;
     }
     if (std::string why = lockstep_->receive(m); !why.empty())
@@ -337,6 +363,10 @@ void NetDuel::joinMessage(const Message& m) {
     if (m.type == MessageType::Bye) {
         peerBye_ = true;
         peerByeReason_ = m.reason;
+        return;
+    }
+    if (m.type == MessageType::Aiming) { // only drawn; a spectator hears both players'
+        peerAim_.heard({m.angleDeg, m.speedMps}, m.player, since(started_));
         return;
     }
     if (std::string why = lockstep_->receive(m); !why.empty()) {

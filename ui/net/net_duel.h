@@ -9,6 +9,7 @@
 
 #include "game/level.h"
 #include "game/net/lockstep.h"
+#include "game/net/peer_aim.h"
 #include "ui/net/enet_link.h"
 
 #include <chrono>
@@ -72,6 +73,11 @@ class NetDuel {
     bool paused() const { return paused_; }
     /// Saves the recording now (when --record was given).
     void save();
+    /// Once a frame: the aim the local player is editing (none: not editing), shared
+    /// with the other side as it moves (game/net/peer_aim.h) in the local turn.
+    void shareAim(std::optional<game::net::AimSeen> editing);
+    /// The other player's aim as they edit it, while it is their turn (for drawing).
+    std::optional<game::net::AimSeen> peerAim() const;
     /// The local side leaves a duel still running (the window closed, --limit): the other
     /// side is told at once, with `why`, instead of waiting out its time to reconnect;
     /// the recording is saved and the result is Abandoned.
@@ -114,6 +120,8 @@ class NetDuel {
     std::optional<Clock::time_point> overAt_;
     bool byeSent_ = false, peerBye_ = false, dropped_ = false;
     std::string peerByeReason_;
+    game::net::AimSharing aimSharing_;
+    game::net::PeerAim peerAim_;
     std::size_t nextScript_ = 0;
 };
 

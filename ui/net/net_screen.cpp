@@ -306,6 +306,11 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
                           holdToAim(typing ? HeldAxes{} : heldArrowKeys(), dt, aim,
                                     duel->lockstep()->match(), myTurn(*duel)),
                           status);
+                // The other side watches the barrel move as it is aimed.
+                std::optional<game::net::AimSeen> editing;
+                if (myTurn(*duel) && aim.editing())
+                    editing = game::net::AimSeen{aim.pending().angleDeg, aim.pending().speedMps};
+                duel->shareAim(editing);
             }
         }
         const int w = window->width(), h = window->height();
@@ -323,6 +328,8 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
             o.fullPreview = false;
             o.solutionHint = false;
             if (mine && aim.editing()) o.pending = aim.pending();
+            if (!mine)
+                if (const auto theirs = duel->peerAim()) o.pending = PendingAim{theirs->angleDeg, theirs->speedMps};
             o.charge = aim.chargeFraction();
             if (match->over())
                 o.banner = match->winner() < 0 ? std::string("draw")
