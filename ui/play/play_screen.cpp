@@ -1,6 +1,7 @@
 #include "ui/platform/gl_setup.h"
 #include "ui/play/play_screen.h"
 
+#include "ui/game/tick_budget.h"
 #include "ui/platform/sdl_window.h"
 #include "ui/render/design_canvas.h"
 #include "ui/render/gl.h"
@@ -32,6 +33,7 @@ PlayScreen::PlayScreen(GLContext& context, SdlWindow* window, const PlayScreenDe
     : context_(context), glLoaded_(loadGLOrThrow(context)), imgui_(context, window), def_(def),
       scene_(def.world, def.demo), clock_(clockFor(def.world)),
       camera_(demoCamera(scene_, context.width(), context.height())) {
+    if (window) tickBudget_ = kWindowTickBudgetSeconds;
     stats_.context = context.name();
     view_ = def_.view;
     def_.msaaSamples = autoSamples(def_.msaaSamples);
@@ -65,15 +67,16 @@ void PlayScreen::simulate(double wallSeconds) {
         clock_.requestSingleStep();
         time_.stepRequested = false;
     }
-    const int ticks = clock_.advance(wallSeconds);
     double physicsUs = 0.0;
-    for (int i = 0; i < ticks; ++i) {
-        // The state before the last tick is what the frame blends from.
-        previous_.capture(scene_.world.particles);
-        scene_.tick();
-        observeTick();
-        physicsUs += scene_.world.profile().totalUs;
-    }
+    // In a window, slow motion rather than a freeze when a tick costs more than it
+    // simulates (tick_budget.h).
+    const int ticks = runTicksWithin(clock_, clock_.advance(wallSeconds), tickBudget_, [&] {
+                          // The state before the last tick is what the frame blends from.
+                          previous_.capture(scene_.world.particles);
+                          scene_.tick();
+                          observeTick();
+                          physicsUs += scene_.world.profile().totalUs;
+                      }).ran;
     stats_.ticksThisFrame = ticks;
     if (ticks > 0) {
         const phys::StepProfile& p = scene_.world.profile();

@@ -19,6 +19,7 @@
 #include "ui/render/world_view.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 union SDL_Event;
@@ -87,6 +88,7 @@ class PlayScreen final : public Screen {
     PlayScreenDef def_;
     DemoScene scene_;
     phys::FixedClock clock_;
+    std::optional<double> tickBudget_; ///< wall s a frame may spend on ticks (window only)
     Camera camera_;
     bool cameraMoved_ = false; ///< the player zoomed or panned; keep it on resize
     bool dragging_ = false;
