@@ -185,6 +185,40 @@ void drawStatus(const NetDuel& duel, const std::deque<std::string>& log,
     ImGui::End();
 }
 
+/// Once a frame: held keys move the local player's aim (settled as commands when let
+/// go), and the aim being edited goes to the other side, which watches the barrel move.
+void holdTheAim(NetDuel& duel, AimInput& aim, double dt, bool typing, std::string& status) {
+    const bool mine = myTurn(duel);
+    submitAll(duel,
+              holdToAim(typing ? HeldAxes{} : heldArrowKeys(), dt, aim, duel.lockstep()->match(), mine),
+              status);
+    std::optional<game::net::AimSeen> editing;
+    if (mine && aim.editing()) editing = game::net::AimSeen{aim.pending().angleDeg, aim.pending().speedMps};
+    duel.shareAim(editing);
+}
+
+/// What the match view draws: in one's own turn the aim being edited and the launch arc
+/// (never the whole path, nor the computer's hint: both players see the same aids); in
+/// theirs, their aim as they edit it; the winner, or why the duel ended.
+MatchViewOptions duelView(const NetDuel& duel, const AimInput& aim, bool preview) {
+    const game::Match& match = duel.lockstep()->match();
+    MatchViewOptions o;
+    o.playerNames = {duel.playerName(0), duel.playerName(1)};
+    const bool mine = myTurn(duel);
+    o.trajectoryPreview = preview && mine;
+    o.fullPreview = false;
+    o.solutionHint = false;
+    if (mine && aim.editing()) o.pending = aim.pending();
+    if (!mine)
+        if (const auto theirs = duel.peerAim()) o.pending = PendingAim{theirs->angleDeg, theirs->speedMps};
+    o.charge = aim.chargeFraction();
+    if (match.over())
+        o.banner = match.winner() < 0 ? std::string("draw") : duel.playerName(match.winner()) + " wins";
+    else if (duel.result() != NetResult::Running)
+        o.banner = duel.message(); // "the other side left at tick 366: ..."
+    return o;
+}
+
 /// Esc during a duel: leave it (the other side is told and the duel ends for both) or
 /// stay. True when the player chose to leave; `open` goes false on either choice.
 bool drawLeaveQuestion(bool& open, const std::string& opponent) {
@@ -300,18 +334,7 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
             }
             if (duel->result() != NetResult::Running && opt.closeWhenOver && ++overFrames > 30)
                 running = false;
-            if (duel->lockstep()) {
-                const bool typing = imgui.wantsKeyboard();
-                submitAll(*duel,
-                          holdToAim(typing ? HeldAxes{} : heldArrowKeys(), dt, aim,
-                                    duel->lockstep()->match(), myTurn(*duel)),
-                          status);
-                // The other side watches the barrel move as it is aimed.
-                std::optional<game::net::AimSeen> editing;
-                if (myTurn(*duel) && aim.editing())
-                    editing = game::net::AimSeen{aim.pending().angleDeg, aim.pending().speedMps};
-                duel->shareAim(editing);
-            }
+            if (duel->lockstep()) holdTheAim(*duel, aim, dt, imgui.wantsKeyboard(), status);
         }
         const int w = window->width(), h = window->height();
         imgui.newFrame(dt);
@@ -319,25 +342,8 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
         const game::Match* match = duel && duel->lockstep() ? &duel->lockstep()->match() : nullptr;
         if (match) {
             view.observe(*match);
-            MatchViewOptions o;
-            o.playerNames = {duel->playerName(0), duel->playerName(1)};
-            // In one's own turn, the aim being edited and the launch arc (never the
-            // whole path, nor the computer's hint: both players see the same aids).
-            const bool mine = myTurn(*duel);
-            o.trajectoryPreview = preview && mine;
-            o.fullPreview = false;
-            o.solutionHint = false;
-            if (mine && aim.editing()) o.pending = aim.pending();
-            if (!mine)
-                if (const auto theirs = duel->peerAim()) o.pending = PendingAim{theirs->angleDeg, theirs->speedMps};
-            o.charge = aim.chargeFraction();
-            if (match->over())
-                o.banner = match->winner() < 0 ? std::string("draw")
-                                               : duel->playerName(match->winner()) + " wins";
-            else if (duel->result() != NetResult::Running)
-                o.banner = duel->message(); // "the other side left at tick 366: ..."
             camera = levelCamera(*match, w, h);
-            drawMatchFrame(renderer, view, *match, camera, o);
+            drawMatchFrame(renderer, view, *match, camera, duelView(*duel, aim, preview));
             if (!audio.silent()) {
                 sound.setView({camera.visibleMin().x, camera.visibleMax().x});
                 sound.observe(*match);
