@@ -86,7 +86,7 @@ bool drawForm(Form& f, NetOptions& o, const std::string& error) {
     ImGui::Begin("Network duel", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize);
     ImGui::TextWrapped(
         "Host a duel (you play cannon 0) or join one (cannon 1). Both sides need the "
-        "same program and the same level file.");
+        "same program and the same level file. Esc closes.");
     ImGui::InputText("your name", f.name, sizeof f.name);
     pickMap(f);
     ImGui::InputText("level file (host)", f.level, sizeof f.level);
@@ -306,6 +306,9 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
                 continue;
             }
             if (askingToLeave) continue; // the question has the keys and the mouse
+            if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_ESCAPE && !duel &&
+                !imgui.wantsKeyboard())
+                running = false; // Esc on the form: back (to the level select, if from there)
             // A key typed into the form's fields, or the mouse over a panel, is the
             // panels'; a key let go ends a charge wherever it is.
             const bool forPanels = e.type == SDL_KEYDOWN ? imgui.wantsKeyboard()
