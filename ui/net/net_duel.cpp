@@ -125,15 +125,18 @@ void NetDuel::finish(NetResult r, std::string message) {
     }
 }
 
-void NetDuel::sayGoodbye(const std::string& why) {
-    const Message bye = reasonMessage(MessageType::Bye, why);
-    if (o_.host && player_) link_->send(player_, bye);
-    // Spectators too: behind the stream on a busy machine, they learn that it is complete
-    // and play the rest of it after the host has gone.
+void NetDuel::sendToOthers(const Message& m) {
+    if (o_.host && player_) link_->send(player_, m);
     if (o_.host)
         for (PeerId s : spectators_)
-            link_->send(s, bye);
-    if (!o_.host && server_) link_->send(server_, bye);
+            link_->send(s, m);
+    if (!o_.host && server_) link_->send(server_, m);
+}
+
+void NetDuel::sayGoodbye(const std::string& why) {
+    // Spectators too: behind the stream on a busy machine, they learn that it is complete
+    // and play the rest of it after the host has gone.
+    sendToOthers(reasonMessage(MessageType::Bye, why));
     link_->flush();
 }
 
@@ -250,11 +253,7 @@ void NetDuel::shareAim(std::optional<game::net::AimSeen> editing) {
     m.player = static_cast<std::uint8_t>(lockstep_->localCannon());
     m.angleDeg = editing->angleDeg;
     m.speedMps = editing->speedMps;
-    if (o_.host && player_) link_->send(player_, m);
-    if (o_.host)
-        for (PeerId s : spectators_)
-            link_->send(s, m);
-    if (!o_.host && server_) link_->send(server_, m);
+    sendToOthers(m);
 }
 
 std::optional<game::net::AimSeen> NetDuel::peerAim() const {

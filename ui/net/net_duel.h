@@ -92,7 +92,9 @@ class NetDuel {
     void stepMatch(std::uint64_t maxTicks);
     void flushOutboxes();
     void finish(NetResult r, std::string message);
-    /// Bye, with `why`, to the other player (and, from the host, to the spectators).
+    /// To the other player, and from the host to the spectators too.
+    void sendToOthers(const game::net::Message& m);
+    /// Bye, with `why`, to the others.
     void sayGoodbye(const std::string& why);
     void closePeer(PeerId peer, const std::string& why);
     void reconnect();
