@@ -27,6 +27,19 @@ void submit(game::Match& m, const std::vector<game::Command>& commands) {
         ASSERT_EQ(m.apply(c), "") << game::commandName(c.kind);
 }
 
+/// A drag by the window's pointer (points) from `from` to `to`, the cannon's pivot at
+/// `pivot` (framebuffer pixels, `scale` of them a point): the commands it ends with.
+std::vector<game::Command> drag(ui::AimInput& aim, const game::Match& m, phys::Vec2 pivot,
+                                phys::Vec2 scale, phys::Vec2 from, phys::Vec2 to) {
+    std::vector<game::Command> out;
+    EXPECT_TRUE(ui::dragToAim(test_events::button(SDL_MOUSEBUTTONDOWN, from), aim, m, true, pivot,
+                              scale, out));
+    EXPECT_TRUE(ui::dragToAim(test_events::motion(to), aim, m, true, pivot, scale, out));
+    EXPECT_TRUE(ui::dragToAim(test_events::button(SDL_MOUSEBUTTONUP, to), aim, m, true, pivot,
+                              scale, out));
+    return out;
+}
+
 std::vector<CommandKind> kinds(const std::vector<game::Command>& commands) {
     std::vector<CommandKind> k;
     for (const game::Command& c : commands)
@@ -73,13 +86,8 @@ TEST(TurnControls, ADragAimsAndEnterFiresItThroughAMatch) {
     ui::AimInput aim;
     aim.sync(m.cannon());
     const phys::Vec2 pivot{200, 400}, scale{1, 1};
-    std::vector<game::Command> out;
-    using test_events::button;
-    using test_events::motion;
     // 60 degrees, 207.8 px of the 260 that mean full power.
-    EXPECT_TRUE(ui::dragToAim(button(SDL_MOUSEBUTTONDOWN, pivot), aim, m, true, pivot, scale, out));
-    EXPECT_TRUE(ui::dragToAim(motion({304, 220}), aim, m, true, pivot, scale, out));
-    EXPECT_TRUE(ui::dragToAim(button(SDL_MOUSEBUTTONUP, {304, 220}), aim, m, true, pivot, scale, out));
+    std::vector<game::Command> out = drag(aim, m, pivot, scale, pivot, {304, 220});
     ASSERT_EQ(kinds(out), (std::vector{CommandKind::Aim, CommandKind::Power}));
     submit(m, out);
     EXPECT_NEAR(m.cannon().angleDeg, 60.0, 0.05);
@@ -91,9 +99,10 @@ TEST(TurnControls, ADragAimsAndEnterFiresItThroughAMatch) {
     EXPECT_TRUE(m.shell());
     // A drag while the shell flies aims nothing; motion without a drag is not the drag's.
     out.clear();
-    EXPECT_TRUE(ui::dragToAim(button(SDL_MOUSEBUTTONDOWN, pivot), aim, m, true, pivot, scale, out));
+    EXPECT_TRUE(ui::dragToAim(test_events::button(SDL_MOUSEBUTTONDOWN, pivot), aim, m, true, pivot,
+                              scale, out));
     EXPECT_FALSE(aim.dragging());
-    EXPECT_FALSE(ui::dragToAim(motion({300, 300}), aim, m, true, pivot, scale, out));
+    EXPECT_FALSE(ui::dragToAim(test_events::motion({300, 300}), aim, m, true, pivot, scale, out));
     EXPECT_TRUE(out.empty());
 }
 
@@ -103,11 +112,7 @@ TEST(TurnControls, OnAHighDpiScreenThePointerIsInFramebufferPixels) {
     aim.sync(m.cannon());
     // The pivot at (400, 800) framebuffer pixels is (200, 400) in window points at 2x.
     const phys::Vec2 pivot{400, 800}, scale{2, 2};
-    std::vector<game::Command> out;
-    ui::dragToAim(test_events::button(SDL_MOUSEBUTTONDOWN, {200, 400}), aim, m, true, pivot, scale, out);
-    ui::dragToAim(test_events::motion({265, 335}), aim, m, true, pivot, scale, out); // 130 px, 45 deg
-    ui::dragToAim(test_events::button(SDL_MOUSEBUTTONUP, {265, 335}), aim, m, true, pivot, scale, out);
-    submit(m, out);
+    submit(m, drag(aim, m, pivot, scale, {200, 400}, {265, 335})); // 130 px at 45 degrees
     EXPECT_NEAR(m.cannon().angleDeg, 45.0, 0.05);
     EXPECT_NEAR(m.cannon().speedMps, m.cannon().def.maxSpeedMps * std::hypot(130.0, 130.0) / 260.0,
                 0.05);
