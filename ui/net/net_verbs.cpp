@@ -23,7 +23,8 @@ extern "C" void requestStop(int) {
 
 const char* const kHostUsage =
     R"(usage: artillery host [LEVEL] [--port P] [--bind ADDR] [--name NAME]
-           [--commands FILE | --autoplay] [--record FILE] [--timeout S] [--wait S] [--json]
+           [--commands FILE | --autoplay] [--record FILE] [--timeout S] [--wait S]
+           [--window] [--json]
 
 Hosts a duel over the network (ENet over UDP): the host plays cannon 0, the player who
 joins plays cannon 1, spectators may watch. Lockstep on the command stream: each side
@@ -32,9 +33,10 @@ LEVEL is a duel level (default levels/10_duel.json). You play it in a window; wi
 --autoplay or --commands the cannon is played for you, without one unless --window.
 
   --port P          UDP port (default 7777; 0 picks a free one, printed)
-  --bind ADDR       address to listen on (default 127.0.0.1; 0.0.0.0 for every interface)
+  --bind ADDR       address to listen on (default 127.0.0.1; 0.0.0.0: every interface)
   --name NAME       your name (at most 24 printable characters; default host)
-  --commands FILE   a JSON commands list for your cannon, applied at their ticks in your turns
+  --commands FILE   a JSON list of commands for your cannon, applied at their ticks
+                    in your turns
   --autoplay        the computer plays your cannon
   --record FILE     save the match as a replay (also when it ends by desync or timeout);
                     a window saves it without: network-last.json in your replays folder
@@ -57,7 +59,8 @@ Exit: 0 the match was played to the end, 1 it was not (desync, abandoned, refuse
 )";
 
 const char* const kJoinUsage = R"(usage: artillery join HOST[:P] [--name NAME] [--spectate]
-           [--commands FILE | --autoplay] [--record FILE] [--levels DIR] [--timeout S] [--json]
+           [--commands FILE | --autoplay] [--record FILE] [--levels DIR] [--timeout S]
+           [--window] [--json]
 
 Joins a duel hosted with `artillery host` and plays cannon 1 in a window (with
 --autoplay or --commands without one, unless --window), or watches it with --spectate.
@@ -67,7 +70,8 @@ must have the same content hash; the program version must match too.
   HOST[:P]          the host's address and port (default port 7777)
   --name NAME       your name (default guest)
   --spectate        watch only (the host's read-only command stream)
-  --commands FILE   a JSON commands list for your cannon, applied at their ticks in your turns
+  --commands FILE   a JSON list of commands for your cannon, applied at their ticks
+                    in your turns
   --autoplay        the computer plays your cannon
   --record FILE     save the match as a replay (a window: network-last.json without it)
   --levels DIR      where to look for the host's level (default levels)
