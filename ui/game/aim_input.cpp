@@ -123,4 +123,15 @@ std::optional<game::Command> AimInput::select(const game::CannonState& cannon, s
     return c;
 }
 
+std::optional<game::Command> AimInput::selectNext(const game::CannonState& cannon) {
+    if (cannon.def.projectiles.empty()) return std::nullopt;
+    return select(cannon, (cannon.projectile + 1) % cannon.def.projectiles.size());
+}
+
+game::Command AimInput::endTurn() {
+    game::Command c;
+    c.kind = game::CommandKind::EndTurn;
+    return c;
+}
+
 } // namespace ui

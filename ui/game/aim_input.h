@@ -82,6 +82,10 @@ class AimInput {
 
     /// The select command for projectile `index` (0-based) of the cannon, if it has one.
     static std::optional<game::Command> select(const game::CannonState& cannon, std::size_t index);
+    /// The select command for the cannon's next projectile (after the last, the first).
+    static std::optional<game::Command> selectNext(const game::CannonState& cannon);
+    /// The end_turn command.
+    static game::Command endTurn();
 
   private:
     /// Space has been held for less than a tap.

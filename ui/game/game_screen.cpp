@@ -717,11 +717,7 @@ void GameScreen::drawPanels() {
             if (ImGui::Button("Back to the editor (F4)")) choice.continueEditing = true;
             ImGui::End();
         }
-        if (req.endTurn && humanTurn()) {
-            game::Command c;
-            c.kind = game::CommandKind::EndTurn;
-            submit(c);
-        }
+        if (req.endTurn && humanTurn()) submit(AimInput::endTurn());
         const PendingAim shownAim = aim_.editing() ? aim_.pending() : PendingAim{m.cannon().angleDeg, m.cannon().speedMps};
         if (auto d = statsPanel_.panel(m, shownAim)) submit(settingCommands(m.world().def(), *d));
         if (settings_.physicsPanel) {
@@ -1061,16 +1057,10 @@ bool GameScreen::handleEvent(const SDL_Event& e) {
         if (humanTurn()) submit(aim_.fire(m.cannon()));
         break;
     case PadAction::EndTurn:
-        if (humanTurn()) {
-            game::Command end;
-            end.kind = game::CommandKind::EndTurn;
-            submit(end);
-        }
+        if (humanTurn()) submit(AimInput::endTurn());
         break;
     case PadAction::NextProjectile:
-        if (auto s = AimInput::select(m.cannon(), (m.cannon().projectile + 1) %
-                                                      m.cannon().def.projectiles.size()))
-            submit(*s);
+        if (auto s = AimInput::selectNext(m.cannon())) submit(*s);
         break;
     case PadAction::Pause:
         overlay_ = overlay_ == Overlay::Pause ? Overlay::None : Overlay::Pause;

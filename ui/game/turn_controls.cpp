@@ -16,13 +16,10 @@ std::optional<std::vector<game::Command>> pressTurnKey(SDL_Keycode key, AimInput
     case SDLK_KP_ENTER:
     case SDLK_f:
         return aim.fire(c);
-    case SDLK_e: {
-        game::Command end;
-        end.kind = game::CommandKind::EndTurn;
-        return std::vector<game::Command>{end};
-    }
+    case SDLK_e:
+        return std::vector<game::Command>{AimInput::endTurn()};
     case SDLK_TAB:
-        return selected(AimInput::select(c, (c.projectile + 1) % c.def.projectiles.size()));
+        return selected(AimInput::selectNext(c));
     default:
         if (key >= SDLK_1 && key <= SDLK_8)
             return selected(AimInput::select(c, static_cast<std::size_t>(key - SDLK_1)));
