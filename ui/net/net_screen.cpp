@@ -228,7 +228,8 @@ bool drawLeaveQuestion(bool& open, const std::string& opponent) {
                  ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::Text("%s will be told, and the duel ends for both of you.",
                 opponent.empty() ? "The other side" : opponent.c_str());
-    const bool leave = ImGui::Button("Leave (Enter)"); // Enter: in the event loop
+    const bool leave = ImGui::Button("Leave (Enter)") ||
+                       ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false);
     ImGui::SameLine();
     if (ImGui::Button("Stay (Esc)")) open = false;
     ImGui::End();
@@ -304,15 +305,7 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
                 aim.cancelCharge();
                 continue;
             }
-            // The question has the keys and the mouse. Enter is read from the event, not
-            // from ImGui's key state: ImGui 1.86 misses a press and release that arrive
-            // in one frame (a quick tap on a slow frame).
-            if (askingToLeave && e.type == SDL_KEYDOWN &&
-                (e.key.keysym.sym == SDLK_RETURN || e.key.keysym.sym == SDLK_KP_ENTER)) {
-                leaving = " left";
-                running = false; // leaves with a goodbye below
-            }
-            if (askingToLeave) continue;
+            if (askingToLeave) continue; // the question has the keys and the mouse
             if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_ESCAPE && !duel &&
                 !imgui.wantsKeyboard())
                 running = false; // Esc on the form: back (to the level select, if from there)

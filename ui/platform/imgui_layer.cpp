@@ -107,6 +107,7 @@ bool ImGuiLayer::processEvent(const SDL_Event& event) {
     // Headless there is no SDL backend to take events (tests hand the screen synthetic
     // ones): they are not ImGui's.
     if (!window_) return false;
+    if (taps_.holdBack(event)) return true; // a quick tap's release: next frame
     return ImGui_ImplSDL2_ProcessEvent(&event);
 }
 
@@ -152,6 +153,8 @@ void ImGuiLayer::newFrame(double dtSeconds) {
     gPanelScale = scale_;
     ImGui_ImplOpenGL3_NewFrame();
     if (window_) {
+        for (const SDL_Event& release : taps_.releasesDue())
+            ImGui_ImplSDL2_ProcessEvent(&release);
         ImGui_ImplSDL2_NewFrame();
     } else {
         ImGuiIO& io = ImGui::GetIO();

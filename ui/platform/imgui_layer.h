@@ -4,6 +4,7 @@
 #pragma once
 
 #include "ui/platform/gl_context.h"
+#include "ui/platform/key_taps.h"
 #include "ui/render/pixel_rect.h"
 #include "ui/render/renderer2d.h"
 
@@ -73,6 +74,7 @@ class ImGuiLayer {
     SdlWindow* window_;
     float scale_ = 0.0f;   ///< the panels' scale (design_canvas.h), 0 before the first
     Vec2 layoutDisplay_{}; ///< the display the panels are placed for, in points
+    KeyTaps taps_;         ///< quick taps' releases, held back a frame
 };
 
 } // namespace ui
