@@ -50,6 +50,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace phys {
@@ -279,7 +280,40 @@ class ParticleCollisions {
     };
     std::vector<Deferred> deferred_;
     void reportDeferred(const ParticleSet& set);
-    std::vector<std::uint32_t> contactOrder_, level_, bandStart_, projectOrder_;
+    std::vector<std::uint32_t> contactOrder_, level_, bandStart_;
+    /// The sweeps over contacts_ (relax_sweeps.cpp): warm start, velocity, position.
+    void sweepContacts(ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def);
+    /// The inverse masses of contact c under shock propagation in its band (masses()).
+    std::pair<double, double> shockMasses(const RelaxContact& c, std::uint32_t band) const {
+        double wa = c.wa, wb = c.wb;
+        if (c.support == 1 && c.b != kNoParticle && level_[c.b] < band) wb = 0.0;
+        if (c.support == -1 && level_[c.a] < band) wa = 0.0;
+        return {wa, wb};
+    }
+    /// A contact's velocity step as the sweeps read it, in contactOrder_: one row serves
+    /// the sweeps over all contacts and, with the masses of its band, the banded ones.
+    /// Particle indices point into the sweeps' copies of the velocities, which have two
+    /// slots past the particles: kStill, at rest (what a shape "moves" at), and kSink,
+    /// where a push on something immovable goes, so the loop has no branch for either.
+    struct ImpulseRow {
+        std::uint32_t a = 0, readB = 0;      ///< particles (readB: kStill for a shape)
+        std::uint32_t pushB = 0, shockB = 0; ///< where b's impulse goes: all, banded
+        double nx = 0.0, ny = 0.0, closing = 0.0, friction = 0.0;
+        double wa = 0.0, wb = 0.0, sum = 0.0;                ///< inverse masses, wa + wb
+        double shockWa = 0.0, shockWb = 0.0, shockSum = 0.0; ///< the same in its band
+        double normalImpulse = 0.0, tangentImpulse = 0.0;    ///< accumulated, N s
+    };
+    /// A contact's position step, in the order it is projected.
+    struct ProjectRow {
+        std::uint32_t a = 0, b = 0;           ///< b: its particle, or kNoParticle for a shape
+        std::uint32_t pushB = 0, contact = 0; ///< where b's push goes; index in contacts_
+        double reach = 0.0, cap = 0.0;        ///< radii summed; the most it moves at once
+        double fa = 0.0, fb = 0.0;            ///< each side's share of the push
+    };
+    std::vector<ImpulseRow> impulseRows_;
+    std::vector<ProjectRow> projectRows_, shockProjectRows_;
+    std::vector<std::uint32_t> shockProjectStart_;    ///< each band's first shock row
+    std::vector<Vec2> sweepVelocity_, sweepPosition_; ///< the particles', then kStill, kSink
     /// Sweeps over each band, from the ground up, with the bands below immovable.
     static constexpr int kShockSweeps = 4;
     /// Contacts up to this gap, in radii (of the pair's sum), are constraints too.
