@@ -42,8 +42,10 @@ struct CollisionDef {
     bool redetectChangesOnly = true;
     /// Resting contacts between two free particles (a pile, a stack) go to the contact
     /// solver at the end of the step, which settles them all at once, instead of pass
-    /// after pass settling them one layer at a time. Impacts, and resting contacts with
-    /// static shapes and immovable particles, stay exact at their time of impact.
+    /// after pass settling them one layer at a time; so does a sleeper lying on a free
+    /// particle (which carries it).
+    /// Impacts, and the other resting contacts with static shapes and immovable
+    /// particles, stay exact at their time of impact.
     bool restingPairsToSolver = true;
     /// Sweeps of the end-of-step contact solver (sequential impulses, then projection),
     /// which settles the contacts the passes leave: of velocity impulses (>= 1) and of

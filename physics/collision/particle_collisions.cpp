@@ -478,7 +478,11 @@ ParticleCollisions::Resolution ParticleCollisions::resolvePair(const Candidate& 
     double wj = moving(set, j) ? set.invMass[j] : 0.0;
     {
         // Classify at the time of impact before changing anything: a resting contact
-        // between two free particles (a pile) is left to the contact solver.
+        // between two free particles (a pile) is left to the contact solver. So is a
+        // sleeper lying on a free particle: that is weight the free one carries, not a
+        // surface it rests on. Held up by it as by a ceiling, pushed down into what lies
+        // under it (often another sleeper) and up again, the free one kept the passes busy
+        // for all their number, every step, while part of a pile slept.
         const PathMotion pi = path_[i], pj = path_[j];
         const Vec2 d = pi.position(*toi) - pj.position(*toi);
         const double L = length(d);
@@ -486,7 +490,10 @@ ParticleCollisions::Resolution ParticleCollisions::resolvePair(const Candidate& 
         const Vec2 vrel = (sv_[i] + sa_[i] * (*toi - pi.t0)) - (sv_[j] + sa_[j] * (*toi - pj.t0));
         const double an = std::min(dot(pi.a - pj.a, n), dot(sa_[i] - sa_[j], n));
         const double vn = dot(vrel, n);
-        if (def.restingPairsToSolver && wi > 0.0 && wj > 0.0 &&
+        const bool bothFree = wi > 0.0 && wj > 0.0;
+        const bool underSleeper =
+            onSleeper(set, i, j, wi, wj) && dot(wi > 0.0 ? n : -n, up_) < -kSupport;
+        if (def.restingPairsToSolver && (bothFree || underSleeper) &&
             -vn < restingLimit(i, j, an, def, h)) {
             // Only its first deferral is reported (reportDeferred), and a carried pair
             // has one from a pass before.
@@ -587,6 +594,7 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
     buildPaths(set, h);
     bool converged = false;
     deferred_.clear();
+    up_ = up;
     for (int pass = 0; pass < def.maxPasses; ++pass) {
         if (pass == 0 || !def.redetectChangesOnly || !detectChanges(set, shapes, def, h))
             detect(set, shapes, def, h);

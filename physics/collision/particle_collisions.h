@@ -26,10 +26,11 @@
 // does not slide. A particle resting on a surface so stays exactly where it is, with no
 // jitter and no creep. A resting pair of free particles (a stack, a pile) goes to the
 // contact solver, which settles a pile in one step where passes would settle it one
-// layer per pass. A particle that spends sleepTime in resting contact at a mean velocity
-// below sleepSpeed (it strays less than sleepSpeed * sleepTime from where the time
-// started) sleeps (kSleeping) until an impulse, a blast or a command wakes it; sleepers
-// are immovable to the others.
+// layer per pass, as does a sleeper lying on a free particle (weight that particle
+// carries, not a surface it rests on). A particle that spends sleepTime in resting
+// contact at a mean velocity below sleepSpeed (it strays less than sleepSpeed *
+// sleepTime from where the time started) sleeps (kSleeping) until an impulse, a blast
+// or a command wakes it; sleepers are immovable to the others.
 // Particles tied to springs or constraints do not sleep.
 //
 // The broad phase runs on fattened boxes and its pairs are kept while every particle's
@@ -173,6 +174,15 @@ class ParticleCollisions {
                              double tickTime);
     Resolution resolvePair(const Candidate& c, ParticleSet& set, const MaterialTable& mats,
                            const CollisionDef& def, double h, double tickTime);
+    /// One of the pair is free and the other asleep (immovable until woken).
+    static bool onSleeper(const ParticleSet& set, std::size_t i, std::size_t j, double wi,
+                          double wj) {
+        auto asleep = [&](std::size_t k) {
+            return (set.flags[k] & kSleeping) && set.invMass[k] > 0.0;
+        };
+        return (wi > 0.0 && asleep(j)) || (wj > 0.0 && asleep(i));
+    }
+    Vec2 up_; ///< impulsePhase's up, for resolvePair
     void rebase(std::size_t i, double t);
     void support(std::size_t i, Vec2 n, Vec2 vNew, const PairProperties& pp, double remaining);
     void finish(ParticleSet& set, double h);
@@ -299,8 +309,8 @@ class ParticleCollisions {
         std::uint32_t a = 0, readB = 0;      ///< particles (readB: kStill for a shape)
         std::uint32_t pushB = 0, shockB = 0; ///< where b's impulse goes: all, banded
         double nx = 0.0, ny = 0.0, closing = 0.0, friction = 0.0;
-        double wa = 0.0, wb = 0.0, sum = 0.0;                ///< inverse masses, wa + wb
-        double shockWa = 0.0, shockWb = 0.0, shockSum = 0.0; ///< the same in its band
+        double wa = 0.0, wb = 0.0, mass = 0.0; ///< inverse masses; 1 / (wa + wb), or 0
+        double shockWa = 0.0, shockWb = 0.0, shockMass = 0.0; ///< the same in its band
         double normalImpulse = 0.0, tangentImpulse = 0.0;    ///< accumulated, N s
     };
     /// A contact's position step, in the order it is projected.

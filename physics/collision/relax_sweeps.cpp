@@ -3,17 +3,17 @@
 // same way. Each contact is visited some twenty times a sub-step, so the sweeps run on a
 // layout made for the loop, built once:
 //   rows      one row per contact and phase, in the order the phase visits them, holding
-//             what the visit reads (normal, closing speed, friction, the inverse masses
-//             and their sum, each side's share of a push); the banded masses of shock
+//             what the visit reads (normal, closing speed, friction, the inverse and the
+//             effective masses, each side's share of a push); the banded masses of shock
 //             propagation are worked out once per contact, not once per visit;
 //   copies    the velocities and positions as pairs, with two slots past the particles:
 //             kStill, at rest, which a shape reads as its velocity, and kSink, which
 //             takes the push on an immovable side, so no visit branches on either;
-//   divisions the normal and the tangential impulse divide by the same sum, and a
-//             normal divides both of its components by one length: each pair is one
-//             two-lane division, which rounds each lane as the scalar one does.
-// Every operation is the one the contact-by-contact form did, in the same order on the
-// same values, so the result is the same to the bit (the replays' hashes hold).
+//   masses    each row keeps its effective mass 1 / (wa + wb), so a visit multiplies
+//             where it divided twice (a division costs several multiplications' time);
+//             a normal divides both of its components by one length in one two-lane
+//             division, which rounds each lane as the scalar one does; a pair of balls
+//             apart by their radii or more needs no push, and costs no square root.
 #include "physics/collision/particle_collisions.h"
 
 #include <algorithm>
@@ -30,6 +30,11 @@ using Lanes = double __attribute__((vector_size(16)));
 inline Lanes divideBoth(double x0, double x1, double d) {
     const Lanes num = {x0, x1}, den = {d, d};
     return num / den;
+}
+
+// The mass the contact's impulse moves: 1 / (wa + wb), 0 when neither side moves.
+inline double effectiveMass(double wa, double wb) {
+    return wa + wb > 0.0 ? 1.0 / (wa + wb) : 0.0;
 }
 
 } // namespace
@@ -90,7 +95,7 @@ void ParticleCollisions::sweepContacts(ParticleSet& set, const StaticShapes& sha
         r.pushB = !shape && c.wb > 0.0 ? c.b : kSink;
         r.nx = c.normal.x, r.ny = c.normal.y;
         r.closing = c.closing, r.friction = c.friction;
-        r.wa = c.wa, r.wb = c.wb, r.sum = c.wa + c.wb;
+        r.wa = c.wa, r.wb = c.wb, r.mass = effectiveMass(c.wa, c.wb);
         r.normalImpulse = c.normalImpulse, r.tangentImpulse = c.tangentImpulse;
     }
     for (std::size_t band = 1; band + 1 < bands; ++band)
@@ -98,21 +103,21 @@ void ParticleCollisions::sweepContacts(ParticleSet& set, const StaticShapes& sha
             const RelaxContact& c = contacts_[contactOrder_[k]];
             ImpulseRow& r = impulseRows_[k];
             const auto [wa, wb] = shockMasses(c, static_cast<std::uint32_t>(band));
-            r.shockWa = wa, r.shockWb = wb, r.shockSum = wa + wb;
+            r.shockWa = wa, r.shockWb = wb, r.shockMass = effectiveMass(wa, wb);
             r.shockB = c.b != kNoParticle && wb > 0.0 ? c.b : kSink;
         }
     // One contact's velocity step: the normal impulse that stops the closing velocity
     // (accumulated, never pulling), and friction along the tangent within mu_s times it.
-    auto impulse = [&](ImpulseRow& r, double wa, double wb, double sum, std::uint32_t pushB) {
-        if (!(sum > 0.0)) return;
+    auto impulse = [&](ImpulseRow& r, double wa, double wb, double mass, std::uint32_t pushB) {
+        if (!(mass > 0.0)) return;
         const Vec2 vrel = v[r.a] - v[r.readB];
         const Vec2 normal{r.nx, r.ny}, t = perp(normal);
-        const Lanes q = divideBoth(dot(vrel, normal) + r.closing, dot(vrel, t), sum);
-        const double total = std::max(r.normalImpulse - q[0], 0.0);
+        const double total =
+            std::max(r.normalImpulse - (dot(vrel, normal) + r.closing) * mass, 0.0);
         const double jn = total - r.normalImpulse;
         r.normalImpulse = total;
         const double limit = r.friction * r.normalImpulse;
-        const double tangential = std::clamp(r.tangentImpulse - q[1], -limit, limit);
+        const double tangential = std::clamp(r.tangentImpulse - dot(vrel, t) * mass, -limit, limit);
         const double jt = tangential - r.tangentImpulse;
         r.tangentImpulse = tangential;
         if (jn == 0.0 && jt == 0.0) return;
@@ -124,12 +129,12 @@ void ParticleCollisions::sweepContacts(ParticleSet& set, const StaticShapes& sha
     };
     for (int sweep = 0; sweep < def.relaxVelocitySweeps; ++sweep)
         for (ImpulseRow& r : impulseRows_)
-            impulse(r, r.wa, r.wb, r.sum, r.pushB);
+            impulse(r, r.wa, r.wb, r.mass, r.pushB);
     for (std::size_t band = 1; band + 1 < bands; ++band)
         for (int sweep = 0; sweep < kShockSweeps; ++sweep)
             for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k) {
                 ImpulseRow& r = impulseRows_[k];
-                impulse(r, r.shockWa, r.shockWb, r.shockSum, r.shockB);
+                impulse(r, r.shockWa, r.shockWb, r.shockMass, r.shockB);
             }
     for (std::uint32_t k = 0; k < count; ++k) {
         RelaxContact& c = contacts_[contactOrder_[k]];
@@ -198,7 +203,9 @@ void ParticleCollisions::sweepContacts(ParticleSet& set, const StaticShapes& sha
             depth = crossed ? r.reach - sp.distance : std::min(r.reach - sp.distance, r.cap);
         } else {
             const Vec2 d = p[r.a] - p[r.b];
-            const double L = length(d);
+            const double distanceSquared = dot(d, d);
+            if (distanceSquared >= r.reach * r.reach) return;
+            const double L = std::sqrt(distanceSquared);
             if (L > 0.0) {
                 const Lanes unit = divideBoth(d.x, d.y, L);
                 normal = {unit[0], unit[1]};

@@ -171,6 +171,34 @@ TEST(Pile, StaticFrictionHoldsABallOnAnImmovableOneUpToTheFrictionAngle) {
     }
 }
 
+// A ball awake between a sleeper under it and a sleeper resting on it (as a shot leaves
+// one in a sleeping pile) was put to rest on each in turn, each pushing it into the
+// other, so the passes alternated between the two for all eight of every step. The
+// sleeper on it is weight it carries, which the contact solver holds: the passes settle
+// in two, and the ball stays in the column and sleeps.
+TEST(Pile, ABallSqueezedBetweenSleepersLetsThePassesSettle) {
+    World w;
+    w.shapes.addSegment({-1.0, 0.0}, {1.0, 0.0}, material::kWooden);
+    const double squeeze = 0.01 * kR; // each contact overlaps by half a millimetre
+    for (int i = 0; i < 3; ++i) {
+        ParticleDef pd;
+        pd.position = {0.0, kR + (2.0 * kR - squeeze) * i};
+        pd.radius = kR;
+        pd.material = material::kWooden;
+        w.particles.add(pd);
+    }
+    w.particles.flags[0] |= kSleeping;
+    w.particles.flags[2] |= kSleeping;
+    int mostPasses = 0;
+    for (int t = 0; t < 120; ++t) {
+        w.step();
+        mostPasses = std::max(mostPasses, w.collisionStats().passes);
+    }
+    EXPECT_LE(mostPasses, 2);
+    EXPECT_NEAR(w.particles.px[1], 0.0, 1e-12); // not squeezed out sideways
+    EXPECT_EQ(sleeping(w.particles), 3);
+}
+
 // The other side of sleeping on motion: a steady slide is motion. A ball sliding on a
 // frictionless floor at twice the sleep speed keeps sliding, at its speed exactly, and
 // never sleeps; at half the sleep speed it sleeps after sleepTime, where it got to.
