@@ -42,3 +42,26 @@ TEST(TickBudget, AFrameOverItsBudgetRunsOneTickInSlowMotionAndTheMatchIsTheSame)
         tight->frame(1.0 / 120.0);
     EXPECT_EQ(tight->banner(), "");
 }
+
+// A replay watched in the window keeps the same budget, and its line says so too: the
+// replay's own line, then the slow motion, gone a second after the budget stops cutting.
+TEST(TickBudget, AReplayHeldBackByTheBudgetSaysSlowMotion) {
+    std::string error;
+    auto context = ui::createHeadlessContext(320, 180, ui::HeadlessBackend::Auto, error);
+    ASSERT_NE(context, nullptr) << error;
+    ui::GameScreenDef def;
+    def.levelFile = (test_game::kRoot / "levels/05_castle.json").string();
+    def.levelsFolder = (test_game::kRoot / "levels").string();
+    def.replayFile = (test_game::kRoot / "tests/replays/05_castle.replay.json").string();
+    def.tickBudgetSeconds = 0.0;
+    auto screen = std::make_unique<ui::GameScreen>(*context, nullptr, def);
+    screen->frame(1.0 / 120.0); // owed one tick: under any budget
+    EXPECT_EQ(screen->banner().find("SLOW MOTION"), std::string::npos) << screen->banner();
+    for (int frame = 0; frame < 10; ++frame)
+        screen->frame(0.25); // owed 30 ticks, runs one
+    const std::string slow = screen->banner();
+    EXPECT_EQ(slow.rfind("REPLAY x1  0.1 s  SLOW MOTION: a tick of 8 ms takes ", 0), 0u) << slow;
+    for (int frame = 0; frame < 130; ++frame)
+        screen->frame(1.0 / 120.0);
+    EXPECT_EQ(screen->banner().find("SLOW MOTION"), std::string::npos) << screen->banner();
+}

@@ -462,10 +462,8 @@ void GameScreen::simulate(double wallSeconds) {
         physicsUs += session_->match().world().profile().totalUs;
     });
     const int ticks = run.ran;
-    // Said for a second after the last frame the budget cut (not per frame: no flicker),
-    // with what a tick costs: the world, the blocks and the match together.
-    behindSeconds_ = ticks < wanted ? 1.0 : std::max(0.0, behindSeconds_ - wallSeconds);
-    if (ticks < wanted) tickWallMs_ = 1000.0 * run.seconds / ticks;
+    // What a tick costs here is the world, the blocks and the match together.
+    slowMotion_.frame(run, wanted, wallSeconds);
     const game::Match& m = session_->match();
     stats_.ticksThisFrame = ticks;
     if (ticks > 0) stats_.physicsUs = physicsUs / ticks;
@@ -617,9 +615,9 @@ std::string GameScreen::liveBanner(const game::Match& m) const {
     const auto branchTicks = static_cast<std::uint64_t>(3.0 / m.world().def().tickSeconds);
     if (time_.paused)
         std::snprintf(banner, sizeof banner, "PAUSED  (. steps one tick)");
-    else if (behindSeconds_ > 0.0)
+    else if (slowMotion_.shown())
         std::snprintf(banner, sizeof banner, "SLOW MOTION: a tick of %.0f ms takes %.0f ms",
-                      1000.0 * m.world().def().tickSeconds, tickWallMs_);
+                      1000.0 * m.world().def().tickSeconds, slowMotion_.tickWallMs());
     else if (time_.timeScale != 1.0f)
         std::snprintf(banner, sizeof banner, "speed x%g", static_cast<double>(time_.timeScale));
     else if (!branchNote_.empty() && m.tick() < branchTick_ + branchTicks)

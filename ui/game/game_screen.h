@@ -207,8 +207,7 @@ class GameScreen final : public Screen {
     phys::FixedClock clock_;
     std::optional<double> tickBudget_; ///< wall s a frame may spend on ticks (tick_budget.h)
     /// Wall seconds until the slow-motion banner goes (the budget cut a frame's ticks).
-    double behindSeconds_ = 0.0;
-    double tickWallMs_ = 0.0; ///< wall ms a tick took when the budget last cut a frame
+    SlowMotion slowMotion_; ///< the budget cut a frame lately
     TimeControls time_;
     ViewControls view_;
     MatchView matchView_;

@@ -113,11 +113,12 @@ void ReplayViewer::advance(double wallSeconds, bool held, MatchView& view,
         stepRequested_ = false;
     }
     const int wanted = clock_.advance(wallSeconds);
-    runTicksWithin(clock_, wanted, tickBudgetSeconds, [&] {
+    const TicksRun run = runTicksWithin(clock_, wanted, tickBudgetSeconds, [&] {
         if (p.atEnd()) return;
         p.step();
         view.observe(p.match());
     });
+    heldBack_.frame(run, wanted, wallSeconds);
     if (p.atEnd()) paused_ = true; // Space then plays it again from the start
     p.prepareRestartPoints(kRestartTicksPerFrame);
 }
@@ -349,7 +350,13 @@ std::string ReplayViewer::banner() const {
     else
         std::snprintf(line, sizeof line, "REPLAY %s  %.1f s", kSpeedNames[speed_],
                       static_cast<double>(p.tick()) * tickSeconds());
-    return line;
+    std::string banner = line;
+    if (heldBack_.shown() && !paused_ && !p.atEnd() && !p.divergence()) {
+        std::snprintf(line, sizeof line, "  SLOW MOTION: a tick of %.0f ms takes %.0f ms",
+                      1000.0 * tickSeconds(), heldBack_.tickWallMs());
+        banner += line;
+    }
+    return banner;
 }
 
 } // namespace ui

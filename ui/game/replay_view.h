@@ -14,6 +14,7 @@
 #include "game/replay_player.h"
 #include "physics/clock.h"
 #include "ui/game/match_view.h"
+#include "ui/game/tick_budget.h"
 #include "ui/video/video_export.h"
 
 #include <SDL_keyboard.h>
@@ -56,7 +57,8 @@ class ReplayViewer {
     ReplayRequests key(const SDL_Keysym& key, bool repeat, bool& handled);
     /// Goes to `tick` at the next advance() (clamped to the recording).
     void requestSeek(std::uint64_t tick) { seek_ = tick; }
-    /// The line on top of the picture: "REPLAY x2  12.3 s", "REPLAY paused", ...
+    /// The line on top of the picture: "REPLAY x2  12.3 s", "REPLAY paused", ..., with
+    /// "SLOW MOTION ..." after it while the tick budget holds the replay back.
     std::string banner() const;
 
     /// No tick plays (paused, held by a menu, or at the end).
@@ -94,6 +96,7 @@ class ReplayViewer {
     phys::FixedClock clock_;
     bool paused_ = false;
     bool instant_ = false;
+    SlowMotion heldBack_; ///< the tick budget cut a frame lately
     /// An instant replay's slow motion around the impact: ticks [first, second).
     std::optional<std::pair<std::uint64_t, std::uint64_t>> slowMotion_;
     bool speedPicked_ = false; ///< the player chose a speed: no slow motion then

@@ -10,6 +10,7 @@
 
 #include "physics/clock.h"
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 
@@ -42,5 +43,27 @@ TicksRun runTicksWithin(phys::FixedClock& clock, int ticks, std::optional<double
     if (run.ran < ticks) clock.dropTicks(ticks - run.ran);
     return run;
 }
+
+/// Whether the budget cut a frame lately, and what a tick took then: a screen says
+/// "SLOW MOTION" for a second after the last frame the budget cut (not per frame, so the
+/// line does not flicker), with what a tick costs in wall time.
+class SlowMotion {
+  public:
+    /// One frame: `run` of the `wanted` ticks, in `wallSeconds` of the frame.
+    void frame(const TicksRun& run, int wanted, double wallSeconds) {
+        if (run.ran < wanted) {
+            shownSeconds_ = 1.0;
+            tickWallMs_ = 1000.0 * run.seconds / run.ran;
+        } else {
+            shownSeconds_ = std::max(0.0, shownSeconds_ - wallSeconds);
+        }
+    }
+    bool shown() const { return shownSeconds_ > 0.0; }
+    double tickWallMs() const { return tickWallMs_; } ///< when the budget last cut a frame
+
+  private:
+    double shownSeconds_ = 0.0;
+    double tickWallMs_ = 0.0;
+};
 
 } // namespace ui
