@@ -291,8 +291,16 @@ class ParticleCollisions {
     std::vector<Deferred> deferred_;
     void reportDeferred(const ParticleSet& set);
     std::vector<std::uint32_t> contactOrder_, level_, bandStart_;
-    /// The sweeps over contacts_ (relax_sweeps.cpp): warm start, velocity, position.
+    /// The sweeps over contacts_ (relax_sweeps.cpp): warm start, velocity, position, on
+    /// copies of the velocities and positions (copyForSweeps, copyAfterSweeps).
     void sweepContacts(ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def);
+    void copyForSweeps(const ParticleSet& set);
+    void copyAfterSweeps(ParticleSet& set) const;
+    void warmStart();
+    void buildImpulseRows();
+    void sweepImpulses(const CollisionDef& def);
+    void buildProjectRows(const ParticleSet& set);
+    void sweepProjections(const StaticShapes& shapes, const CollisionDef& def);
     /// The inverse masses of contact c under shock propagation in its band (masses()).
     std::pair<double, double> shockMasses(const RelaxContact& c, std::uint32_t band) const {
         double wa = c.wa, wb = c.wb;

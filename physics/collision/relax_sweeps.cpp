@@ -39,52 +39,70 @@ inline double effectiveMass(double wa, double wb) {
 
 } // namespace
 
+// The sweeps, as the solve's steps: copies in, warm start, velocity, position, copies out.
 void ParticleCollisions::sweepContacts(ParticleSet& set, const StaticShapes& shapes,
                                        const CollisionDef& def) {
-    const auto n = static_cast<std::uint32_t>(set.slots());
-    const std::uint32_t kStill = n, kSink = n + 1;
-    const std::size_t count = contacts_.size();
+    copyForSweeps(set);
+    warmStart();
+    buildImpulseRows();
+    sweepImpulses(def);
+    buildProjectRows(set);
+    sweepProjections(shapes, def);
+    copyAfterSweeps(set);
+}
 
-    // The copies, and "moved by the solver" for every slot.
+// The velocities and positions as pairs, kStill at rest, and "moved by the solver" cleared
+// for every slot.
+void ParticleCollisions::copyForSweeps(const ParticleSet& set) {
+    const auto n = static_cast<std::uint32_t>(set.slots());
     sweepVelocity_.resize(n + 2);
     sweepPosition_.resize(n + 2);
     for (std::uint32_t i = 0; i < n; ++i) {
         sweepVelocity_[i] = {set.vx[i], set.vy[i]};
         sweepPosition_[i] = {set.px[i], set.py[i]};
     }
-    sweepVelocity_[kStill] = sweepVelocity_[kSink] = {};
+    sweepVelocity_[n] = sweepVelocity_[n + 1] = {}; // kStill, kSink
     if (touched_.size() < n + 2) touched_.resize(n + 2);
     std::fill(touched_.begin(), touched_.end(), 0);
-    Vec2* const v = sweepVelocity_.data();
-    Vec2* const p = sweepPosition_.data();
+}
 
-    // Warm start: a contact that was there at the end of the last sub-step starts from the
-    // impulses it ended with (both lists are in pair order, so one merge finds them). In
-    // a resting pile those are nearly the answer, and the sweeps only correct them.
-    {
-        std::size_t w = 0;
-        for (RelaxContact& c : contacts_) {
-            const std::uint64_t key = (std::uint64_t{c.a} << 32) | c.proxy;
-            while (w < warm_.size() && warm_[w].key < key)
-                ++w;
-            if (w == warm_.size() || warm_[w].key != key) continue;
-            c.normalImpulse = warm_[w].normalImpulse;
-            c.tangentImpulse = warm_[w].tangentImpulse;
-            const Vec2 J = c.normal * c.normalImpulse + perp(c.normal) * c.tangentImpulse;
-            v[c.a] += J * c.wa;
-            touched_[c.a] = 1;
-            if (c.b != kNoParticle) {
-                v[c.b] -= J * c.wb;
-                touched_[c.b] = 1;
-            }
+void ParticleCollisions::copyAfterSweeps(ParticleSet& set) const {
+    for (std::size_t i = 0; i < set.slots(); ++i) {
+        set.vx[i] = sweepVelocity_[i].x, set.vy[i] = sweepVelocity_[i].y;
+        set.px[i] = sweepPosition_[i].x, set.py[i] = sweepPosition_[i].y;
+    }
+}
+
+// A contact that was there at the end of the last sub-step starts from the impulses it
+// ended with (both lists are in pair order, so one merge finds them). In a resting pile
+// those are nearly the answer, and the sweeps only correct them.
+void ParticleCollisions::warmStart() {
+    Vec2* const v = sweepVelocity_.data();
+    std::size_t w = 0;
+    for (RelaxContact& c : contacts_) {
+        const std::uint64_t key = (std::uint64_t{c.a} << 32) | c.proxy;
+        while (w < warm_.size() && warm_[w].key < key)
+            ++w;
+        if (w == warm_.size() || warm_[w].key != key) continue;
+        c.normalImpulse = warm_[w].normalImpulse;
+        c.tangentImpulse = warm_[w].tangentImpulse;
+        const Vec2 J = c.normal * c.normalImpulse + perp(c.normal) * c.tangentImpulse;
+        v[c.a] += J * c.wa;
+        touched_[c.a] = 1;
+        if (c.b != kNoParticle) {
+            v[c.b] -= J * c.wb;
+            touched_[c.b] = 1;
         }
     }
+}
 
-    // Bands 1 to bands - 2 are swept on their own (band 0 is never used, and the last
-    // holds the contacts that nothing connects to the ground).
-    const std::size_t bands = bandStart_.size() - 1;
-
-    // Velocity rows, in contactOrder_.
+// The velocity rows, in contactOrder_; those of bands 1 to bands - 2, which are swept on
+// their own (band 0 is never used, and the last holds the contacts that nothing connects
+// to the ground), with the masses of their band too.
+void ParticleCollisions::buildImpulseRows() {
+    const auto kSink = static_cast<std::uint32_t>(sweepVelocity_.size() - 1);
+    const auto kStill = kSink - 1;
+    const std::size_t count = contacts_.size(), bands = bandStart_.size() - 1;
     impulseRows_.resize(count);
     for (std::uint32_t k = 0; k < count; ++k) {
         const RelaxContact& c = contacts_[contactOrder_[k]];
@@ -106,6 +124,12 @@ void ParticleCollisions::sweepContacts(ParticleSet& set, const StaticShapes& sha
             r.shockWa = wa, r.shockWb = wb, r.shockMass = effectiveMass(wa, wb);
             r.shockB = c.b != kNoParticle && wb > 0.0 ? c.b : kSink;
         }
+}
+
+// Velocity: sweeps over all contacts, then band by band from the ground up; the impulses
+// they end with go back to the contacts (the warm start and the events read them there).
+void ParticleCollisions::sweepImpulses(const CollisionDef& def) {
+    Vec2* const v = sweepVelocity_.data();
     // One contact's velocity step: the normal impulse that stops the closing velocity
     // (accumulated, never pulling), and friction along the tangent within mu_s times it.
     auto impulse = [&](ImpulseRow& r, double wa, double wb, double mass, std::uint32_t pushB) {
@@ -127,6 +151,7 @@ void ParticleCollisions::sweepContacts(ParticleSet& set, const StaticShapes& sha
         touched_[r.a] = 1;
         touched_[pushB] = 1;
     };
+    const std::size_t bands = bandStart_.size() - 1;
     for (int sweep = 0; sweep < def.relaxVelocitySweeps; ++sweep)
         for (ImpulseRow& r : impulseRows_)
             impulse(r, r.wa, r.wb, r.mass, r.pushB);
@@ -136,16 +161,20 @@ void ParticleCollisions::sweepContacts(ParticleSet& set, const StaticShapes& sha
                 ImpulseRow& r = impulseRows_[k];
                 impulse(r, r.shockWa, r.shockWb, r.shockMass, r.shockB);
             }
-    for (std::uint32_t k = 0; k < count; ++k) {
+    for (std::uint32_t k = 0; k < impulseRows_.size(); ++k) {
         RelaxContact& c = contacts_[contactOrder_[k]];
         c.normalImpulse = impulseRows_[k].normalImpulse;
         c.tangentImpulse = impulseRows_[k].tangentImpulse;
     }
+}
 
-    // Position rows: contactOrder_ with the contacts against what never moves (a shape, a
-    // fixed or sleeping particle) after the others, in the whole list and within each
-    // band, so that nothing is left inside those, whatever else stays to do. A row whose
-    // sides are both immovable in its band is left out: its visit does nothing.
+// The position rows: contactOrder_ with the contacts against what never moves (a shape, a
+// fixed or sleeping particle) after the others, in the whole list and within each band,
+// so that nothing is left inside those, whatever else stays to do. A row whose sides are
+// both immovable in its band is left out: its visit would do nothing.
+void ParticleCollisions::buildProjectRows(const ParticleSet& set) {
+    const auto kSink = static_cast<std::uint32_t>(sweepPosition_.size() - 1);
+    const std::size_t count = contacts_.size(), bands = bandStart_.size() - 1;
     auto immovableSide = [](const RelaxContact& c) {
         return c.b == kNoParticle || c.wa == 0.0 || c.wb == 0.0;
     };
@@ -185,7 +214,12 @@ void ParticleCollisions::sweepContacts(ParticleSet& set, const StaticShapes& sha
         movableFirst(bandStart_[band], bandStart_[band + 1], shockProjectRows_, true);
         shockProjectStart_[band + 1] = static_cast<std::uint32_t>(shockProjectRows_.size());
     }
+}
 
+// Position: sweeps over all contacts, then band by band from the ground up. Velocities are
+// left as the impulses made them, so the projection adds no energy.
+void ParticleCollisions::sweepProjections(const StaticShapes& shapes, const CollisionDef& def) {
+    Vec2* const p = sweepPosition_.data();
     // One contact's position step: push the overlap apart along the current normal, at most
     // a fifth of the smaller radius at a time.
     auto project = [&](const ProjectRow& r) {
@@ -221,6 +255,7 @@ void ParticleCollisions::sweepContacts(ParticleSet& set, const StaticShapes& sha
         touched_[r.a] = 1;
         touched_[r.pushB] = 1;
     };
+    const std::size_t bands = bandStart_.size() - 1;
     for (int sweep = 0; sweep < def.relaxPositionSweeps; ++sweep)
         for (const ProjectRow& r : projectRows_)
             project(r);
@@ -228,11 +263,6 @@ void ParticleCollisions::sweepContacts(ParticleSet& set, const StaticShapes& sha
         for (int sweep = 0; sweep < kShockSweeps; ++sweep)
             for (std::uint32_t k = shockProjectStart_[band]; k < shockProjectStart_[band + 1]; ++k)
                 project(shockProjectRows_[k]);
-
-    for (std::uint32_t i = 0; i < n; ++i) {
-        set.vx[i] = v[i].x, set.vy[i] = v[i].y;
-        set.px[i] = p[i].x, set.py[i] = p[i].y;
-    }
 }
 
 } // namespace phys
