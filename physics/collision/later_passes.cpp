@@ -104,7 +104,10 @@ bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShape
 }
 
 bool ParticleCollisions::overlapping(std::uint32_t i, std::uint32_t j) const {
-    return pairable(kinds_[i], kinds_[j]) & boxes_[i].overlapsBranchless(boxes_[j]);
+    // Both tests, with no branch between them (which pairs overlap is a coin toss).
+    const unsigned kinds = pairable(kinds_[i], kinds_[j]);
+    const unsigned boxes = boxes_[i].overlapsBranchless(boxes_[j]);
+    return (kinds & boxes) != 0;
 }
 
 // As patchPairCache tests an escaped proxy, by the exact box, branchless (which proxies

@@ -53,6 +53,7 @@ nlohmann::json point(FuzzedDataProvider& in, double lo, double hi) {
     return {extreme(in, lo, hi), extreme(in, lo, hi)};
 }
 
+#if FUZZ_SIMULATE == 1 // the level fuzzer: a level of extremes
 std::string levelText(FuzzedDataProvider& in) {
     using nlohmann::json;
     const double w = in.ConsumeBool() ? 200.0 : extreme(in, 1.0, 2e4);
@@ -112,6 +113,7 @@ std::string levelText(FuzzedDataProvider& in) {
     return l.dump();
 }
 
+#else // the commands fuzzer: a script for the sandbox level
 std::string commandsText(FuzzedDataProvider& in) {
     using nlohmann::json;
     json list = json::array();
@@ -151,6 +153,7 @@ std::string commandsText(FuzzedDataProvider& in) {
     }
     return list.dump();
 }
+#endif
 
 struct FiniteCheck : game::FrameSink {
     const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
