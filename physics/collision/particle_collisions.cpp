@@ -465,7 +465,7 @@ ParticleCollisions::resolveStatic(const Candidate& c, ParticleSet& set, const St
 ParticleCollisions::Resolution ParticleCollisions::resolvePair(const Candidate& c, ParticleSet& set,
                                                                const MaterialTable& mats,
                                                                const CollisionDef& def, double h,
-                                                               double tickTime) {
+                                                               double tickTime, Vec2 up) {
     const std::size_t i = c.a, j = c.b;
     const double rj = set.radius[j], ri = set.radius[i];
     const auto toi =
@@ -492,7 +492,7 @@ ParticleCollisions::Resolution ParticleCollisions::resolvePair(const Candidate& 
         const double vn = dot(vrel, n);
         const bool bothFree = wi > 0.0 && wj > 0.0;
         const bool underSleeper =
-            onSleeper(set, i, j, wi, wj) && dot(wi > 0.0 ? n : -n, up_) < -kSupport;
+            onSleeper(set, i, j, wi, wj) && dot(wi > 0.0 ? n : -n, up) < -kSupport;
         if (def.restingPairsToSolver && (bothFree || underSleeper) &&
             -vn < restingLimit(i, j, an, def, h)) {
             // Only its first deferral is reported (reportDeferred), and a carried pair
@@ -522,8 +522,7 @@ ParticleCollisions::Resolution ParticleCollisions::resolvePair(const Candidate& 
     // An impact wakes a sleeper it would move faster than sleepSpeed; resting on one
     // does not (it carries what rests on it, as a sleeping pile carries its top layer).
     for (const std::size_t k : {i, j}) {
-        const bool asleep = (set.flags[k] & kSleeping) && set.invMass[k] > 0.0;
-        if (asleep && !resting && ci.normal * set.invMass[k] > def.sleepSpeed) {
+        if (asleep(set, k) && !resting && ci.normal * set.invMass[k] > def.sleepSpeed) {
             set.flags[k] &= ~kSleeping;
             (k == i ? wi : wj) = set.invMass[k];
             ci = contactImpulse(vrel, n, wi, wj, e, pp);
@@ -594,7 +593,6 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
     buildPaths(set, h);
     bool converged = false;
     deferred_.clear();
-    up_ = up;
     for (int pass = 0; pass < def.maxPasses; ++pass) {
         if (pass == 0 || !def.redetectChangesOnly || !detectChanges(set, shapes, def, h))
             detect(set, shapes, def, h);
@@ -606,7 +604,7 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
             const Candidate& c = candidates_[key.index];
             const Resolution r = c.b == kNoParticle
                                      ? resolveStatic(c, set, shapes, mats, def, h, tickTime)
-                                     : resolvePair(c, set, mats, def, h, tickTime);
+                                     : resolvePair(c, set, mats, def, h, tickTime, up);
             resolved += r == Resolution::Resting || r == Resolution::Impact ? 1 : 0;
             leftToSolver_[key.index] = r == Resolution::Deferred ? 1 : 0;
         }

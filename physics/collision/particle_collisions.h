@@ -172,17 +172,19 @@ class ParticleCollisions {
     Resolution resolveStatic(const Candidate& c, ParticleSet& set, const StaticShapes& shapes,
                              const MaterialTable& mats, const CollisionDef& def, double h,
                              double tickTime);
+    /// `up` as for impulsePhase: a sleeper lying on a free particle goes to the solver.
     Resolution resolvePair(const Candidate& c, ParticleSet& set, const MaterialTable& mats,
-                           const CollisionDef& def, double h, double tickTime);
-    /// One of the pair is free and the other asleep (immovable until woken).
+                           const CollisionDef& def, double h, double tickTime, Vec2 up);
+    /// A sleeping particle that an impulse could wake (not a fixed one).
+    static bool asleep(const ParticleSet& set, std::size_t k) {
+        return (set.flags[k] & kSleeping) && set.invMass[k] > 0.0;
+    }
+    /// One of the pair is free (wi, wj: its inverse mass, 0 if immovable) and the other
+    /// asleep.
     static bool onSleeper(const ParticleSet& set, std::size_t i, std::size_t j, double wi,
                           double wj) {
-        auto asleep = [&](std::size_t k) {
-            return (set.flags[k] & kSleeping) && set.invMass[k] > 0.0;
-        };
-        return (wi > 0.0 && asleep(j)) || (wj > 0.0 && asleep(i));
+        return (wi > 0.0 && asleep(set, j)) || (wj > 0.0 && asleep(set, i));
     }
-    Vec2 up_; ///< impulsePhase's up, for resolvePair
     void rebase(std::size_t i, double t);
     void support(std::size_t i, Vec2 n, Vec2 vNew, const PairProperties& pp, double remaining);
     void finish(ParticleSet& set, double h);
@@ -301,7 +303,8 @@ class ParticleCollisions {
     void sweepImpulses(const CollisionDef& def);
     void buildProjectRows(const ParticleSet& set);
     void sweepProjections(const StaticShapes& shapes, const CollisionDef& def);
-    /// The inverse masses of contact c under shock propagation in its band (masses()).
+    /// The inverse masses of contact c under shock propagation in its band: the particle
+    /// that holds the other up, if it is settled already (a lower level), is immovable.
     std::pair<double, double> shockMasses(const RelaxContact& c, std::uint32_t band) const {
         double wa = c.wa, wb = c.wb;
         if (c.support == 1 && c.b != kNoParticle && level_[c.b] < band) wb = 0.0;
