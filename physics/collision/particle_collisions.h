@@ -42,9 +42,11 @@
 
 #include "physics/collision/broadphase.h"
 #include "physics/collision/collision_def.h"
+#include "physics/collision/contact_columns.h"
 #include "physics/collision/narrowphase.h"
 #include "physics/collision/shapes.h"
 #include "physics/collision/time_order.h"
+#include "physics/collision/wavefronts.h"
 #include "physics/materials.h"
 #include "physics/particles.h"
 #include "physics/phase_clock.h"
@@ -299,9 +301,10 @@ class ParticleCollisions {
     void copyForSweeps(const ParticleSet& set);
     void copyAfterSweeps(ParticleSet& set) const;
     void warmStart();
+    void buildSweepRows(const ParticleSet& set);
     void buildImpulseRows();
     void sweepImpulses(const CollisionDef& def);
-    void buildProjectRows(const ParticleSet& set);
+    void buildProjectRows();
     void sweepProjections(const StaticShapes& shapes, const CollisionDef& def);
     /// The inverse masses of contact c under shock propagation in its band: the particle
     /// that holds the other up, if it is settled already (a lower level), is immovable.
@@ -311,30 +314,52 @@ class ParticleCollisions {
         if (c.support == -1 && level_[c.a] < band) wa = 0.0;
         return {wa, wb};
     }
-    /// A contact's velocity step as the sweeps read it, in contactOrder_: one row serves
-    /// the sweeps over all contacts and, with the masses of its band, the banded ones.
-    /// Particle indices point into the sweeps' copies of the velocities, which have two
-    /// slots past the particles: kStill, at rest (what a shape "moves" at), and kSink,
-    /// where a push on something immovable goes, so the loop has no branch for either.
-    struct ImpulseRow {
-        std::uint32_t a = 0, readB = 0;      ///< particles (readB: kStill for a shape)
-        std::uint32_t pushB = 0, shockB = 0; ///< where b's impulse goes: all, banded
+    /// The slots of the sweeps' copies past the particles (contact_columns.h): still, at
+    /// rest, and sink, which takes the push on an immovable side.
+    std::uint32_t stillSlot() const {
+        return static_cast<std::uint32_t>(sweepVelocity_.size() - 2);
+    }
+    std::uint32_t sinkSlot() const { return stillSlot() + 1; }
+    /// The places of sequence_ (in contactOrder_), in the order a sweep takes them: in
+    /// wavefronts of four when the lanes run (`slots(k)`: place k's kind and the slots it
+    /// touches), as they are otherwise. The sweep is made of parts, each of which is also
+    /// swept on its own: `parts` says where in sequence_ each starts (ascending, the last
+    /// its end), and `partsOut` gets where in the order.
+    template <class Slots>
+    const std::vector<std::uint32_t>& sweepOrder(const std::vector<std::uint32_t>& parts,
+                                                 std::vector<std::uint32_t>& partsOut,
+                                                 Slots&& slots);
+    bool lanes_ = false; ///< this solve's sweeps run in wavefronts of four lanes
+    /// A contact as every sweep's row reads it, by its place in contactOrder_; one more
+    /// place past the contacts is the padding row (sweeps still, pushes the sink, no mass).
+    struct SweepRow {
+        /// The masses of a sweep: inverse, effective 1 / (wa + wb) (or 0), each side's
+        /// share of a push, and where b's push goes (b, or the sink).
+        struct Masses {
+            double wa = 0.0, wb = 0.0, mass = 0.0, fa = 0.0, fb = 0.0;
+            std::uint32_t pushB = 0;
+        };
+        std::uint32_t a = 0, readB = 0; ///< readB: b, or still for a shape
+        std::uint32_t contact = 0;      ///< index in contacts_
+        bool shape = false, immovableSide = false;
         double nx = 0.0, ny = 0.0, closing = 0.0, friction = 0.0;
-        double wa = 0.0, wb = 0.0, mass = 0.0; ///< inverse masses; 1 / (wa + wb), or 0
-        double shockWa = 0.0, shockWb = 0.0, shockMass = 0.0; ///< the same in its band
-        double normalImpulse = 0.0, tangentImpulse = 0.0;    ///< accumulated, N s
+        double normalImpulse = 0.0, tangentImpulse = 0.0; ///< as warm started
+        double reach = 0.0, cap = 0.0; ///< radii summed; the most a projection moves at once
+        Masses all, band;              ///< in the sweeps over all contacts, in its band's
     };
-    /// A contact's position step, in the order it is projected.
-    struct ProjectRow {
-        std::uint32_t a = 0, b = 0;           ///< b: its particle, or kNoParticle for a shape
-        std::uint32_t pushB = 0, contact = 0; ///< where b's push goes; index in contacts_
-        double reach = 0.0, cap = 0.0;        ///< radii summed; the most it moves at once
-        double fa = 0.0, fb = 0.0;            ///< each side's share of the push
-    };
-    std::vector<ImpulseRow> impulseRows_;
-    std::vector<ProjectRow> projectRows_, shockProjectRows_;
-    std::vector<std::uint32_t> shockProjectStart_;    ///< each band's first shock row
-    std::vector<Vec2> sweepVelocity_, sweepPosition_; ///< the particles', then kStill, kSink
+    std::vector<SweepRow> sweepRows_;
+    Wavefronts wavefronts_;
+    std::vector<std::uint32_t> sequence_;
+    std::vector<std::uint32_t> parts_, partsOut_;
+    /// The velocity rows, band by band (each band's from impulseStart_[band]);
+    /// impulseRow_[k]: the row of place k of contactOrder_.
+    ImpulseColumns impulses_;
+    std::vector<std::uint32_t> impulseStart_, impulseRow_;
+    /// The position rows, over all contacts, and band by band (each band's from
+    /// shockProjectStart_[band]).
+    ProjectColumns projections_, shockProjections_;
+    std::vector<std::uint32_t> shockProjectStart_;
+    std::vector<Vec2> sweepVelocity_, sweepPosition_; ///< the particles', then still, sink
     /// Sweeps over each band, from the ground up, with the bands below immovable.
     static constexpr int kShockSweeps = 4;
     /// Contacts up to this gap, in radii (of the pair's sum), are constraints too.

@@ -2,35 +2,29 @@
 // start, velocity sweeps over all contacts and then band by band, position sweeps the
 // same way. Each contact is visited some twenty times a sub-step, so the sweeps run on a
 // layout made for the loop, built once:
-//   rows      one row per contact and phase, in the order the phase visits them, holding
-//             what the visit reads (normal, closing speed, friction, the inverse and the
-//             effective masses, each side's share of a push); the banded masses of shock
-//             propagation are worked out once per contact, not once per visit;
-//   copies    the velocities and positions as pairs, with two slots past the particles:
-//             kStill, at rest, which a shape reads as its velocity, and kSink, which
-//             takes the push on an immovable side, so no visit branches on either;
-//   masses    each row keeps its effective mass 1 / (wa + wb), so a visit multiplies
-//             where it divided twice (a division costs several multiplications' time);
-//             a normal divides both of its components by one length in one two-lane
-//             division, which rounds each lane as the scalar one does; a pair of balls
-//             apart by their radii or more needs no push, and costs no square root.
+//   rows        one row per contact and sweep, as columns (contact_columns.h), holding
+//               what the visit reads (normal, closing speed, friction, the inverse and
+//               the effective masses, each side's share of a push); the banded masses of
+//               shock propagation are worked out once per contact, not once per visit;
+//   wavefronts  where the processor has AVX2, each sweep's rows are laid out in its
+//               wavefronts (wavefronts.h) and swept four at a time: the bits of the sweep
+//               in its own order, in about 600 steps of four for 2,500 contacts;
+//   copies      the velocities and positions as pairs, with two slots past the
+//               particles: still, at rest, which a shape reads as its velocity, and sink,
+//               which takes the push on an immovable side, so no visit branches on either;
+//   masses      each row keeps its effective mass 1 / (wa + wb), so a visit multiplies
+//               where it divided twice; a pair of balls apart by their radii or more needs
+//               no push, and costs no square root.
 #include "physics/collision/particle_collisions.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 
 namespace phys {
 
 namespace {
-
-// Two doubles in one SSE register: x / y lane by lane is IEEE division in each lane.
-using Lanes = double __attribute__((vector_size(16)));
-
-// (x0 / d, x1 / d), each rounded as the scalar division rounds it.
-inline Lanes divideBoth(double x0, double x1, double d) {
-    const Lanes num = {x0, x1}, den = {d, d};
-    return num / den;
-}
 
 // The mass the contact's impulse moves: 1 / (wa + wb), 0 when neither side moves.
 inline double effectiveMass(double wa, double wb) {
@@ -42,16 +36,18 @@ inline double effectiveMass(double wa, double wb) {
 // The sweeps, as the solve's steps: copies in, warm start, velocity, position, copies out.
 void ParticleCollisions::sweepContacts(ParticleSet& set, const StaticShapes& shapes,
                                        const CollisionDef& def) {
+    lanes_ = def.contactLanes && contactLanesAvailable();
     copyForSweeps(set);
     warmStart();
+    buildSweepRows(set);
     buildImpulseRows();
     sweepImpulses(def);
-    buildProjectRows(set);
+    buildProjectRows();
     sweepProjections(shapes, def);
     copyAfterSweeps(set);
 }
 
-// The velocities and positions as pairs, kStill at rest, and "moved by the solver" cleared
+// The velocities and positions as pairs, still at rest, and "moved by the solver" cleared
 // for every slot.
 void ParticleCollisions::copyForSweeps(const ParticleSet& set) {
     const auto n = static_cast<std::uint32_t>(set.slots());
@@ -61,7 +57,8 @@ void ParticleCollisions::copyForSweeps(const ParticleSet& set) {
         sweepVelocity_[i] = {set.vx[i], set.vy[i]};
         sweepPosition_[i] = {set.px[i], set.py[i]};
     }
-    sweepVelocity_[n] = sweepVelocity_[n + 1] = {}; // kStill, kSink
+    sweepVelocity_[n] = sweepVelocity_[n + 1] = {}; // still, sink
+    sweepPosition_[n] = sweepPosition_[n + 1] = {};
     if (touched_.size() < n + 2) touched_.resize(n + 2);
     std::fill(touched_.begin(), touched_.end(), 0);
 }
@@ -96,75 +93,134 @@ void ParticleCollisions::warmStart() {
     }
 }
 
-// The velocity rows, in contactOrder_; those of bands 1 to bands - 2, which are swept on
-// their own (band 0 is never used, and the last holds the contacts that nothing connects
-// to the ground), with the masses of their band too.
-void ParticleCollisions::buildImpulseRows() {
-    const auto kSink = static_cast<std::uint32_t>(sweepVelocity_.size() - 1);
-    const auto kStill = kSink - 1;
-    const std::size_t count = contacts_.size(), bands = bandStart_.size() - 1;
-    impulseRows_.resize(count);
-    for (std::uint32_t k = 0; k < count; ++k) {
-        const RelaxContact& c = contacts_[contactOrder_[k]];
-        ImpulseRow& r = impulseRows_[k];
-        const bool shape = c.b == kNoParticle;
-        r.a = c.a;
-        r.readB = shape ? kStill : c.b;
-        r.pushB = !shape && c.wb > 0.0 ? c.b : kSink;
-        r.nx = c.normal.x, r.ny = c.normal.y;
-        r.closing = c.closing, r.friction = c.friction;
-        r.wa = c.wa, r.wb = c.wb, r.mass = effectiveMass(c.wa, c.wb);
-        r.normalImpulse = c.normalImpulse, r.tangentImpulse = c.tangentImpulse;
+template <class Slots>
+const std::vector<std::uint32_t>&
+ParticleCollisions::sweepOrder(const std::vector<std::uint32_t>& parts,
+                               std::vector<std::uint32_t>& partsOut, Slots&& slots) {
+    if (!lanes_) {
+        partsOut = parts;
+        return sequence_;
     }
-    for (std::size_t band = 1; band + 1 < bands; ++band)
-        for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k) {
-            const RelaxContact& c = contacts_[contactOrder_[k]];
-            ImpulseRow& r = impulseRows_[k];
-            const auto [wa, wb] = shockMasses(c, static_cast<std::uint32_t>(band));
-            r.shockWa = wa, r.shockWb = wb, r.shockMass = effectiveMass(wa, wb);
-            r.shockB = c.b != kNoParticle && wb > 0.0 ? c.b : kSink;
-        }
+    wavefronts_.begin(stillSlot()); // still and sink order nothing
+    wavefronts_.add(sequence_, parts, slots);
+    const auto& order = wavefronts_.order(4);
+    partsOut = wavefronts_.barrierStarts();
+    return order;
 }
 
-// Velocity: sweeps over all contacts, then band by band from the ground up; the impulses
-// they end with go back to the contacts (the warm start and the events read them there).
+// What every sweep's row of a contact reads, by its place in contactOrder_, with the
+// masses of the sweeps over all contacts and of those of its band (bands 1 to bands - 2
+// are swept on their own; band 0 is never used, and the last holds the contacts that
+// nothing connects to the ground); and the padding row after them.
+void ParticleCollisions::buildSweepRows(const ParticleSet& set) {
+    const std::uint32_t still = stillSlot(), sink = sinkSlot();
+    const std::size_t count = contacts_.size(), bands = bandStart_.size() - 1;
+    // Three divisions a pair of inverse masses, done once for each pair: a pile of like
+    // balls has a handful (1 and 1, 1 and 0, 0 and 1), each seen thousands of times, and
+    // a division keeps the loop waiting for several multiplications' time. The last four
+    // pairs are kept, by their bits (-0 is not 0). Each field is set on its own: a row
+    // copied whole after one of its fields was written waits for that write to land.
+    struct Known {
+        std::uint64_t wa, wb;
+        double mass, fa, fb;
+    };
+    std::array<Known, 4> known;
+    known.fill({~std::uint64_t{0}, ~std::uint64_t{0}, 0.0, 0.0, 0.0}); // a NaN's bits
+    std::size_t replace = 0;
+    auto setMasses = [&](SweepRow::Masses& m, const SweepRow& r, double wa, double wb) {
+        const auto a = std::bit_cast<std::uint64_t>(wa), b = std::bit_cast<std::uint64_t>(wb);
+        std::size_t at = 0;
+        while (at < known.size() && (known[at].wa != a || known[at].wb != b))
+            ++at;
+        if (at == known.size()) {
+            const double sum = wa + wb;
+            at = replace++ % known.size();
+            known[at] = {a, b, effectiveMass(wa, wb), wa / sum, wb / sum};
+        }
+        m.wa = wa, m.wb = wb;
+        m.mass = known[at].mass, m.fa = known[at].fa, m.fb = known[at].fb;
+        m.pushB = !r.shape && wb > 0.0 ? r.readB : sink;
+    };
+    sweepRows_.resize(count + 1);
+    for (std::uint32_t k = 0; k < count; ++k) {
+        const RelaxContact& c = contacts_[contactOrder_[k]];
+        SweepRow& r = sweepRows_[k];
+        const bool shape = c.b == kNoParticle;
+        r.a = c.a, r.contact = contactOrder_[k];
+        r.readB = shape ? still : c.b;
+        r.shape = shape;
+        r.immovableSide = shape || c.wa == 0.0 || c.wb == 0.0;
+        r.nx = c.normal.x, r.ny = c.normal.y;
+        r.closing = c.closing, r.friction = c.friction;
+        r.normalImpulse = c.normalImpulse, r.tangentImpulse = c.tangentImpulse;
+        const double ra = set.radius[c.a];
+        r.reach = shape ? ra : ra + set.radius[c.b];
+        r.cap = 0.2 * (shape ? ra : std::min(ra, set.radius[c.b]));
+        setMasses(r.all, r, c.wa, c.wb);
+        setMasses(r.band, r, c.wa, c.wb);
+    }
+    for (std::uint32_t band = 1; band + 1 < bands; ++band)
+        for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k) {
+            SweepRow& r = sweepRows_[k];
+            const auto [wa, wb] = shockMasses(contacts_[r.contact], band);
+            setMasses(r.band, r, wa, wb);
+        }
+    SweepRow& padding = sweepRows_[count];
+    padding = {};
+    padding.a = padding.all.pushB = padding.band.pushB = sink;
+    padding.readB = still;
+}
+
+// The velocity rows, one per contact, band by band (each band's from impulseStart_[band]),
+// each band's in its wavefronts when the lanes run: the sweeps over all contacts take the
+// bands one after the other, in their order, and those over a band take its rows alone.
+void ParticleCollisions::buildImpulseRows() {
+    const auto count = static_cast<std::uint32_t>(contacts_.size());
+    sequence_.resize(count);
+    for (std::uint32_t k = 0; k < count; ++k)
+        sequence_[k] = k;
+    const auto& order = sweepOrder(bandStart_, impulseStart_, [&](std::uint32_t k) {
+        const SweepRow& r = sweepRows_[k];
+        return std::array<std::uint32_t, 4>{0u, r.a, r.readB, r.all.pushB};
+    });
+    ImpulseColumns& rows = impulses_;
+    rows.resize(order.size());
+    impulseRow_.resize(count + 1); // and the padding row's, never read
+    const auto padding = static_cast<std::uint32_t>(sweepRows_.size() - 1);
+    for (std::size_t at = 0; at < order.size(); ++at) {
+        const std::uint32_t k = std::min(order[at], padding); // kPadding: the padding row
+        const SweepRow& r = sweepRows_[k];
+        rows.a[at] = r.a, rows.readB[at] = r.readB;
+        rows.nx[at] = r.nx, rows.ny[at] = r.ny, rows.closing[at] = r.closing;
+        rows.friction[at] = r.friction;
+        for (auto [to, from] : {std::pair{&rows.all, &r.all}, std::pair{&rows.band, &r.band}}) {
+            to->wa[at] = from->wa, to->wb[at] = from->wb, to->mass[at] = from->mass;
+            to->pushB[at] = from->pushB;
+        }
+        rows.normalImpulse[at] = r.normalImpulse, rows.tangentImpulse[at] = r.tangentImpulse;
+        impulseRow_[k] = static_cast<std::uint32_t>(at);
+    }
+}
+
+// Velocity: sweeps over all contacts, then band by band from the ground up, on the same
+// accumulated impulses; those they end with go back to the contacts (the warm start and
+// the events read them there).
 void ParticleCollisions::sweepImpulses(const CollisionDef& def) {
     Vec2* const v = sweepVelocity_.data();
-    // One contact's velocity step: the normal impulse that stops the closing velocity
-    // (accumulated, never pulling), and friction along the tangent within mu_s times it.
-    auto impulse = [&](ImpulseRow& r, double wa, double wb, double mass, std::uint32_t pushB) {
-        if (!(mass > 0.0)) return;
-        const Vec2 vrel = v[r.a] - v[r.readB];
-        const Vec2 normal{r.nx, r.ny}, t = perp(normal);
-        const double total =
-            std::max(r.normalImpulse - (dot(vrel, normal) + r.closing) * mass, 0.0);
-        const double jn = total - r.normalImpulse;
-        r.normalImpulse = total;
-        const double limit = r.friction * r.normalImpulse;
-        const double tangential = std::clamp(r.tangentImpulse - dot(vrel, t) * mass, -limit, limit);
-        const double jt = tangential - r.tangentImpulse;
-        r.tangentImpulse = tangential;
-        if (jn == 0.0 && jt == 0.0) return;
-        const Vec2 J = normal * jn + t * jt;
-        v[r.a] += J * wa;
-        v[pushB] -= J * wb;
-        touched_[r.a] = 1;
-        touched_[pushB] = 1;
-    };
-    const std::size_t bands = bandStart_.size() - 1;
+    std::uint8_t* const touched = touched_.data();
+    ImpulseColumns& rows = impulses_;
     for (int sweep = 0; sweep < def.relaxVelocitySweeps; ++sweep)
-        for (ImpulseRow& r : impulseRows_)
-            impulse(r, r.wa, r.wb, r.mass, r.pushB);
+        sweepImpulseColumns(rows, rows.all, 0, rows.size(), v, touched, lanes_);
+    const std::size_t bands = bandStart_.size() - 1;
     for (std::size_t band = 1; band + 1 < bands; ++band)
         for (int sweep = 0; sweep < kShockSweeps; ++sweep)
-            for (std::uint32_t k = bandStart_[band]; k < bandStart_[band + 1]; ++k) {
-                ImpulseRow& r = impulseRows_[k];
-                impulse(r, r.shockWa, r.shockWb, r.shockMass, r.shockB);
-            }
-    for (std::uint32_t k = 0; k < impulseRows_.size(); ++k) {
+            sweepImpulseColumns(rows, rows.band, impulseStart_[band], impulseStart_[band + 1], v,
+                                touched, lanes_);
+    if (lanes_) markTouched(rows, touched, rows.all.pushB, rows.band.pushB);
+    for (std::uint32_t k = 0; k < contacts_.size(); ++k) {
         RelaxContact& c = contacts_[contactOrder_[k]];
-        c.normalImpulse = impulseRows_[k].normalImpulse;
-        c.tangentImpulse = impulseRows_[k].tangentImpulse;
+        c.normalImpulse = rows.normalImpulse[impulseRow_[k]];
+        c.tangentImpulse = rows.tangentImpulse[impulseRow_[k]];
     }
 }
 
@@ -172,97 +228,92 @@ void ParticleCollisions::sweepImpulses(const CollisionDef& def) {
 // fixed or sleeping particle) after the others, in the whole list and within each band,
 // so that nothing is left inside those, whatever else stays to do. A row whose sides are
 // both immovable in its band is left out: its visit would do nothing.
-void ParticleCollisions::buildProjectRows(const ParticleSet& set) {
-    const auto kSink = static_cast<std::uint32_t>(sweepPosition_.size() - 1);
+void ParticleCollisions::buildProjectRows() {
     const std::size_t count = contacts_.size(), bands = bandStart_.size() - 1;
-    auto immovableSide = [](const RelaxContact& c) {
-        return c.b == kNoParticle || c.wa == 0.0 || c.wb == 0.0;
-    };
-    auto addRow = [&](std::vector<ProjectRow>& rows, std::uint32_t k, double wa, double wb) {
-        if (!(wa + wb > 0.0)) return;
-        const std::uint32_t index = contactOrder_[k];
-        const RelaxContact& c = contacts_[index];
-        ProjectRow r;
-        r.a = c.a, r.b = c.b, r.contact = index;
-        r.pushB = c.b != kNoParticle && wb > 0.0 ? c.b : kSink;
-        const double ra = set.radius[c.a];
-        r.reach = c.b == kNoParticle ? ra : ra + set.radius[c.b];
-        r.cap = 0.2 * (c.b == kNoParticle ? ra : std::min(ra, set.radius[c.b]));
-        r.fa = wa / (wa + wb), r.fb = wb / (wa + wb);
-        rows.push_back(r);
-    };
-    auto movableFirst = [&](std::uint32_t from, std::uint32_t to, std::vector<ProjectRow>& rows,
-                            bool banded) {
+    // Appends the places from..to to sequence_, movable first, each with something to move
+    // (banded: in its band).
+    auto movableFirst = [&](std::uint32_t from, std::uint32_t to, bool banded) {
         for (const bool statics : {false, true})
             for (std::uint32_t k = from; k < to; ++k) {
-                const RelaxContact& c = contacts_[contactOrder_[k]];
-                if (immovableSide(c) != statics) continue;
-                if (!banded) {
-                    addRow(rows, k, c.wa, c.wb);
-                } else {
-                    const ImpulseRow& ir = impulseRows_[k];
-                    addRow(rows, k, ir.shockWa, ir.shockWb);
-                }
+                const SweepRow& r = sweepRows_[k];
+                const SweepRow::Masses& m = banded ? r.band : r.all;
+                if (r.immovableSide == statics && m.wa + m.wb > 0.0) sequence_.push_back(k);
             }
     };
-    projectRows_.clear();
-    movableFirst(0, static_cast<std::uint32_t>(count), projectRows_, false);
-    shockProjectRows_.clear();
-    shockProjectStart_.assign(bands + 1, 0u); // where each band's rows start
-    for (std::size_t band = 1; band + 1 < bands; ++band) {
-        shockProjectStart_[band] = static_cast<std::uint32_t>(shockProjectRows_.size());
-        movableFirst(bandStart_[band], bandStart_[band + 1], shockProjectRows_, true);
-        shockProjectStart_[band + 1] = static_cast<std::uint32_t>(shockProjectRows_.size());
+    const auto padding = static_cast<std::uint32_t>(sweepRows_.size() - 1);
+    auto layOut = [&](ProjectColumns& rows, const std::vector<std::uint32_t>& parts,
+                      std::vector<std::uint32_t>& partsOut, bool banded) {
+        const auto& order = sweepOrder(parts, partsOut, [&](std::uint32_t k) {
+            const SweepRow& r = sweepRows_[k];
+            return std::array<std::uint32_t, 4>{r.shape ? 1u : 0u, r.a, r.readB,
+                                                (banded ? r.band : r.all).pushB};
+        });
+        rows.resize(order.size());
+        for (std::size_t at = 0; at < order.size(); ++at) {
+            const SweepRow& r = sweepRows_[std::min(order[at], padding)];
+            const SweepRow::Masses& m = banded ? r.band : r.all;
+            rows.a[at] = r.a, rows.b[at] = r.shape ? ProjectColumns::kShapeRow : r.readB;
+            rows.pushB[at] = m.pushB, rows.contact[at] = r.contact;
+            rows.reach[at] = r.reach, rows.cap[at] = r.cap;
+            rows.fa[at] = m.fa, rows.fb[at] = m.fb;
+        }
+    };
+    sequence_.clear();
+    movableFirst(0, static_cast<std::uint32_t>(count), false);
+    parts_.clear();
+    layOut(projections_, parts_, partsOut_, false);
+    // Bands 1 to bands - 2, each a part of the sequence; shockProjectStart_[band] is where
+    // band's rows start (bands 0 and the last have none).
+    sequence_.clear();
+    parts_.assign(2, 0u);
+    for (std::uint32_t band = 1; band + 1 < bands; ++band) {
+        movableFirst(bandStart_[band], bandStart_[band + 1], true);
+        parts_.push_back(static_cast<std::uint32_t>(sequence_.size()));
     }
+    layOut(shockProjections_, parts_, shockProjectStart_, true);
 }
 
 // Position: sweeps over all contacts, then band by band from the ground up. Velocities are
 // left as the impulses made them, so the projection adds no energy.
 void ParticleCollisions::sweepProjections(const StaticShapes& shapes, const CollisionDef& def) {
     Vec2* const p = sweepPosition_.data();
-    // One contact's position step: push the overlap apart along the current normal, at most
-    // a fifth of the smaller radius at a time.
-    auto project = [&](const ProjectRow& r) {
-        Vec2 normal;
-        double depth;
-        if (r.b == kNoParticle) {
-            const RelaxContact& c = contacts_[r.contact];
-            SurfacePoint sp = shapes.closestPoint(c.shape, p[r.a]);
+    std::uint8_t* const touched = touched_.data();
+    // A contact with a shape: push the centre out along the shape's normal, at most a
+    // fifth of the radius at a time.
+    auto shapeStep = [&](const ProjectColumns& rows) {
+        return [&, p, touched](std::size_t k) {
+            const std::uint32_t a = rows.a[k];
+            const RelaxContact& c = contacts_[rows.contact[k]];
+            SurfacePoint sp = shapes.closestPoint(c.shape, p[a]);
             // Keep the side the contact was found on: a segment has two, and a centre
             // that the other contacts pushed across it must come back across, at once,
             // not be pushed out of the far side (and fall out of the level).
             const bool crossed = dot(sp.normal, c.normal) < 0.0;
             if (crossed) sp = {-sp.distance, c.normal};
-            normal = sp.normal;
-            depth = crossed ? r.reach - sp.distance : std::min(r.reach - sp.distance, r.cap);
-        } else {
-            const Vec2 d = p[r.a] - p[r.b];
-            const double distanceSquared = dot(d, d);
-            if (distanceSquared >= r.reach * r.reach) return;
-            const double L = std::sqrt(distanceSquared);
-            if (L > 0.0) {
-                const Lanes unit = divideBoth(d.x, d.y, L);
-                normal = {unit[0], unit[1]};
-            } else {
-                normal = {0.0, 1.0};
-            }
-            depth = std::min(r.reach - L, r.cap);
-        }
-        if (!(depth > 0.0)) return;
-        const Vec2 move = normal * depth;
-        p[r.a] += move * r.fa;
-        p[r.pushB] -= move * r.fb;
-        touched_[r.a] = 1;
-        touched_[r.pushB] = 1;
+            const double reach = rows.reach[k];
+            const double depth =
+                crossed ? reach - sp.distance : std::min(reach - sp.distance, rows.cap[k]);
+            if (!(depth > 0.0)) return;
+            const Vec2 move = sp.normal * depth;
+            const std::uint32_t pushB = rows.pushB[k];
+            p[a] += move * rows.fa[k];
+            p[pushB] -= move * rows.fb[k];
+            touched[a] = 1;
+            touched[pushB] = 1;
+        };
     };
-    const std::size_t bands = bandStart_.size() - 1;
     for (int sweep = 0; sweep < def.relaxPositionSweeps; ++sweep)
-        for (const ProjectRow& r : projectRows_)
-            project(r);
+        sweepProjectColumns(projections_, 0, projections_.size(), p, touched, lanes_,
+                            shapeStep(projections_));
+    const std::size_t bands = bandStart_.size() - 1;
     for (std::size_t band = 1; band + 1 < bands; ++band)
         for (int sweep = 0; sweep < kShockSweeps; ++sweep)
-            for (std::uint32_t k = shockProjectStart_[band]; k < shockProjectStart_[band + 1]; ++k)
-                project(shockProjectRows_[k]);
+            sweepProjectColumns(shockProjections_, shockProjectStart_[band],
+                                shockProjectStart_[band + 1], p, touched, lanes_,
+                                shapeStep(shockProjections_));
+    if (lanes_)
+        markTouched(projections_, touched, projections_.pushB),
+            markTouched(shockProjections_, touched, shockProjections_.pushB);
 }
 
 } // namespace phys

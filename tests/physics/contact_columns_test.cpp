@@ -1,0 +1,148 @@
+// The contact solver's lane sweeps (contact_columns.h) against its one-row steps: the same
+// rows, swept four at a time and one at a time, end in the same bits, signed zeros and
+// rows that do nothing included. Each run of four rows shares no particle, as in a
+// wavefront, so the order within a run does not matter and the two must agree exactly.
+#include "physics/collision/contact_columns.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+using namespace phys;
+
+namespace {
+
+constexpr std::uint32_t kParticles = 64, kStill = kParticles, kSink = kParticles + 1;
+
+// A value from a few that make the steps branch (zeros of both signs, ones) or random.
+double pick(std::mt19937_64& rng, double scale) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    switch (std::uniform_int_distribution<int>(0, 5)(rng)) {
+    case 0:
+        return 0.0;
+    case 1:
+        return -0.0;
+    case 2:
+        return scale;
+    default:
+        return scale * u(rng);
+    }
+}
+
+// The particles of a run of four: eight distinct ones, each row's a and b.
+std::vector<std::uint32_t> runParticles(std::mt19937_64& rng) {
+    std::vector<std::uint32_t> all(kParticles);
+    for (std::uint32_t i = 0; i < kParticles; ++i)
+        all[i] = i;
+    std::shuffle(all.begin(), all.end(), rng);
+    all.resize(8);
+    return all;
+}
+
+// Calls row(k, a, b) for each row k of `runs` runs of four, where no two rows of a run
+// share a particle.
+template <class Row> void fillRuns(std::mt19937_64& rng, std::size_t runs, Row&& row) {
+    for (std::size_t run = 0; run < runs; ++run) {
+        const auto p = runParticles(rng);
+        for (std::size_t l = 0; l < 4; ++l)
+            row(4 * run + l, p[2 * l], p[2 * l + 1]);
+    }
+}
+
+bool sameBits(double x, double y) {
+    return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y);
+}
+
+bool sameBits(const std::vector<Vec2>& x, const std::vector<Vec2>& y) {
+    for (std::size_t i = 0; i < kParticles + 1; ++i) // the sink's value is never read
+        if (!sameBits(x[i].x, y[i].x) || !sameBits(x[i].y, y[i].y)) return false;
+    return true;
+}
+
+std::vector<Vec2> randomState(std::mt19937_64& rng) {
+    std::vector<Vec2> v(kParticles + 2);
+    for (std::uint32_t i = 0; i < kParticles; ++i)
+        v[i] = {pick(rng, 2.0), pick(rng, 2.0)};
+    return v; // still and sink at rest
+}
+
+} // namespace
+
+TEST(ContactColumns, FourImpulseRowsAtOnceGiveTheBitsOfOneAtATime) {
+    if (!contactLanesAvailable()) std::printf("no AVX2 here: both sweeps run one row at a time\n");
+    std::mt19937_64 rng(11);
+    for (int trial = 0; trial < 300; ++trial) {
+        ImpulseColumns rows;
+        const std::size_t runs = 8;
+        rows.resize(4 * runs);
+        fillRuns(rng, runs, [&](std::size_t k, std::uint32_t a, std::uint32_t b) {
+            const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
+            rows.a[k] = a;
+            rows.readB[k] = kind == 0 ? kStill : b; // a shape, or a particle
+            const double angle = pick(rng, 3.0);
+            rows.nx[k] = std::cos(angle), rows.ny[k] = std::sin(angle);
+            rows.closing[k] = pick(rng, 0.5), rows.friction[k] = std::abs(pick(rng, 0.6));
+            for (ImpulseColumns::Masses* m : {&rows.all, &rows.band}) {
+                const bool bMoves = kind >= 2;
+                m->wa[k] = kind == 3 ? 0.0 : 10.0, m->wb[k] = bMoves ? 10.0 : 0.0;
+                const double sum = m->wa[k] + m->wb[k];
+                m->mass[k] = kind == 1 && k % 4 == 3 ? 0.0 : 1.0 / sum; // no step at all
+                m->pushB[k] = bMoves ? rows.readB[k] : kSink;
+            }
+            rows.normalImpulse[k] = std::abs(pick(rng, 0.2));
+            rows.tangentImpulse[k] = pick(rng, 0.1);
+        });
+        ImpulseColumns one = rows;
+        std::vector<Vec2> v = randomState(rng), w = v;
+        std::vector<std::uint8_t> touchedLanes(kParticles + 2), touchedOne(kParticles + 2);
+        for (int sweep = 0; sweep < 3; ++sweep) {
+            sweepImpulseColumns(rows, rows.all, 0, rows.size(), v.data(), touchedLanes.data(),
+                                contactLanesAvailable());
+            sweepImpulseColumns(one, one.all, 0, one.size(), w.data(), touchedOne.data(), false);
+        }
+        if (contactLanesAvailable()) markTouched(rows, touchedLanes.data(), rows.all.pushB);
+        ASSERT_TRUE(sameBits(v, w)) << trial;
+        for (std::size_t k = 0; k < rows.size(); ++k) {
+            ASSERT_TRUE(sameBits(rows.normalImpulse[k], one.normalImpulse[k])) << trial << " " << k;
+            ASSERT_TRUE(sameBits(rows.tangentImpulse[k], one.tangentImpulse[k]))
+                << trial << " " << k;
+        }
+        for (std::uint32_t i = 0; i < kParticles; ++i)
+            ASSERT_EQ(touchedLanes[i], touchedOne[i]) << trial << " " << i;
+    }
+}
+
+TEST(ContactColumns, FourProjectionRowsAtOnceGiveTheBitsOfOneAtATime) {
+    std::mt19937_64 rng(12);
+    for (int trial = 0; trial < 300; ++trial) {
+        ProjectColumns rows;
+        const std::size_t runs = 8;
+        rows.resize(4 * runs);
+        fillRuns(rng, runs, [&](std::size_t k, std::uint32_t a, std::uint32_t b) {
+            const bool bMoves = std::uniform_int_distribution<int>(0, 2)(rng) > 0;
+            rows.a[k] = a, rows.b[k] = b;
+            rows.pushB[k] = bMoves ? b : kSink;
+            rows.reach[k] = std::abs(pick(rng, 1.5)), rows.cap[k] = std::abs(pick(rng, 0.3));
+            rows.fa[k] = bMoves ? 0.5 : 1.0, rows.fb[k] = bMoves ? 0.5 : 0.0;
+        });
+        ProjectColumns one = rows;
+        std::vector<Vec2> p = randomState(rng), q = p;
+        // Some pairs on top of each other: the normal is then straight up.
+        for (std::size_t k = 0; k < rows.size(); k += 5)
+            p[rows.b[k]] = p[rows.a[k]], q[rows.b[k]] = q[rows.a[k]];
+        std::vector<std::uint8_t> touchedLanes(kParticles + 2), touchedOne(kParticles + 2);
+        auto noShapes = [](std::size_t) { FAIL() << "no shape rows here"; };
+        for (int sweep = 0; sweep < 3; ++sweep) {
+            sweepProjectColumns(rows, 0, rows.size(), p.data(), touchedLanes.data(),
+                                contactLanesAvailable(), noShapes);
+            sweepProjectColumns(one, 0, one.size(), q.data(), touchedOne.data(), false, noShapes);
+        }
+        if (contactLanesAvailable()) markTouched(rows, touchedLanes.data(), rows.pushB);
+        ASSERT_TRUE(sameBits(p, q)) << trial;
+        for (std::uint32_t i = 0; i < kParticles; ++i)
+            ASSERT_EQ(touchedLanes[i], touchedOne[i]) << trial << " " << i;
+    }
+}
