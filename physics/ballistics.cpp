@@ -5,10 +5,6 @@
 
 namespace phys {
 
-BallisticState ballisticState(Vec2 p0, Vec2 v0, Vec2 g, double t) {
-    return {p0 + v0 * t + g * (0.5 * t * t), v0 + g * t};
-}
-
 double apexTime(Vec2 v0, double g) { return v0.y > 0.0 ? v0.y / g : 0.0; }
 
 Vec2 apex(Vec2 p0, Vec2 v0, double g) {

@@ -19,7 +19,10 @@ struct BallisticState {
 };
 
 /// State at time t after launch from (p0, v0) under the gravity vector g (m/s^2).
-BallisticState ballisticState(Vec2 p0, Vec2 v0, Vec2 g, double t);
+/// Inline: the closed-form flight asks for it twice a particle a step.
+inline BallisticState ballisticState(Vec2 p0, Vec2 v0, Vec2 g, double t) {
+    return {p0 + v0 * t + g * (0.5 * t * t), v0 + g * t};
+}
 
 // The functions below take g as the magnitude (m/s^2, > 0) of gravity pointing down.
 
