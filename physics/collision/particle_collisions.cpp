@@ -3,6 +3,7 @@
 #include "physics/collision/contact_resolver.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <span>
@@ -34,6 +35,11 @@ Vec2 withoutInward(Vec2 a, Vec2 n) {
     return an < 0.0 ? a - n * an : a;
 }
 
+// Both components +0 (not -0): then v / h is +0 for any h > 0, without dividing.
+bool isPositiveZero(Vec2 v) {
+    return (std::bit_cast<std::uint64_t>(v.x) | std::bit_cast<std::uint64_t>(v.y)) == 0;
+}
+
 template <class T> void growTo(std::vector<T>& v, std::size_t n) {
     if (v.size() < n) v.resize(n);
 }
@@ -60,8 +66,14 @@ void ParticleCollisions::buildPaths(const ParticleSet& set, double h) {
         const Vec2 p1{set.px[i], set.py[i]}, v1{set.vx[i], set.vy[i]};
         path_[i] = {p0, v0, (p1 - p0 - v0 * h) * k, 0.0};
         sv_[i] = v0;
-        sa_[i] = (v1 - v0) / h;
-        accel0_[i] = length(sa_[i]);
+        const Vec2 dv = v1 - v0;
+        if (isPositiveZero(dv)) { // a sleeper, say: 0 / h is +0, no division, no root
+            sa_[i] = {};
+            accel0_[i] = 0.0;
+        } else {
+            sa_[i] = dv / h;
+            accel0_[i] = length(sa_[i]);
+        }
         touched_[i] = 0;
     }
 }
@@ -86,6 +98,13 @@ void ParticleCollisions::buildProxy(const ParticleSet& set, const CollisionDef& 
     }
     kinds_[i] = moving(set, i) ? ProxyKind::Moving : ProxyKind::Resting;
     const PathMotion& m = path_[i];
+    const double r = set.radius[i] * (1.0 + grow) + def.toiTolerance;
+    if (isPositiveZero(m.v) && isPositiveZero(m.a)) {
+        // A path at rest (a sleeper's): the box of where it is. The same bits as below,
+        // where the path's points differ from m.p at most in the sign of a zero.
+        boxes_[i] = {m.p - Vec2{r, r}, m.p + Vec2{r, r}};
+        return;
+    }
     const Vec2 end = m.position(h);
     // A quadratic path lies in the triangle of its Bezier control points:
     // start, start + v T/2, end.
@@ -96,7 +115,6 @@ void ParticleCollisions::buildProxy(const ParticleSet& set, const CollisionDef& 
             lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
             hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
         }
-    const double r = set.radius[i] * (1.0 + grow) + def.toiTolerance;
     boxes_[i] = {lo - Vec2{r, r}, hi + Vec2{r, r}};
 }
 
@@ -648,7 +666,8 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
     // side it crossed in the step (the passes ran out) is found, and puts it back.
     for (std::size_t i = 0; i < n; ++i) {
         const Vec2 start{x0_[i], y0_[i]};
-        path_[i] = {start, (set.position(static_cast<ParticleId>(i)) - start) / h, {}, 0.0};
+        const Vec2 moved = set.position(static_cast<ParticleId>(i)) - start;
+        path_[i] = {start, isPositiveZero(moved) ? Vec2{} : moved / h, {}, 0.0};
     }
     buildProxies(set, shapes, def, h, false, kSpeculative);
     findPairs(set, def, h);
