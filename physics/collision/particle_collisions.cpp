@@ -687,7 +687,9 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
         const double wa = moving(set, a) ? set.invMass[a] : 0.0;
         const double wb = !isStatic && moving(set, b) ? set.invMass[b] : 0.0;
         if (!(wa + wb > 0.0)) continue;
-        RelaxContact c;
+        // Built in place: a contact written field by field and then copied whole waits
+        // for those writes to land (that copy was most of this loop's time).
+        RelaxContact& c = contacts_.emplace_back();
         c.a = a;
         c.proxy = b;
         if (isStatic) {
@@ -712,7 +714,10 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
             c.friction = mats.pair(set.material[a], set.material[b]).staticFriction;
         }
         const double reach = set.radius[a] + (isStatic ? 0.0 : set.radius[b]);
-        if (!(c.depth > -def.toiTolerance - kSpeculative * reach)) continue;
+        if (!(c.depth > -def.toiTolerance - kSpeculative * reach)) {
+            contacts_.pop_back();
+            continue;
+        }
         if (c.depth < -def.toiTolerance) {
             // A gap: a constraint only if it closes as slowly as a resting contact would
             // (Millington's rule, restingLimit). One closing faster is an impact of the
@@ -721,7 +726,10 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
             const Vec2 vb = isStatic ? Vec2{} : set.velocity(b);
             const double approach = -dot(set.velocity(a) - vb, c.normal);
             const double accel = accel0_[a] + (isStatic ? 0.0 : accel0_[b]);
-            if (approach > def.restingSpeed + accel * h) continue;
+            if (approach > def.restingSpeed + accel * h) {
+                contacts_.pop_back();
+                continue;
+            }
         }
         // The closing speed the gap allows; a gap within the slop counts as touching, so
         // that what projection left a hair apart does not keep closing on it for ever.
@@ -737,7 +745,6 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
         if (!isStatic && wb == 0.0) level_[b] = 0;
         if (c.support == 1 && wa > 0.0 && wb == 0.0) level_[a] = 1;
         if (c.support == -1 && wb > 0.0 && wa == 0.0) level_[b] = 1;
-        contacts_.push_back(c);
     }
     if (contacts_.empty()) {
         warm_.clear();
