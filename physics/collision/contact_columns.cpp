@@ -10,10 +10,6 @@
 
 namespace phys {
 
-void ImpulseColumns::clear() {
-    resize(0);
-}
-
 void ImpulseColumns::resize(std::size_t n) {
     for (auto* c : {&a, &readB, &all.pushB, &band.pushB})
         c->resize(n);
@@ -21,10 +17,6 @@ void ImpulseColumns::resize(std::size_t n) {
                     &band.mass, &normalImpulse, &tangentImpulse})
         c->resize(n);
     changed.resize(n, 0);
-}
-
-void ProjectColumns::clear() {
-    resize(0);
 }
 
 void ProjectColumns::resize(std::size_t n) {

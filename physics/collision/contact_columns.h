@@ -11,7 +11,7 @@
 // Particle indices point into the sweeps' copies of the velocities and positions, which
 // have two slots past the particles: still (at rest: what a shape "moves" at) and sink
 // (where a push on something immovable goes), so no row branches on either. A padding
-// row reads still, writes sink and has no mass: it does nothing.
+// row stands at the sink against still, with no mass and no reach: it does nothing.
 #pragma once
 
 #include "physics/vec2.h"
@@ -40,7 +40,6 @@ struct ImpulseColumns {
     std::vector<std::uint64_t> changed;
 
     std::size_t size() const { return a.size(); }
-    void clear();
     void resize(std::size_t n);
 };
 
@@ -54,7 +53,6 @@ struct ProjectColumns {
     std::vector<std::uint64_t> changed;              ///< as for ImpulseColumns
 
     std::size_t size() const { return a.size(); }
-    void clear();
     void resize(std::size_t n);
 };
 

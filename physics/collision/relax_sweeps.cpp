@@ -8,7 +8,7 @@
 //               shock propagation are worked out once per contact, not once per visit;
 //   wavefronts  where the processor has AVX2, each sweep's rows are laid out in its
 //               wavefronts (wavefronts.h) and swept four at a time: the bits of the sweep
-//               in its own order, in about 600 steps of four for 2,500 contacts;
+//               in its own order, in about 650 steps of four for 2,500 contacts;
 //   copies      the velocities and positions as pairs, with two slots past the
 //               particles: still, at rest, which a shape reads as its velocity, and sink,
 //               which takes the push on an immovable side, so no visit branches on either;
