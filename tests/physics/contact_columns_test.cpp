@@ -42,10 +42,12 @@ std::vector<std::uint32_t> runParticles(std::mt19937_64& rng) {
     return all;
 }
 
-// Calls row(k, a, b) for each row k of `runs` runs of four, where no two rows of a run
-// share a particle.
-template <class Row> void fillRuns(std::mt19937_64& rng, std::size_t runs, Row&& row) {
-    for (std::size_t run = 0; run < runs; ++run) {
+// Sizes `rows` to eight runs of four and calls row(k, a, b) for each row k, where no two
+// rows of a run share a particle.
+template <class Columns, class Row> void fillRuns(std::mt19937_64& rng, Columns& rows, Row&& row) {
+    constexpr std::size_t kRuns = 8;
+    rows.resize(4 * kRuns);
+    for (std::size_t run = 0; run < kRuns; ++run) {
         const auto p = runParticles(rng);
         for (std::size_t l = 0; l < 4; ++l)
             row(4 * run + l, p[2 * l], p[2 * l + 1]);
@@ -76,9 +78,7 @@ TEST(ContactColumns, FourImpulseRowsAtOnceGiveTheBitsOfOneAtATime) {
     std::mt19937_64 rng(11);
     for (int trial = 0; trial < 300; ++trial) {
         ImpulseColumns rows;
-        const std::size_t runs = 8;
-        rows.resize(4 * runs);
-        fillRuns(rng, runs, [&](std::size_t k, std::uint32_t a, std::uint32_t b) {
+        fillRuns(rng, rows, [&](std::size_t k, std::uint32_t a, std::uint32_t b) {
             const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
             rows.a[k] = a;
             rows.readB[k] = kind == 0 ? kStill : b; // a shape, or a particle
@@ -119,9 +119,7 @@ TEST(ContactColumns, FourProjectionRowsAtOnceGiveTheBitsOfOneAtATime) {
     std::mt19937_64 rng(12);
     for (int trial = 0; trial < 300; ++trial) {
         ProjectColumns rows;
-        const std::size_t runs = 8;
-        rows.resize(4 * runs);
-        fillRuns(rng, runs, [&](std::size_t k, std::uint32_t a, std::uint32_t b) {
+        fillRuns(rng, rows, [&](std::size_t k, std::uint32_t a, std::uint32_t b) {
             const bool bMoves = std::uniform_int_distribution<int>(0, 2)(rng) > 0;
             rows.a[k] = a, rows.b[k] = b;
             rows.pushB[k] = bMoves ? b : kSink;
