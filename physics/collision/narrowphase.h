@@ -65,6 +65,13 @@ std::optional<double> sweptSphere(const Segment& s, double r, Vec2 p0, Vec2 p1);
 std::optional<double> sweptSphere(const Circle& c, double r, Vec2 p0, Vec2 p1);
 std::optional<double> sweptSphere(const ConvexPolygon& poly, double r, Vec2 p0, Vec2 p1);
 
+/// max(1, |v|), without the root when |v|^2 <= 1: the root of a number at most 1 is at
+/// most 1 (it is correctly rounded and sqrt(1) = 1), so the same bits. A resting pair,
+/// which every pass of a pile tests, mostly moves slower than 1 m/s.
+inline double atLeastOne(Vec2 v) {
+    return lengthSquared(v) <= 1.0 ? 1.0 : std::max(1.0, length(v));
+}
+
 /// Finds the time of impact in [m.t0, tEnd] of a sphere of `radius` on path `m` with
 /// a static shape (Shape: Segment, Circle or ConvexPolygon; see the file comment).
 /// A sphere that starts touching counts only if it is heading in (or already inside).
@@ -83,8 +90,8 @@ std::optional<double> timeOfImpact(const Shape& shape, double radius, const Path
         // rounding leaves v.n ~ +1e-17 after a resting contact, which returns at once).
         // Normal components below rounding (a resolved contact leaves ~1e-17) are zero.
         const double vn = dot(start.normal, m.v), an = dot(start.normal, m.a);
-        const double vEps = 1e-12 * std::max(1.0, length(m.v));
-        const double aEps = 1e-9 * std::max(1.0, length(m.a));
+        const double vEps = 1e-12 * atLeastOne(m.v);
+        const double aEps = 1e-9 * atLeastOne(m.a);
         if (g0 < -s.tolerance || vn < -vEps || (vn <= vEps && an < -aEps)) return t0;
         if (an < -aEps && -2.0 * vn / an <= tEnd - t0) return t0 - 2.0 * vn / an;
         return std::nullopt;

@@ -23,9 +23,10 @@ SurfacePoint closestPoint(const Segment& s, Vec2 p) {
     const double t = len2 > 0.0 ? std::clamp(dot(p - s.a, ab) / len2, 0.0, 1.0) : 0.0;
     const Vec2 d = p - (s.a + t * ab);
     const double dist = length(d);
+    if (dist > 1e-300) return {dist, d / dist};
     // On the segment itself the side is undefined; the left normal is as good as any.
-    const Vec2 side = unitOr(perp(ab), {0.0, 1.0});
-    return {dist, dist > 1e-300 ? d / dist : side};
+    // (Worked out only here: its root and division kept every call waiting.)
+    return {dist, unitOr(perp(ab), {0.0, 1.0})};
 }
 
 SurfacePoint closestPoint(const Circle& c, Vec2 p) {
