@@ -24,8 +24,8 @@ SurfacePoint closestPoint(const Segment& s, Vec2 p) {
     const Vec2 d = p - (s.a + t * ab);
     const double dist = length(d);
     if (dist > 1e-300) return {dist, d / dist};
-    // On the segment itself the side is undefined; the left normal is as good as any.
-    // (Worked out only here: its root and division kept every call waiting.)
+    // On the segment itself the side is undefined; the left normal is as good as any
+    // (worked out only here: it costs a root and two divisions).
     return {dist, unitOr(perp(ab), {0.0, 1.0})};
 }
 

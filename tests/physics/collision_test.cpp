@@ -6,8 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <vector>
 
 using namespace phys;
 
@@ -195,6 +198,31 @@ TEST(Shapes, ClosestPointDistancesAreExact) {
     // The swept sphere (capsule) test: radius 0.5 around the segment, from (1, 3) down.
     EXPECT_DOUBLE_EQ(*sweptSphere(s, 0.5, {1.0, 3.0}, {1.0, -2.0}), 0.5);
     EXPECT_FALSE(sweptSphere(s, 0.5, {3.0, 3.0}, {3.0, -2.0}));
+    // A point on the segment has no side; it gets the segment's left normal.
+    const SurfacePoint on = closestPoint(s, {1.5, 0.0});
+    EXPECT_EQ(on.distance, 0.0);
+    EXPECT_EQ(on.normal.x, 0.0);
+    EXPECT_EQ(on.normal.y, 1.0);
+    EXPECT_EQ(closestPoint(s, {1.5, -0.25}).normal.y, -1.0);
+}
+
+// The time of impact's tolerances scale by max(1, |v|), taken without the square root
+// when |v|^2 <= 1: the same bits as with it, just above and below 1 and far from it.
+TEST(Shapes, AtLeastOneIsMaxOfOneAndTheLengthBitForBit) {
+    std::vector<Vec2> vs{{0.0, 0.0},  {1.0, 0.0}, {0.0, -1.0},   {0.6, 0.8},
+                         {-0.8, 0.6}, {3.0, 4.0}, {1e-300, 0.0}, {1e300, 1e300}};
+    for (double x = 1.0 - 64 * 0x1p-53; x <= 1.0 + 64 * 0x1p-52; x = std::nextafter(x, 2.0))
+        vs.push_back({x, 0.0}), vs.push_back({x * 0.6, x * 0.8});
+    for (int k = 0; k < 2000; ++k) {
+        const double angle = 0.001 * 3.1 * k, r = 0.5 + 0.0005 * k; // lengths 0.5 to 1.5
+        vs.push_back({r * std::cos(angle), r * std::sin(angle)});
+    }
+    for (const Vec2 v : vs) {
+        const double expected = std::max(1.0, length(v));
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(atLeastOne(v)),
+                  std::bit_cast<std::uint64_t>(expected))
+            << v.x << ", " << v.y;
+    }
 }
 
 // Coulomb friction on a flat floor: a particle sliding at v0 stops after
