@@ -141,7 +141,7 @@ class ParticleCollisions {
     CacheState checkPairCache(const CollisionDef& def);
     void buildPairCache(const ParticleSet& set, const CollisionDef& def, double h);
     void patchPairCache(const ParticleSet& set, double h);
-    /// Particle i's box grown by a radius and a step of its path's motion.
+    /// Particle i's box grown by half a radius and a step of its path's motion.
     Aabb fatBox(const ParticleSet& set, std::size_t i, double h) const;
     void selectLivePairs();
     void takeCachedPairsAsLive();
