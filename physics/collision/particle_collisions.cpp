@@ -491,8 +491,8 @@ ParticleCollisions::Resolution ParticleCollisions::resolvePair(const Candidate& 
     const std::size_t i = c.a, j = c.b;
     // A carried pair (later_passes.cpp) was left to the solver by the last pass, and no
     // contact has changed either path since: until one in this pass does, it meets the
-    // same paths, velocities, masses and sleepers as then, and is left again. (In a heap
-    // still bouncing through all eight passes, thousands of pairs a pass.)
+    // same paths, velocities, masses and sleepers as then, and is left again. (A heap
+    // whose last awake balls bounce through all eight passes carries hundreds a pass.)
     const bool unchanged = pathChanged_[i] != pass_ && pathChanged_[j] != pass_;
     if (c.carried && unchanged) return Resolution::Deferred;
     const double rj = set.radius[j], ri = set.radius[i];
