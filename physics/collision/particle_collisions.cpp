@@ -125,7 +125,7 @@ void ParticleCollisions::buildProxy(const ParticleSet& set, const CollisionDef& 
 // filters 40 % fewer kept pairs (13,500 against 8,000 in the 2,000-ball pile, where
 // 2,400 touch), for a few more mends while the pile still slides.
 Aabb ParticleCollisions::fatBox(const ParticleSet& set, std::size_t i, double h) const {
-    const double margin = 0.5 * set.radius[i] + length(path_[i].v) * h;
+    const double margin = kFatBoxPlay * set.radius[i] + length(path_[i].v) * h;
     return {boxes_[i].lo - Vec2{margin, margin}, boxes_[i].hi + Vec2{margin, margin}};
 }
 

@@ -141,8 +141,9 @@ class ParticleCollisions {
     CacheState checkPairCache(const CollisionDef& def);
     void buildPairCache(const ParticleSet& set, const CollisionDef& def, double h);
     void patchPairCache(const ParticleSet& set, double h);
-    /// Particle i's box grown by half a radius and a step of its path's motion.
+    /// Particle i's box grown by kFatBoxPlay radii and a step of its path's motion.
     Aabb fatBox(const ParticleSet& set, std::size_t i, double h) const;
+    static constexpr double kFatBoxPlay = 0.5; ///< radii of play in a fat box (fatBox)
     void selectLivePairs();
     void takeCachedPairsAsLive();
     void detect(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
