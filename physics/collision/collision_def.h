@@ -40,6 +40,11 @@ struct CollisionDef {
     /// the same candidates, so the same bits, for the cost of the changes. Off: every
     /// pass detects over every particle.
     bool redetectChangesOnly = true;
+    /// A sub-step works only on the active particles: a sleeper still as a sub-step left
+    /// it (settled) keeps its path and boxes, and costs nothing but its contacts with the
+    /// awake. The same bits, for the cost of the awake particles. Off: every sub-step
+    /// works on every particle.
+    bool skipSettled = true;
     /// Resting contacts between two free particles (a pile, a stack) go to the contact
     /// solver at the end of the step, which settles them all at once, instead of pass
     /// after pass settling them one layer at a time; so does a sleeper lying on a free

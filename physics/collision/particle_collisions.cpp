@@ -44,7 +44,66 @@ template <class T> void growTo(std::vector<T>& v, std::size_t n) {
     if (v.size() < n) v.resize(n);
 }
 
+bool sameBits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+// How far a proxy's box reaches past its path: the radius, grown by `grow` of itself, and
+// the tolerance.
+double proxyReach(double radius, double grow, const CollisionDef& def) {
+    return radius * (1.0 + grow) + def.toiTolerance;
+}
+
+Aabb boxAround(Vec2 p, double r) {
+    return {p - Vec2{r, r}, p + Vec2{r, r}};
+}
+
 } // namespace
+
+// One pass over the flags a sub-step (and over a sleeper's position and radius) finds the
+// particles to work on, where a dozen passes over every particle did the work. A particle
+// is settled when it is asleep at rest (velocity +0, as falling asleep leaves it) or its
+// slot is empty, and its state is the one a sub-step worked on last, bit for bit, with
+// the same tolerance (its boxes reach that far; at rest, they do not depend on the step),
+// and no contact has changed its path since (markChanged). A sleeper the last sub-step
+// worked on awake, or one that woke, has other flags than its record, so it is active.
+void ParticleCollisions::selectActive(const ParticleSet& set, const CollisionDef& def, bool all) {
+    const std::size_t n = set.slots();
+    settledFlags_.resize(n, kUnsettled);
+    settledAt_.resize(n);
+    activeMark_.resize(n);
+    const bool sameTolerance = sameBits(def.toiTolerance, settledTolerance_);
+    settledTolerance_ = def.toiTolerance;
+    active_.resize(n);
+    std::uint32_t* const active = active_.data();
+    std::size_t count = 0;
+    settledAsleep_ = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t f = set.flags[i];
+        const bool rests =
+            !all && (!(f & kAlive) || ((f & kSleeping) && isPositiveZero({set.vx[i], set.vy[i]})));
+        active[count] = static_cast<std::uint32_t>(i);
+        if (!rests) { // awake (or every particle): active, and not settled after
+            activeMark_[i] = 1;
+            ++count;
+            settledFlags_[i] = kUnsettled;
+            continue;
+        }
+        Place& at = settledAt_[i];
+        const bool settled = sameTolerance && f == settledFlags_[i] && sameBits(set.px[i], at.x) &&
+                             sameBits(set.py[i], at.y) && sameBits(set.radius[i], at.radius);
+        activeMark_[i] = settled ? 0 : 1;
+        if (settled) {
+            settledAsleep_ += (f & kAlive) ? 1 : 0;
+            continue;
+        }
+        ++count;
+        settledFlags_[i] = f;
+        at = {set.px[i], set.py[i], set.radius[i]};
+    }
+    active_.resize(count);
+    stats_.active += static_cast<int>(count);
+}
 
 void ParticleCollisions::beginSubstep(const ParticleSet& set) {
     const std::size_t n = set.slots();
@@ -61,7 +120,7 @@ void ParticleCollisions::buildPaths(const ParticleSet& set, double h) {
     growTo(path_, n), growTo(sv_, n), growTo(sa_, n), growTo(touched_, n), growTo(resting_, n);
     growTo(pathChanged_, n), growTo(accel0_, n);
     const double k = 2.0 / (h * h);
-    for (std::size_t i = 0; i < n; ++i) {
+    for (const std::uint32_t i : active_) {
         const Vec2 p0{x0_[i], y0_[i]}, v0{vx0_[i], vy0_[i]};
         const Vec2 p1{set.px[i], set.py[i]}, v1{set.vx[i], set.vy[i]};
         path_[i] = {p0, v0, (p1 - p0 - v0 * h) * k, 0.0};
@@ -86,23 +145,42 @@ void ParticleCollisions::buildProxies(const ParticleSet& set, const StaticShapes
     kinds_.resize(n);
     staticIndex_.update(shapes);
     staticHits_.reserve(shapes.count()); // the most a query can return: no growth later
-    for (std::size_t i = 0; i < n; ++i)
+    // New slots: the live pairs are selected again before what these hold is read.
+    if (liveKinds_.size() != n) {
+        liveKinds_.resize(n, ProxyKind::None);
+        kindsChanged_ = true;
+    }
+    for (const std::uint32_t i : active_)
         buildProxy(set, def, i, h, atEndOnly, grow);
+}
+
+void ParticleCollisions::boxSettlingForSolver(const ParticleSet& set, const CollisionDef& def) {
+    solverBoxes_.resize(set.slots());
+    for (const std::uint32_t i : active_) {
+        if (settledFlags_[i] == kUnsettled || kinds_[i] == ProxyKind::None) continue;
+        // At rest, and no contact changed its path: buildProxy's box of a path at rest.
+        const Aabb box = boxAround(path_[i].p, proxyReach(set.radius[i], kSpeculative, def));
+        solverBoxes_[i] = box;
+        // No solver checked this box against its fat box: one outside is checked (and the
+        // cache mended) in the next sub-step, which works on it again.
+        if (!(i < fatBoxes_.size() && fatBoxes_[i].contains(box))) settledFlags_[i] = kUnsettled;
+    }
 }
 
 void ParticleCollisions::buildProxy(const ParticleSet& set, const CollisionDef& def, std::size_t i,
                                     double h, bool atEndOnly, double grow) {
-    if ((set.flags[i] & (kAlive | kNoCollide)) != kAlive) {
-        kinds_[i] = ProxyKind::None;
-        return;
-    }
-    kinds_[i] = moving(set, i) ? ProxyKind::Moving : ProxyKind::Resting;
+    const ProxyKind kind = (set.flags[i] & (kAlive | kNoCollide)) != kAlive ? ProxyKind::None
+                           : moving(set, i)                                 ? ProxyKind::Moving
+                                                                            : ProxyKind::Resting;
+    kindsChanged_ |= kind != liveKinds_[i];
+    kinds_[i] = kind;
+    if (kind == ProxyKind::None) return;
     const PathMotion& m = path_[i];
-    const double r = set.radius[i] * (1.0 + grow) + def.toiTolerance;
+    const double r = proxyReach(set.radius[i], grow, def);
     if (isPositiveZero(m.v) && isPositiveZero(m.a)) {
         // A path at rest (a sleeper's): the box of where it is. The same bits as below,
         // where the path's points differ from m.p at most in the sign of a zero.
-        boxes_[i] = {m.p - Vec2{r, r}, m.p + Vec2{r, r}};
+        boxes_[i] = boxAround(m.p, r);
         return;
     }
     const Vec2 end = m.position(h);
@@ -147,12 +225,16 @@ ParticleCollisions::CacheState ParticleCollisions::checkPairCache(const Collisio
     if (!cacheValid_ || fatBoxes_.size() != n || cachedShapes_ != staticIndex_.version() ||
         cachedBroadPhase_ != def.broadPhase || cachedCellSize_ != def.gridCellSize)
         return CacheState::Rebuild;
-    for (std::size_t i = 0; i < n; ++i) {
+    // A settled particle passes: its kind and boxes are those it passed with (or that its
+    // fat box was mended or rebuilt from), and the solver's box, kSpeculative radii
+    // bigger than the passes', stays inside a fat box grown by kFatBoxPlay radii from
+    // either (boxSettlingForSolver checks the one case where no solver did).
+    for (const std::uint32_t i : active_) {
         const ProxyKind k = kinds_[i], f0 = fatKinds_[i];
         const bool fewerPairs = k == f0 || k == ProxyKind::None || f0 == ProxyKind::Moving;
         if (fewerPairs && (k == ProxyKind::None || fatBoxes_[i].contains(boxes_[i]))) continue;
         if (!def.patchPairs || escaped_.size() == kMostPatched) return CacheState::Rebuild;
-        escaped_.push_back(static_cast<std::uint32_t>(i));
+        escaped_.push_back(i);
     }
     return escaped_.empty() ? CacheState::Holds : CacheState::Patch;
 }
@@ -295,6 +377,7 @@ void ParticleCollisions::selectLivePairs() {
         if (pairable(a, b)) livePairs_.push_back(p);
     }
     liveKinds_ = kinds_;
+    kindsChanged_ = false;
     ++livePairsVersion_;
 }
 
@@ -302,6 +385,7 @@ void ParticleCollisions::selectLivePairs() {
 void ParticleCollisions::takeCachedPairsAsLive() {
     livePairs_ = cachedPairs_;
     liveKinds_ = fatKinds_;
+    kindsChanged_ = false;
     ++livePairsVersion_;
 }
 
@@ -320,7 +404,7 @@ void ParticleCollisions::findPairs(const ParticleSet& set, const CollisionDef& d
     case CacheState::Holds:
         break;
     }
-    if (kinds_ != liveKinds_) selectLivePairs();
+    if (kindsChanged_) selectLivePairs();
     // Kept pairs whose exact boxes overlap; without branches (which pass is a coin toss).
     const auto n = static_cast<std::uint32_t>(boxes_.size());
     pairs_.resize(livePairs_.size());
@@ -604,7 +688,7 @@ ParticleCollisions::Resolution ParticleCollisions::resolvePair(const Candidate& 
 }
 
 void ParticleCollisions::finish(ParticleSet& set, double h) {
-    for (std::size_t i = 0; i < set.slots(); ++i) {
+    for (const std::uint32_t i : active_) {
         if (!touched_[i]) continue;
         const PathMotion& m = path_[i];
         const Vec2 p = m.position(h), v = sv_[i] + sa_[i] * (h - m.t0);
@@ -617,6 +701,7 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
                                       const MaterialTable& mats, const CollisionDef& def, double h,
                                       double tickTime, Vec2 up) {
     toi_ = {def.continuous, def.bisectionHalvings, def.toiTolerance, def.maxAdvanceIterations};
+    selectActive(set, def, !def.skipSettled);
     buildPaths(set, h);
     bool converged = false;
     deferred_.clear();
@@ -645,6 +730,7 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
         reportDeferred(set);
     } else {
         warm_.clear(); // nothing to carry over to the next sub-step
+        boxSettlingForSolver(set, def);
     }
 }
 
@@ -672,14 +758,17 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
     const auto t0 = clock_.now(); // profile only
     const std::size_t n = set.slots();
     // Boxes from where each particle started the step to where it ends: a shape whose
-    // side it crossed in the step (the passes ran out) is found, and puts it back.
-    for (std::size_t i = 0; i < n; ++i) {
+    // side it crossed in the step (the passes ran out) is found, and puts it back. (A
+    // settled particle's path is this one too: at rest where it started.)
+    for (const std::uint32_t i : active_) {
         const Vec2 start{x0_[i], y0_[i]};
         const Vec2 moved = set.position(static_cast<ParticleId>(i)) - start;
         path_[i] = {start, isPositiveZero(moved) ? Vec2{} : moved / h, {}, 0.0};
     }
+    std::swap(boxes_, solverBoxes_);
     buildProxies(set, shapes, def, h, false, kSpeculative);
     findPairs(set, def, h);
+    std::swap(boxes_, solverBoxes_);
     detectMicros_ += clock_.microsSince(t0);
 
     // The contacts: overlapping, touching, or nearly (speculative: a gap below
@@ -687,8 +776,10 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
     // no more than that), with something movable.
     const auto slots = static_cast<std::uint32_t>(n);
     contacts_.clear();
-    growTo(level_, n);
-    std::fill(level_.begin(), level_.begin() + static_cast<std::ptrdiff_t>(n), kUnsupported);
+    // Every level is kUnsupported outside a solve (the solve puts its bodies' back).
+    if (level_.size() < n) level_.resize(n, kUnsupported);
+    growTo(bodyMark_, n), growTo(bodyIndex_, n);
+    bodies_.clear();
     for (const ProxyPair& pair : pairs_) {
         const std::uint32_t a = pair.first, b = pair.second;
         const bool isStatic = b >= slots;
@@ -754,12 +845,14 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
         if (!isStatic && wb == 0.0) level_[b] = 0;
         if (c.support == 1 && wa > 0.0 && wb == 0.0) level_[a] = 1;
         if (c.support == -1 && wb > 0.0 && wa == 0.0) level_[b] = 1;
+        addBody(a);
+        if (!isStatic) addBody(b);
     }
     if (contacts_.empty()) {
         warm_.clear();
         return;
     }
-    orderContactsByLevel(n);
+    orderContactsByLevel();
     sweepContacts(set, shapes, def);
 
     warm_.clear();
@@ -771,8 +864,11 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
         resting_[c.a] = 1;
         if (c.b != kNoParticle) resting_[c.b] = 1;
     }
-    for (std::size_t i = 0; i < n; ++i)
+    for (const std::uint32_t i : bodies_) {
         if (touched_[i]) set.flags[i] &= ~kHistory;
+        bodyMark_[i] = 0;
+        level_[i] = kUnsupported;
+    }
 }
 
 // The resting pairs the passes left to the solver are contacts of the tick too (a shell
@@ -811,8 +907,11 @@ void ParticleCollisions::reportDeferred(const ParticleSet& set) {
 // contactOrder_: the contacts by band (the level of their upper particle), a counting sort,
 // so the pair order, which is fixed, breaks ties. Levels spread from the particles the
 // ground holds up (level 1) to the particles they hold up, breadth first; particles that
-// nothing connects to the ground this way come last.
-void ParticleCollisions::orderContactsByLevel(std::size_t n) {
+// nothing connects to the ground this way come last. A particle's level is its distance
+// from the ground, whatever order the search takes them in. Only the contacts' particles
+// (bodies_) are counted, by their places there.
+void ParticleCollisions::orderContactsByLevel() {
+    const std::size_t n = bodies_.size();
     // Who holds whom up, among the movable particles: offsets into a flat list.
     auto holder = [](const RelaxContact& c) { return c.support == 1 ? c.b : c.a; };
     auto held = [](const RelaxContact& c) { return c.support == 1 ? c.a : c.b; };
@@ -821,20 +920,20 @@ void ParticleCollisions::orderContactsByLevel(std::size_t n) {
     };
     adjacencyStart_.assign(n + 1, 0u);
     for (const RelaxContact& c : contacts_)
-        if (holds(c)) ++adjacencyStart_[holder(c) + 1];
+        if (holds(c)) ++adjacencyStart_[bodyIndex_[holder(c)] + 1];
     for (std::size_t i = 0; i < n; ++i)
         adjacencyStart_[i + 1] += adjacencyStart_[i];
     adjacency_.resize(adjacencyStart_[n]);
     fill_.assign(adjacencyStart_.begin(), adjacencyStart_.end() - 1);
     for (const RelaxContact& c : contacts_)
-        if (holds(c)) adjacency_[fill_[holder(c)]++] = held(c);
+        if (holds(c)) adjacency_[fill_[bodyIndex_[holder(c)]]++] = held(c);
     // Breadth first from the ground.
     frontier_.clear();
-    for (std::uint32_t i = 0; i < n; ++i)
+    for (const std::uint32_t i : bodies_)
         if (level_[i] == 1) frontier_.push_back(i);
     for (std::size_t head = 0; head < frontier_.size(); ++head) {
-        const std::uint32_t p = frontier_[head];
-        for (std::uint32_t k = adjacencyStart_[p]; k < adjacencyStart_[p + 1]; ++k) {
+        const std::uint32_t p = frontier_[head], at = bodyIndex_[p];
+        for (std::uint32_t k = adjacencyStart_[at]; k < adjacencyStart_[at + 1]; ++k) {
             const std::uint32_t q = adjacency_[k];
             if (level_[q] != kUnsupported) continue;
             level_[q] = level_[p] + 1;
@@ -845,7 +944,7 @@ void ParticleCollisions::orderContactsByLevel(std::size_t n) {
     // particle's); band 0 is never used (the ground does not move), the last band holds
     // what no path of contacts connects to the ground.
     std::uint32_t top = 1;
-    for (std::uint32_t i = 0; i < n; ++i)
+    for (const std::uint32_t i : bodies_)
         if (level_[i] != kUnsupported) top = std::max(top, level_[i]);
     const std::size_t unsupported = static_cast<std::size_t>(top) + 1;
     auto band = [&](const RelaxContact& c) -> std::size_t {
@@ -867,6 +966,7 @@ void ParticleCollisions::penaltyPhase(ParticleSet& set, const StaticShapes& shap
                                       const MaterialTable& mats, const CollisionDef& def, double h,
                                       double tickTime) {
     const auto t0 = clock_.now(); // profile only
+    selectActive(set, def, true);
     buildPaths(set, h);
     buildProxies(set, shapes, def, h, true);
     findPairs(set, def, h);
@@ -941,8 +1041,8 @@ void ParticleCollisions::updateSleep(ParticleSet& set, const CollisionDef& def, 
         restTimersStale_ = false;
     }
     const double stray = def.sleepSpeed * def.sleepTime; // m: the window's allowed drift
-    int asleep = 0;
-    for (std::size_t i = 0; i < n; ++i) {
+    int asleep = static_cast<int>(settledAsleep_);       // settled: asleep, and stays so
+    for (const std::uint32_t i : active_) {
         if (set.flags[i] & kSleeping) {
             asleep += (set.flags[i] & kAlive) ? 1 : 0;
             continue;

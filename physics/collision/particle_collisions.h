@@ -33,6 +33,13 @@
 // or a command wakes it; sleepers are immovable to the others.
 // Particles tied to springs or constraints do not sleep.
 //
+// A sub-step works on the active particles only (selectActive): every particle but the
+// settled ones, sleepers still as they were when a sub-step last worked on them. A sleeper
+// does not move, so its path, boxes and the rest are still what that sub-step made them,
+// and a heap whose balls mostly sleep costs its awake balls and their contacts, not its
+// size. (A sleeper's state changes only as it wakes: ParticleSet::setPosition and
+// setVelocity wake it, as contacts and blasts do.)
+//
 // The broad phase runs on fattened boxes and its pairs are kept while every particle's
 // box stays inside its fat one, so most steps of a resting pile only filter the kept
 // pairs by the exact boxes: the same pairs, for a fraction of the cost. A pass after the
@@ -80,6 +87,7 @@ struct CollisionStats {
     int broadPhases = 0;  ///< broad phases run (the others reused their pairs)
     int cachePatches = 0; ///< passes that mended the kept pairs where a few proxies escaped
     int changesOnly = 0;  ///< passes that detected only what the pass before changed
+    int active = 0;       ///< particles the sub-steps worked on (the others were settled)
     int sleeping = 0;     ///< particles asleep after the step
 };
 
@@ -129,6 +137,21 @@ class ParticleCollisions {
         std::uint32_t proxy; // b, or slots + the shape's index: the pair order's key
         bool carried;        // a resting pair the last pass left to the solver, found again
     };
+    /// The particles this sub-step works on (active_); `all`: every one (the penalty
+    /// model, which keeps no settled state).
+    void selectActive(const ParticleSet& set, const CollisionDef& def, bool all);
+    /// Particle i, settled at the sub-step's start, is worked on from here on.
+    void activate(std::size_t i) {
+        if (activeMark_[i]) return;
+        activeMark_[i] = 1;
+        active_.push_back(static_cast<std::uint32_t>(i));
+        ++stats_.active;
+        touched_[i] = 0; // as buildPaths would have left it
+        if (settledFlags_[i] & kAlive) --settledAsleep_;
+    }
+    /// The solver's boxes of the particles that may be settled in the next sub-step, when
+    /// this one ran no solver.
+    void boxSettlingForSolver(const ParticleSet& set, const CollisionDef& def);
     void buildPaths(const ParticleSet& set, double h);
     /// Boxes of the paths (or of the end positions), radii grown by `grow` of themselves.
     void buildProxies(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
@@ -162,10 +185,13 @@ class ParticleCollisions {
     void pairsOfStray(std::uint32_t i);
     /// Proxies i and j (particles) may pair, by their kinds and exact boxes.
     bool overlapping(std::uint32_t i, std::uint32_t j) const;
-    /// A path changed by a contact of this pass.
+    /// A path changed by a contact of this pass: the particle is active, and not settled
+    /// in the next sub-step.
     void markChanged(std::size_t i) {
         if (pathChanged_[i] != pass_) changed_.push_back(static_cast<std::uint32_t>(i));
         pathChanged_[i] = pass_;
+        activate(i);
+        settledFlags_[i] = kUnsettled;
     }
     /// What resolving a candidate did: nothing (no contact any more), a resting contact,
     /// an impact, or nothing yet (a resting pair, left to the contact solver).
@@ -193,10 +219,26 @@ class ParticleCollisions {
     void finish(ParticleSet& set, double h);
     void relaxContacts(ParticleSet& set, const StaticShapes& shapes, const MaterialTable& mats,
                        const CollisionDef& def, double h, Vec2 up);
-    void orderContactsByLevel(std::size_t n);
+    void orderContactsByLevel();
     bool moving(const ParticleSet& set, std::size_t i) const {
         return set.invMass[i] > 0.0 && (set.flags[i] & (kAlive | kSleeping | kNoCollide)) == kAlive;
     }
+
+    // The active particles of this sub-step (selectActive), marked in activeMark_. A
+    // particle's settledFlags_ and settledAt_ are its flags and place (with its radius)
+    // when a sub-step last worked on it asleep (or on its empty slot), or the flags are
+    // kUnsettled: it is settled while its state stays that one bit for bit, at rest, and
+    // no contact changes its path.
+    struct Place {
+        double x, y, radius;
+    };
+    static constexpr std::uint32_t kUnsettled = 0xffffffffu;
+    std::vector<std::uint32_t> active_;
+    std::vector<std::uint8_t> activeMark_;
+    std::vector<std::uint32_t> settledFlags_;
+    std::vector<Place> settledAt_;
+    std::size_t settledAsleep_ = 0; ///< alive particles settled (so asleep) at the start
+    double settledTolerance_ = 0.0; ///< what the settled boxes were built with
 
     // Start of the sub-step (S0).
     std::vector<double> x0_, y0_, vx0_, vy0_;
@@ -209,8 +251,10 @@ class ParticleCollisions {
     std::vector<double> sleepTimer_; ///< s in resting contact within the rest window
     std::vector<Vec2> restAnchor_;   ///< where the rest window started
     bool restTimersStale_ = false;   ///< ticks without contacts passed since updateSleep
-    // Broad phase.
-    std::vector<Aabb> boxes_;
+    // Broad phase. boxes_: those of the passes, or, while the solver detects, of the
+    // solver (its contacts reach kSpeculative further); each keeps a settled particle's.
+    std::vector<Aabb> boxes_, solverBoxes_;
+    bool kindsChanged_ = true; ///< a kind may differ from liveKinds_ (buildProxy)
     std::vector<ProxyKind> kinds_;
     std::vector<ProxyPair> pairs_;
     // The pair cache: broad phase over fat boxes (exact box grown by fatBox), kept
@@ -296,6 +340,17 @@ class ParticleCollisions {
     std::vector<Deferred> deferred_;
     void reportDeferred(const ParticleSet& set);
     std::vector<std::uint32_t> contactOrder_, level_, bandStart_;
+    // The particles of the solver's contacts (bodies_, marked in bodyMark_): all that its
+    // levels and sweeps read or write; bodyIndex_[i]: i's place in bodies_.
+    std::vector<std::uint32_t> bodies_, bodyIndex_;
+    std::vector<std::uint8_t> bodyMark_;
+    bool mostAreBodies(std::size_t slots) const { return 2 * bodies_.size() > slots; }
+    void addBody(std::uint32_t i) {
+        if (bodyMark_[i]) return;
+        bodyMark_[i] = 1;
+        bodyIndex_[i] = static_cast<std::uint32_t>(bodies_.size());
+        bodies_.push_back(i);
+    }
     /// The sweeps over contacts_ (relax_sweeps.cpp): warm start, velocity, position, on
     /// copies of the velocities and positions (copyForSweeps, copyAfterSweeps).
     void sweepContacts(ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def);

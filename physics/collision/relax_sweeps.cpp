@@ -47,27 +47,41 @@ void ParticleCollisions::sweepContacts(ParticleSet& set, const StaticShapes& sha
     copyAfterSweeps(set);
 }
 
-// The velocities and positions as pairs, still at rest, and "moved by the solver" cleared
-// for every slot.
+// The velocities and positions of the contacts' particles (the sweeps read and write no
+// others) as pairs, still at rest, and "moved by the solver" cleared for them. When they
+// are most of the particles, a pass over every slot is the quicker way to the same.
 void ParticleCollisions::copyForSweeps(const ParticleSet& set) {
     const auto n = static_cast<std::uint32_t>(set.slots());
     sweepVelocity_.resize(n + 2);
     sweepPosition_.resize(n + 2);
-    for (std::uint32_t i = 0; i < n; ++i) {
+    if (touched_.size() < n + 2) touched_.resize(n + 2);
+    auto copy = [&](std::uint32_t i) {
         sweepVelocity_[i] = {set.vx[i], set.vy[i]};
         sweepPosition_[i] = {set.px[i], set.py[i]};
-    }
+        touched_[i] = 0;
+    };
+    if (mostAreBodies(n))
+        for (std::uint32_t i = 0; i < n; ++i)
+            copy(i);
+    else
+        for (const std::uint32_t i : bodies_)
+            copy(i);
     sweepVelocity_[n] = sweepVelocity_[n + 1] = {}; // still, sink
     sweepPosition_[n] = sweepPosition_[n + 1] = {};
-    if (touched_.size() < n + 2) touched_.resize(n + 2);
-    std::fill(touched_.begin(), touched_.end(), 0);
+    touched_[n] = touched_[n + 1] = 0;
 }
 
 void ParticleCollisions::copyAfterSweeps(ParticleSet& set) const {
-    for (std::size_t i = 0; i < set.slots(); ++i) {
+    auto copy = [&](std::size_t i) {
         set.vx[i] = sweepVelocity_[i].x, set.vy[i] = sweepVelocity_[i].y;
         set.px[i] = sweepPosition_[i].x, set.py[i] = sweepPosition_[i].y;
-    }
+    };
+    if (mostAreBodies(set.slots()))
+        for (std::size_t i = 0; i < set.slots(); ++i)
+            copy(i);
+    else
+        for (const std::uint32_t i : bodies_)
+            copy(i);
 }
 
 // A contact that was there at the end of the last sub-step starts from the impulses it
