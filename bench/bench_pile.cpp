@@ -11,7 +11,8 @@
 // is the collected total over the ticks. Without valgrind it prints wall ms per tick
 // (meaningful on a quiet machine only; read the ratio) and, for checking that a change
 // gives the same bits, the particle world's hash and what the step did (contacts, pairs,
-// passes, broad phases, sleepers); `--trace` prints that, and the wall ms, every tick.
+// passes, broad phases, sleepers); `--trace` prints that, the particles the sub-steps
+// worked on (the rest were settled sleepers), and the wall ms, every tick.
 // `--tuned` builds the Box2D side as Box2D is at its best for this scene (kTunedBox2D:
 // every length x10, no time of impact) instead of as the game builds it.
 //
@@ -241,10 +242,10 @@ int main(int argc, char** argv) {
                 const double ms = msSince(tickStart);
                 const CollisionStats& s = w->collisionStats();
                 std::printf("tick %d: %.4f ms, %zu contacts, %d pairs, %d passes (%d of "
-                            "changes only), %d broad phases, %d asleep\n",
+                            "changes only), %d broad phases, %d asleep, %d worked on\n",
                             game::bench::kPileSettleTicks + o.skip + t + 1, ms,
                             w->contacts().size(), s.pairs, s.passes, s.changesOnly, s.broadPhases,
-                            sleepers(w->particles));
+                            sleepers(w->particles), s.active);
             }
         else
             stepParticlePile(*w, o.ticks);
