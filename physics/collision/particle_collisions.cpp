@@ -44,6 +44,22 @@ template <class T> void growTo(std::vector<T>& v, std::size_t n) {
     if (v.size() < n) v.resize(n);
 }
 
+// Of the rates below, parts this small against max(1, |x|) are rounding, as the time of
+// impact takes them.
+constexpr double kAccelRounding = 1e-9, kVelocityRounding = 1e-12;
+
+// The limit of supports alternating between two surfaces, normals m (the first) and n:
+// x, a rate (acceleration or velocity) that n's support left not pushing into n. If it
+// pushes into m, taking that part away pushes it into n again when the two face each
+// other (m.n < 0: a notch, a wedge), and so on: the alternation ends at rest between
+// them. Otherwise (m.n >= 0) x slides along m, clear of n.
+Vec2 heldByBoth(Vec2 x, Vec2 m, Vec2 n, double rounding) {
+    const double xm = dot(x, m);
+    if (xm >= -rounding * atLeastOne(x)) return x;
+    if (dot(m, n) < 0.0) return {};
+    return x - m * xm;
+}
+
 bool sameBits(double a, double b) {
     return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
@@ -475,8 +491,30 @@ void ParticleCollisions::rebase(std::size_t i, double t) {
 // - sliding: dynamic friction decelerates at mu_d |a.n| against the slide; if that stops
 //   the slide within the step (and static friction then holds), the particle ends the
 //   step at the stopping point, v^2 / (2 a), at rest, rather than sliding back.
+// (supportAlong.) A particle resting on two surfaces in one sub-step (a ball in the notch
+// of two sleepers, or against a wall and a sleeper): the second support, along n, can
+// bend its motion back into the first, along m, and the passes then alternated between
+// the two, each taking a fraction of what was left, until they ran out (all eight, every
+// step, for the last awake balls of a heap). Both supports now hold it at once, as the
+// alternation's limit (heldByBoth).
 void ParticleCollisions::support(std::size_t i, Vec2 n, Vec2 vNew, const PairProperties& pp,
-                                 double remaining) {
+                                 double remaining, std::uint32_t surface) {
+    supportAlong(i, n, vNew, pp, remaining);
+    growTo(lastSupport_, path_.size());
+    LastSupport& last = lastSupport_[i];
+    if (last.substep == substep_ && last.surface != surface) {
+        const Vec2 m0 = last.normal;
+        PathMotion& m = path_[i];
+        m.a = heldByBoth(m.a, m0, n, kAccelRounding);
+        sa_[i] = heldByBoth(sa_[i], m0, n, kAccelRounding);
+        m.v = heldByBoth(m.v, m0, n, kVelocityRounding);
+        sv_[i] = heldByBoth(sv_[i], m0, n, kVelocityRounding);
+    }
+    last = {n, surface, substep_};
+}
+
+void ParticleCollisions::supportAlong(std::size_t i, Vec2 n, Vec2 vNew, const PairProperties& pp,
+                                      double remaining) {
     PathMotion& m = path_[i];
     const double normalAccel = std::max(-std::min(dot(m.a, n), dot(sa_[i], n)), 0.0);
     m.a = withoutInward(m.a, n);
@@ -559,7 +597,7 @@ ParticleCollisions::resolveStatic(const Candidate& c, ParticleSet& set, const St
     Vec2 vNew = v + ci.impulse * w;
     m.v = vNew;
     sv_[i] = vNew;
-    if (resting) support(i, n, vNew, pp, remaining);
+    if (resting) support(i, n, vNew, pp, remaining, c.proxy);
     touched_[i] = 1;
     resting_[i] = resting_[i] || resting;
     set.flags[i] &= ~kSleeping;
@@ -655,9 +693,9 @@ ParticleCollisions::Resolution ParticleCollisions::resolvePair(const Candidate& 
         // sleeper slid off it however flat the contact.
         const double remaining = h - *toi;
         if (wj == 0.0) {
-            support(i, n, sv_[i] - sv_[j], pp, remaining);
+            support(i, n, sv_[i] - sv_[j], pp, remaining, static_cast<std::uint32_t>(j));
         } else if (wi == 0.0) {
-            support(j, -n, sv_[j] - sv_[i], pp, remaining);
+            support(j, -n, sv_[j] - sv_[i], pp, remaining, static_cast<std::uint32_t>(i));
         } else {
             // Both free: they accelerate together along n (a plastic contact for the
             // rest of the step), sharing the momentum rate, weights m_i, m_j. What then
@@ -701,6 +739,7 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
                                       const MaterialTable& mats, const CollisionDef& def, double h,
                                       double tickTime, Vec2 up) {
     toi_ = {def.continuous, def.bisectionHalvings, def.toiTolerance, def.maxAdvanceIterations};
+    ++substep_;
     selectActive(set, def, !def.skipSettled);
     buildPaths(set, h);
     bool converged = false;

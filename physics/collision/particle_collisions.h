@@ -24,7 +24,8 @@
 // particle for the rest of the step: the inward part of its acceleration is removed,
 // and if static friction can hold the tangential part (|a_t| <= mu_s |a_n|) the particle
 // does not slide. A particle resting on a surface so stays exactly where it is, with no
-// jitter and no creep. A resting pair of free particles (a stack, a pile) goes to the
+// jitter and no creep; one resting on two (a notch, a corner) is held by both at once.
+// A resting pair of free particles (a stack, a pile) goes to the
 // contact solver, which settles a pile in one step where passes would settle it one
 // layer per pass, as does a sleeper lying on a free particle (weight that particle
 // carries, not a surface it rests on). A particle that spends sleepTime in resting
@@ -215,7 +216,18 @@ class ParticleCollisions {
         return (wi > 0.0 && asleep(set, j)) || (wj > 0.0 && asleep(set, i));
     }
     void rebase(std::size_t i, double t);
-    void support(std::size_t i, Vec2 n, Vec2 vNew, const PairProperties& pp, double remaining);
+    /// supportAlong, held by the surface that last supported i in this sub-step too
+    /// (`surface`: the proxy of what supports it, a particle or slots + a shape's index).
+    void support(std::size_t i, Vec2 n, Vec2 vNew, const PairProperties& pp, double remaining,
+                 std::uint32_t surface);
+    void supportAlong(std::size_t i, Vec2 n, Vec2 vNew, const PairProperties& pp, double remaining);
+    struct LastSupport {
+        Vec2 normal;
+        std::uint32_t surface = 0;
+        std::uint64_t substep = 0; ///< substep_ when it supported
+    };
+    std::vector<LastSupport> lastSupport_;
+    std::uint64_t substep_ = 0; ///< counts the impulse sub-steps over the world's life
     void finish(ParticleSet& set, double h);
     void relaxContacts(ParticleSet& set, const StaticShapes& shapes, const MaterialTable& mats,
                        const CollisionDef& def, double h, Vec2 up);

@@ -481,8 +481,10 @@ void expectTheFullDetectionsBits(const std::string& scene, int ticks, double few
 } // namespace
 
 TEST(Pile, LaterPassesDetectOnlyWhatChangedWithTheFullDetectionsBits) {
+    // (2.6 times fewer pairs; 3.4 before the balls on two sleepers stopped alternating
+    // through all the passes, whose later ones test few.)
     expectTheFullDetectionsBits(
-        "heap of 1,500 balls, marbles and golf balls", 240, 3.0,
+        "heap of 1,500 balls, marbles and golf balls", 240, 2.5,
         [] { return std::move(droppedBalls(1500, false).world); }, dropShots);
     // Without the test of a changed particle against the strays (a ball knocked out of
     // its fat box, then hit by a neighbour whose kept pairs never held it), seed 18 parts
@@ -612,6 +614,32 @@ TEST(Pile, SettledSleepersAreSkippedWithTheBitsOfWorkingOnEveryParticle) {
         playWith([](CollisionDef& c) { c.skipSettled = false; }, 130, lone, slideStack);
     for (std::size_t t = 0; t < skipping.size(); ++t)
         ASSERT_EQ(skipping[t].hash, working[t].hash) << "lone ball, tick " << t;
+}
+
+// A free ball resting on two sleepers at once (in the notch between them, or against a
+// sleeper and a wall) is held by both in the same pass. The passes used to alternate
+// between the two, each support bending its motion into the other and each push out of a
+// few 1e-7 m of overlap pushing it into the other, for all eight passes of a step, every
+// step, for the last awake balls of a heap: in this heap of 1,500 balls in columns, 58
+// of the 240 steps after the first second ran all eight passes, 3.7 passes a step on
+// average (now 4 and 2.1). A sphere inside another by less than kOverlapSlop radii that
+// is not heading in is touching, not in contact (the solver mends that much); either
+// change alone leaves the alternation.
+TEST(Pile, ABallOnTwoSleepersIsHeldByBothAtOnce) {
+    World w = std::move(droppedBalls(1500, false).world);
+    const int most = w.def().collision.maxPasses;
+    long passes = 0, allPasses = 0, steps = 0;
+    for (int t = 0; t < 300; ++t) {
+        w.step();
+        if (t < 60) continue;
+        const int p = w.collisionStats().passes;
+        passes += p, allPasses += p == most ? 1 : 0, ++steps;
+    }
+    std::printf("heap of 1,500 balls in columns, steps 61-300: %.2f passes a step, %ld of %ld "
+                "ran all %d\n",
+                static_cast<double>(passes) / static_cast<double>(steps), allPasses, steps, most);
+    EXPECT_LE(allPasses, 12);
+    EXPECT_LT(passes, 3 * steps);
 }
 
 // The contact solver's sweeps laid out in wavefronts (contacts that share no particle),
