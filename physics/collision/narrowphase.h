@@ -72,6 +72,10 @@ inline double atLeastOne(Vec2 v) {
     return lengthSquared(v) <= 1.0 ? 1.0 : std::max(1.0, length(v));
 }
 
+/// Of a rate, parts this small against max(1, |rate|) are rounding (a resolved contact
+/// leaves ~1e-17 m/s along its normal): of a velocity, and of an acceleration.
+constexpr double kVelocityRounding = 1e-12, kAccelRounding = 1e-9;
+
 /// Radii: a sphere inside a shape by no more than this that is not heading in is touching,
 /// not in contact. The contact solver leaves resting piles that far inside each other (and
 /// mends it); pushed out here instead, a ball in the notch of two others was pushed from
@@ -97,8 +101,8 @@ std::optional<double> timeOfImpact(const Shape& shape, double radius, const Path
         // rounding leaves v.n ~ +1e-17 after a resting contact, which returns at once).
         // Normal components below rounding (a resolved contact leaves ~1e-17) are zero.
         const double vn = dot(start.normal, m.v), an = dot(start.normal, m.a);
-        const double vEps = 1e-12 * atLeastOne(m.v);
-        const double aEps = 1e-9 * atLeastOne(m.a);
+        const double vEps = kVelocityRounding * atLeastOne(m.v);
+        const double aEps = kAccelRounding * atLeastOne(m.a);
         const double slop = std::max(s.tolerance, kOverlapSlop * radius);
         if (g0 < -slop || vn < -vEps || (vn <= vEps && an < -aEps)) return t0;
         if (an < -aEps && -2.0 * vn / an <= tEnd - t0) return t0 - 2.0 * vn / an;

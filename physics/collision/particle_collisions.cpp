@@ -44,15 +44,12 @@ template <class T> void growTo(std::vector<T>& v, std::size_t n) {
     if (v.size() < n) v.resize(n);
 }
 
-// Of the rates below, parts this small against max(1, |x|) are rounding, as the time of
-// impact takes them.
-constexpr double kAccelRounding = 1e-9, kVelocityRounding = 1e-12;
-
 // The limit of supports alternating between two surfaces, normals m (the first) and n:
 // x, a rate (acceleration or velocity) that n's support left not pushing into n. If it
 // pushes into m, taking that part away pushes it into n again when the two face each
 // other (m.n < 0: a notch, a wedge), and so on: the alternation ends at rest between
 // them. Otherwise (m.n >= 0) x slides along m, clear of n.
+// (`rounding`: kVelocityRounding or kAccelRounding, as the time of impact takes them.)
 Vec2 heldByBoth(Vec2 x, Vec2 m, Vec2 n, double rounding) {
     const double xm = dot(x, m);
     if (xm >= -rounding * atLeastOne(x)) return x;
@@ -484,19 +481,12 @@ void ParticleCollisions::rebase(std::size_t i, double t) {
     path_[i] = {m.position(t), m.velocity(t), m.a, t};
 }
 
-// Resting contact: the surface (normal n) carries particle i for the `remaining` time of
-// the step. The inward part of its acceleration is removed (the normal force), and
-// Coulomb friction acts through the acceleration, bounded by mu |a.n|:
-// - not sliding and |a_t| <= mu_s |a.n|: static friction holds, no tangential motion;
-// - sliding: dynamic friction decelerates at mu_d |a.n| against the slide; if that stops
-//   the slide within the step (and static friction then holds), the particle ends the
-//   step at the stopping point, v^2 / (2 a), at rest, rather than sliding back.
-// (supportAlong.) A particle resting on two surfaces in one sub-step (a ball in the notch
-// of two sleepers, or against a wall and a sleeper): the second support, along n, can
-// bend its motion back into the first, along m, and the passes then alternated between
-// the two, each taking a fraction of what was left, until they ran out (all eight, every
-// step, for the last awake balls of a heap). Both supports now hold it at once, as the
-// alternation's limit (heldByBoth).
+// supportAlong n, and a particle resting on two surfaces in one sub-step (a ball in the
+// notch of two sleepers, or against a wall and a sleeper) held by both: the second
+// support, along n, can bend its motion back into the first, along m, and the passes
+// then alternated between the two, each taking a fraction of what was left, until they
+// ran out (all eight, every step, for the last awake balls of a heap). Both hold it at
+// once instead, as the alternation's limit (heldByBoth).
 void ParticleCollisions::support(std::size_t i, Vec2 n, Vec2 vNew, const PairProperties& pp,
                                  double remaining, std::uint32_t surface) {
     supportAlong(i, n, vNew, pp, remaining);
@@ -513,6 +503,13 @@ void ParticleCollisions::support(std::size_t i, Vec2 n, Vec2 vNew, const PairPro
     last = {n, surface, substep_};
 }
 
+// Resting contact: the surface (normal n) carries particle i for the `remaining` time of
+// the step. The inward part of its acceleration is removed (the normal force), and
+// Coulomb friction acts through the acceleration, bounded by mu |a.n|:
+// - not sliding and |a_t| <= mu_s |a.n|: static friction holds, no tangential motion;
+// - sliding: dynamic friction decelerates at mu_d |a.n| against the slide; if that stops
+//   the slide within the step (and static friction then holds), the particle ends the
+//   step at the stopping point, v^2 / (2 a), at rest, rather than sliding back.
 void ParticleCollisions::supportAlong(std::size_t i, Vec2 n, Vec2 vNew, const PairProperties& pp,
                                       double remaining) {
     PathMotion& m = path_[i];

@@ -25,10 +25,10 @@
 // and if static friction can hold the tangential part (|a_t| <= mu_s |a_n|) the particle
 // does not slide. A particle resting on a surface so stays exactly where it is, with no
 // jitter and no creep; one resting on two (a notch, a corner) is held by both at once.
-// A resting pair of free particles (a stack, a pile) goes to the
-// contact solver, which settles a pile in one step where passes would settle it one
-// layer per pass, as does a sleeper lying on a free particle (weight that particle
-// carries, not a surface it rests on). A particle that spends sleepTime in resting
+// A resting pair of free particles (a stack, a pile) goes to the contact solver, which
+// settles a pile in one step where passes would settle it one layer per pass, as does a
+// sleeper lying on a free particle (weight that particle carries, not a surface it rests
+// on). A particle that spends sleepTime in resting
 // contact at a mean velocity below sleepSpeed (it strays less than sleepSpeed *
 // sleepTime from where the time started) sleeps (kSleeping) until an impulse, a blast
 // or a command wakes it; sleepers are immovable to the others.
