@@ -131,7 +131,7 @@ void ParticleCollisions::beginSubstep(const ParticleSet& set) {
 void ParticleCollisions::buildPaths(const ParticleSet& set, double h) {
     const std::size_t n = set.slots();
     growTo(path_, n), growTo(sv_, n), growTo(sa_, n), growTo(touched_, n), growTo(resting_, n);
-    growTo(pathChanged_, n), growTo(accel0_, n);
+    growTo(pathChanged_, n), growTo(accel0_, n), growTo(lastSupport_, n);
     const double k = 2.0 / (h * h);
     for (const std::uint32_t i : active_) {
         const Vec2 p0{x0_[i], y0_[i]}, v0{vx0_[i], vy0_[i]};
@@ -490,7 +490,6 @@ void ParticleCollisions::rebase(std::size_t i, double t) {
 void ParticleCollisions::support(std::size_t i, Vec2 n, Vec2 vNew, const PairProperties& pp,
                                  double remaining, std::uint32_t surface) {
     supportAlong(i, n, vNew, pp, remaining);
-    growTo(lastSupport_, path_.size());
     LastSupport& last = lastSupport_[i];
     if (last.substep == substep_ && last.surface != surface) {
         const Vec2 m0 = last.normal;
