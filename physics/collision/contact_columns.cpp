@@ -10,27 +10,22 @@
 
 namespace phys {
 
-void ImpulseColumns::resize(std::size_t n) {
-    for (auto* c : {&a, &readB, &all.pushB, &band.pushB})
+void ContactColumns::resize(std::size_t n) {
+    for (auto* c : {&a, &readB, &contact, &all.pushB, &band.pushB})
         c->resize(n);
-    for (auto* c : {&nx, &ny, &closing, &friction, &all.wa, &all.wb, &all.mass, &band.wa, &band.wb,
-                    &band.mass, &normalImpulse, &tangentImpulse})
+    shape.resize(n);
+    for (auto* c : {&nx, &ny, &closing, &friction, &reach, &cap, &normalImpulse, &tangentImpulse})
         c->resize(n);
-    changed.resize(n, 0);
-}
-
-void ProjectColumns::resize(std::size_t n) {
-    for (auto* c : {&a, &b, &pushB, &contact})
-        c->resize(n);
-    for (auto* c : {&reach, &cap, &fa, &fb})
-        c->resize(n);
+    for (Masses* m : {&all, &band})
+        for (auto* c : {&m->wa, &m->wb, &m->mass, &m->fa, &m->fb})
+            c->resize(n);
     changed.resize(n, 0);
 }
 
 namespace {
 
 // One velocity row: the reference the lanes reproduce.
-inline void impulseRow(ImpulseColumns& r, const ImpulseColumns::Masses& m, std::size_t k, Vec2* v,
+inline void impulseRow(ContactColumns& r, const ContactColumns::Masses& m, std::size_t k, Vec2* v,
                        std::uint8_t* touched) {
     const double mass = m.mass[k];
     if (!(mass > 0.0)) return;
@@ -57,10 +52,12 @@ inline void impulseRow(ImpulseColumns& r, const ImpulseColumns::Masses& m, std::
 
 namespace detail {
 
-void projectPair(const ProjectColumns& r, std::size_t k, Vec2* p, std::uint8_t* touched) {
-    const std::uint32_t a = r.a[k], pushB = r.pushB[k];
+void projectPair(const ContactColumns& r, const ContactColumns::Masses& m, std::size_t k, Vec2* p,
+                 std::uint8_t* touched) {
+    if (!(m.mass[k] > 0.0)) return;
+    const std::uint32_t a = r.a[k], pushB = m.pushB[k];
     const double reach = r.reach[k];
-    const Vec2 d = p[a] - p[r.b[k]];
+    const Vec2 d = p[a] - p[r.readB[k]];
     const double distanceSquared = dot(d, d);
     if (distanceSquared >= reach * reach) return;
     const double L = std::sqrt(distanceSquared);
@@ -68,8 +65,8 @@ void projectPair(const ProjectColumns& r, std::size_t k, Vec2* p, std::uint8_t* 
     const double depth = std::min(reach - L, r.cap[k]);
     if (!(depth > 0.0)) return;
     const Vec2 move = normal * depth;
-    p[a] += move * r.fa[k];
-    p[pushB] -= move * r.fb[k];
+    p[a] += move * m.fa[k];
+    p[pushB] -= move * m.fb[k];
     touched[a] = 1;
     touched[pushB] = 1;
 }
@@ -141,7 +138,7 @@ inline void push(Vec2* s, const std::uint32_t* a, const std::uint32_t* pushB, __
             where(changed, _mm256_sub_pd(read.by, _mm256_mul_pd(y, kb)), read.by));
 }
 
-void impulseRows4(ImpulseColumns& r, const ImpulseColumns::Masses& m, std::size_t k, Vec2* v) {
+void impulseRows4(ContactColumns& r, const ContactColumns::Masses& m, std::size_t k, Vec2* v) {
     const __m256d zero = _mm256_setzero_pd();
     const __m256d mass = load(m.mass, k);
     const __m256d active = _mm256_cmp_pd(mass, zero, _CMP_GT_OQ);
@@ -178,16 +175,20 @@ void impulseRows4(ImpulseColumns& r, const ImpulseColumns::Masses& m, std::size_
     keepChanged(r.changed, k, changed);
 }
 
-void projectPairs4(ProjectColumns& r, std::size_t k, Vec2* p) {
+void projectPairs4(ContactColumns& r, const ContactColumns::Masses& m, std::size_t k, Vec2* p) {
     const __m256d zero = _mm256_setzero_pd();
+    const __m256d active = _mm256_cmp_pd(load(m.mass, k), zero, _CMP_GT_OQ);
+    if (_mm256_testz_pd(active, active)) return;
     __m256d pax, pay, pbx, pby;
     gather(p, r.a.data() + k, pax, pay);
-    gather(p, r.b.data() + k, pbx, pby);
+    gather(p, r.readB.data() + k, pbx, pby);
     const __m256d dx = _mm256_sub_pd(pax, pbx), dy = _mm256_sub_pd(pay, pby);
     const __m256d distanceSquared = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
     const __m256d reach = load(r.reach, k);
-    // The one-row step returns when distanceSquared >= reach^2 (so NaN goes on).
-    const __m256d near = _mm256_cmp_pd(distanceSquared, _mm256_mul_pd(reach, reach), _CMP_NGE_UQ);
+    // The one-row step returns when it has no mass, or when distanceSquared >= reach^2 (so
+    // NaN goes on).
+    const __m256d near = _mm256_and_pd(
+        active, _mm256_cmp_pd(distanceSquared, _mm256_mul_pd(reach, reach), _CMP_NGE_UQ));
     if (_mm256_testz_pd(near, near)) return;
     const __m256d L = _mm256_sqrt_pd(distanceSquared);
     const __m256d apart = _mm256_cmp_pd(L, zero, _CMP_GT_OQ);
@@ -197,8 +198,8 @@ void projectPairs4(ProjectColumns& r, std::size_t k, Vec2* p) {
     const __m256d changed = _mm256_and_pd(near, _mm256_cmp_pd(depth, zero, _CMP_GT_OQ));
     if (_mm256_testz_pd(changed, changed)) return;
     const __m256d mx = _mm256_mul_pd(nx, depth), my = _mm256_mul_pd(ny, depth);
-    push(p, r.a.data() + k, r.pushB.data() + k, changed, {pax, pay, pbx, pby}, mx, my,
-         load(r.fa, k), load(r.fb, k));
+    push(p, r.a.data() + k, m.pushB.data() + k, changed, {pax, pay, pbx, pby}, mx, my,
+         load(m.fa, k), load(m.fb, k));
     keepChanged(r.changed, k, changed);
 }
 
@@ -218,7 +219,7 @@ bool contactLanesAvailable() {
 #endif
 }
 
-void sweepImpulseColumns(ImpulseColumns& rows, const ImpulseColumns::Masses& masses,
+void sweepImpulseColumns(ContactColumns& rows, const ContactColumns::Masses& masses,
                          std::size_t from, std::size_t to, Vec2* velocity, std::uint8_t* touched,
                          bool lanes) {
 #if defined(ARTILLERY_CONTACT_AVX2)
@@ -236,11 +237,12 @@ void sweepImpulseColumns(ImpulseColumns& rows, const ImpulseColumns::Masses& mas
 
 namespace detail {
 
-void projectPairs4(ProjectColumns& rows, std::size_t k, Vec2* position) {
+void projectPairs4(ContactColumns& rows, const ContactColumns::Masses& masses, std::size_t k,
+                   Vec2* position) {
 #if defined(ARTILLERY_CONTACT_AVX2)
-    avx2::projectPairs4(rows, k, position);
+    avx2::projectPairs4(rows, masses, k, position);
 #else
-    (void)rows, (void)k, (void)position; // never called: contactLanesAvailable() is false
+    (void)rows, (void)masses, (void)k, (void)position; // never called without AVX2
 #endif
 }
 

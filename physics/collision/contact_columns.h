@@ -21,36 +21,29 @@
 
 namespace phys {
 
-/// The velocity step's rows: the normal impulse that stops the closing velocity
-/// (accumulated, never pulling) and friction along the tangent within mu_s times it.
-/// Each row has two sets of masses: those of the sweeps over all contacts, and those of
-/// the sweeps over its band alone (shock propagation: what holds it up may be immovable).
-struct ImpulseColumns {
-    /// Inverse masses, the effective mass 1 / (wa + wb) (or 0: no step), where b's impulse
-    /// goes (b, or the sink).
+/// The solver's rows, one per contact, which both steps sweep: velocity (the normal
+/// impulse that stops the closing velocity, accumulated and never pulling, and friction
+/// along the tangent within mu_s times it) and position (push the overlap apart along the
+/// current normal, at most `cap` at once, `fa` and `fb` of it to each side). Each row has
+/// two sets of masses: those of the sweeps over all contacts, and those of the sweeps over
+/// its band alone (shock propagation: what holds it up may be immovable).
+struct ContactColumns {
+    /// Inverse masses, the effective mass 1 / (wa + wb) (0: the row does nothing in these
+    /// sweeps), each side's share of a push (wa and wb over wa + wb), where b's push goes
+    /// (b, or the sink).
     struct Masses {
-        std::vector<double> wa, wb, mass;
+        std::vector<double> wa, wb, mass, fa, fb;
         std::vector<std::uint32_t> pushB;
     };
     std::vector<std::uint32_t> a, readB; ///< readB: b, or still for a shape
+    std::vector<std::uint32_t> contact;  ///< the caller's index of the row's contact
+    std::vector<std::uint8_t> shape;     ///< against a shape: the caller projects the row
     std::vector<double> nx, ny, closing, friction;
+    std::vector<double> reach, cap; ///< radii summed (a's radius for a shape); most moved
     Masses all, band;
     std::vector<double> normalImpulse, tangentImpulse; ///< accumulated, N s
     /// All ones where a lane sweep's step changed something (markTouched reads it).
     std::vector<std::uint64_t> changed;
-
-    std::size_t size() const { return a.size(); }
-    void resize(std::size_t n);
-};
-
-/// The position step's rows: push the overlap of a pair of particles apart along their
-/// current normal, at most `cap` at once, `fa` and `fb` of it to each side. A row against
-/// a shape (b = kShapeRow) is the caller's to step.
-struct ProjectColumns {
-    static constexpr std::uint32_t kShapeRow = 0xffffffffu;
-    std::vector<std::uint32_t> a, b, pushB, contact; ///< contact: the caller's index
-    std::vector<double> reach, cap, fa, fb;          ///< radii summed; most moved at once
-    std::vector<std::uint64_t> changed;              ///< as for ImpulseColumns
 
     std::size_t size() const { return a.size(); }
     void resize(std::size_t n);
@@ -64,15 +57,16 @@ bool contactLanesAvailable();
 /// the wavefronts' runs multiples of 4) or one row at a time. `touched[k]` becomes 1 for
 /// each slot a step changed: at once one row at a time, by markTouched after the lanes
 /// (which keep what changed in `changed`, not to scatter flags at every step).
-void sweepImpulseColumns(ImpulseColumns& rows, const ImpulseColumns::Masses& masses,
+void sweepImpulseColumns(ContactColumns& rows, const ContactColumns::Masses& masses,
                          std::size_t from, std::size_t to, Vec2* velocity, std::uint8_t* touched,
                          bool lanes);
 
 /// One position sweep over rows [from, to), the same way; `shapeStep(k)` steps a row
 /// against a shape (such rows gather in runs of their own, four to a run when `lanes`).
 template <class ShapeStep>
-void sweepProjectColumns(ProjectColumns& rows, std::size_t from, std::size_t to, Vec2* position,
-                         std::uint8_t* touched, bool lanes, ShapeStep&& shapeStep);
+void sweepProjectColumns(ContactColumns& rows, const ContactColumns::Masses& masses,
+                         std::size_t from, std::size_t to, Vec2* position, std::uint8_t* touched,
+                         bool lanes, ShapeStep&& shapeStep);
 
 /// touched[k] = 1 for the slots of every row the lane sweeps changed (a, and where b's
 /// push goes in any of `pushes`); `changed` cleared.
@@ -88,30 +82,33 @@ void markTouched(Columns& rows, std::uint8_t* touched, const Pushes&... pushes) 
 
 // The parts of sweepProjectColumns that are not templates.
 namespace detail {
-void projectPair(const ProjectColumns& rows, std::size_t k, Vec2* position, std::uint8_t* touched);
+void projectPair(const ContactColumns& rows, const ContactColumns::Masses& masses, std::size_t k,
+                 Vec2* position, std::uint8_t* touched);
 /// Four pair rows k .. k + 3 at once (contactLanesAvailable() only).
-void projectPairs4(ProjectColumns& rows, std::size_t k, Vec2* position);
+void projectPairs4(ContactColumns& rows, const ContactColumns::Masses& masses, std::size_t k,
+                   Vec2* position);
 } // namespace detail
 
 template <class ShapeStep>
-void sweepProjectColumns(ProjectColumns& rows, std::size_t from, std::size_t to, Vec2* position,
-                         std::uint8_t* touched, bool lanes, ShapeStep&& shapeStep) {
+void sweepProjectColumns(ContactColumns& rows, const ContactColumns::Masses& masses,
+                         std::size_t from, std::size_t to, Vec2* position, std::uint8_t* touched,
+                         bool lanes, ShapeStep&& shapeStep) {
     if (!lanes) {
         for (std::size_t k = from; k < to; ++k) {
-            if (rows.b[k] == ProjectColumns::kShapeRow)
+            if (rows.shape[k])
                 shapeStep(k);
             else
-                detail::projectPair(rows, k, position, touched);
+                detail::projectPair(rows, masses, k, position, touched);
         }
         return;
     }
     for (std::size_t k = from; k < to; k += 4) {
-        if (rows.b[k] != ProjectColumns::kShapeRow) {
-            detail::projectPairs4(rows, k, position);
+        if (!rows.shape[k]) {
+            detail::projectPairs4(rows, masses, k, position);
             continue;
         }
         for (std::size_t l = k; l < k + 4; ++l)
-            if (rows.b[l] == ProjectColumns::kShapeRow) shapeStep(l); // padding: a pair row
+            if (rows.shape[l]) shapeStep(l); // padding: a pair row
     }
 }
 

@@ -776,9 +776,11 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
 //             still closes after the passes is resting), with Coulomb friction bounded by
 //             mu_s times the contact's accumulated normal impulse;
 //   position  sweeps push overlaps apart along the normal, split by inverse mass, at most
-//             a fifth of a radius at a time and the static contacts last, so that a pile
-//             pressing on a wall never pushes a particle through it. Velocities are left
-//             as the impulses made them, so the projection adds no energy.
+//             a fifth of a radius at a time and, in each band (below), the static
+//             contacts last, so that a pile pressing on a wall never pushes a particle
+//             through it. Velocities are left as the impulses made them, so the
+//             projection adds no energy.
+// Both steps sweep the contacts in one order, so one layout serves every sweep.
 // After sweeps over all contacts, the contacts are swept again band by band from the
 // ground up (a particle's level is how many particles down, holding each other up
 // against gravity, it is from the ground: a static shape or an immovable particle), with
@@ -940,11 +942,11 @@ void ParticleCollisions::reportDeferred(const ParticleSet& set) {
 }
 
 // contactOrder_: the contacts by band (the level of their upper particle), a counting sort,
-// so the pair order, which is fixed, breaks ties. Levels spread from the particles the
-// ground holds up (level 1) to the particles they hold up, breadth first; particles that
-// nothing connects to the ground this way come last. A particle's level is its distance
-// from the ground, whatever order the search takes them in. Only the contacts' particles
-// (bodies_) are counted, by their places there.
+// so the pair order, which is fixed, breaks ties (after "movable first" within a band). Levels
+// spread from the particles the ground holds up (level 1) to the particles they hold up, breadth
+// first; particles that nothing connects to the ground this way come last. A particle's level is
+// its distance from the ground, whatever order the search takes them in. Only the contacts'
+// particles (bodies_) are counted, by their places there.
 void ParticleCollisions::orderContactsByLevel() {
     const std::size_t n = bodies_.size();
     // Who holds whom up, among the movable particles: offsets into a flat list.
@@ -977,24 +979,29 @@ void ParticleCollisions::orderContactsByLevel() {
     }
     // Bands: a contact belongs to the level of its upper particle (a static contact to its
     // particle's); band 0 is never used (the ground does not move), the last band holds
-    // what no path of contacts connects to the ground.
+    // what no path of contacts connects to the ground. Within a band, the contacts with
+    // something immovable (a shape, a fixed or sleeping particle) come after the others:
+    // the projection then leaves nothing inside those, whatever else stays to do.
     std::uint32_t top = 1;
     for (const std::uint32_t i : bodies_)
         if (level_[i] != kUnsupported) top = std::max(top, level_[i]);
     const std::size_t unsupported = static_cast<std::size_t>(top) + 1;
-    auto band = [&](const RelaxContact& c) -> std::size_t {
+    auto key = [&](const RelaxContact& c) -> std::size_t {
         const std::uint32_t l = bandOf(c);
-        return l == kUnsupported ? unsupported : l;
+        const bool immovableSide = c.b == kNoParticle || c.wa == 0.0 || c.wb == 0.0;
+        return 2 * (l == kUnsupported ? unsupported : l) + (immovableSide ? 1 : 0);
     };
-    bandStart_.assign(unsupported + 2, 0u);
+    keyStart_.assign(2 * unsupported + 3, 0u);
     for (const RelaxContact& c : contacts_)
-        ++bandStart_[band(c) + 1];
-    for (std::size_t b = 0; b + 1 < bandStart_.size(); ++b)
-        bandStart_[b + 1] += bandStart_[b];
-    fill_.assign(bandStart_.begin(), bandStart_.end() - 1);
+        ++keyStart_[key(c) + 1];
+    for (std::size_t k = 0; k + 1 < keyStart_.size(); ++k)
+        keyStart_[k + 1] += keyStart_[k];
+    bandStart_.resize(unsupported + 2);
+    for (std::size_t b = 0; b < bandStart_.size(); ++b)
+        bandStart_[b] = keyStart_[2 * b];
     contactOrder_.resize(contacts_.size());
     for (std::uint32_t k = 0; k < contacts_.size(); ++k)
-        contactOrder_[fill_[band(contacts_[k])]++] = k;
+        contactOrder_[keyStart_[key(contacts_[k])]++] = k;
 }
 
 void ParticleCollisions::penaltyPhase(ParticleSet& set, const StaticShapes& shapes,

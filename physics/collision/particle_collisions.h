@@ -369,10 +369,8 @@ class ParticleCollisions {
     void copyForSweeps(const ParticleSet& set);
     void copyAfterSweeps(ParticleSet& set) const;
     void warmStart();
-    void buildSweepRows(const ParticleSet& set);
-    void buildImpulseRows();
+    void layOutRows(const ParticleSet& set);
     void sweepImpulses(const CollisionDef& def);
-    void buildProjectRows();
     void sweepProjections(const StaticShapes& shapes, const CollisionDef& def);
     /// The inverse masses of contact c under shock propagation in its band: the particle
     /// that holds the other up, if it is settled already (a lower level), is immovable.
@@ -388,45 +386,13 @@ class ParticleCollisions {
         return static_cast<std::uint32_t>(sweepVelocity_.size() - 2);
     }
     std::uint32_t sinkSlot() const { return stillSlot() + 1; }
-    /// The places of sequence_ (in contactOrder_), in the order a sweep takes them: in
-    /// wavefronts of four when the lanes run (`slots(k)`: place k's kind and the slots it
-    /// touches), as they are otherwise. The sweep is made of parts, each of which is also
-    /// swept on its own: `parts` says where in sequence_ each starts (ascending, the last
-    /// its end), and `partsOut` gets where in the order.
-    template <class Slots>
-    const std::vector<std::uint32_t>& sweepOrder(const std::vector<std::uint32_t>& parts,
-                                                 std::vector<std::uint32_t>& partsOut,
-                                                 Slots&& slots);
     bool lanes_ = false; ///< this solve's sweeps run in wavefronts of four lanes
-    /// A contact as every sweep's row reads it, by its place in contactOrder_; one more
-    /// place past the contacts is the padding row (sweeps still, pushes the sink, no mass).
-    struct SweepRow {
-        /// The masses of a sweep: inverse, effective 1 / (wa + wb) (or 0), each side's
-        /// share of a push, and where b's push goes (b, or the sink).
-        struct Masses {
-            double wa = 0.0, wb = 0.0, mass = 0.0, fa = 0.0, fb = 0.0;
-            std::uint32_t pushB = 0;
-        };
-        std::uint32_t a = 0, readB = 0; ///< readB: b, or still for a shape
-        std::uint32_t contact = 0;      ///< index in contacts_
-        bool shape = false, immovableSide = false;
-        double nx = 0.0, ny = 0.0, closing = 0.0, friction = 0.0;
-        double normalImpulse = 0.0, tangentImpulse = 0.0; ///< as warm started
-        double reach = 0.0, cap = 0.0; ///< radii summed; the most a projection moves at once
-        Masses all, band;              ///< in the sweeps over all contacts, in its band's
-    };
-    std::vector<SweepRow> sweepRows_;
+    /// The rows of every sweep, in contactOrder_'s order (in its wavefronts when the lanes
+    /// run, with padding rows); each band's from rowStart_[band].
+    ContactColumns rows_;
+    std::vector<std::uint32_t> rowStart_;
     Wavefronts wavefronts_;
-    std::vector<std::uint32_t> sequence_;
-    std::vector<std::uint32_t> parts_, partsOut_;
-    /// The velocity rows, band by band (each band's from impulseStart_[band]);
-    /// impulseRow_[k]: the row of place k of contactOrder_.
-    ImpulseColumns impulses_;
-    std::vector<std::uint32_t> impulseStart_, impulseRow_;
-    /// The position rows, over all contacts, and band by band (each band's from
-    /// shockProjectStart_[band]).
-    ProjectColumns projections_, shockProjections_;
-    std::vector<std::uint32_t> shockProjectStart_;
+    std::vector<std::uint32_t> sequence_, placed_;    ///< scratch of layOutRows
     std::vector<Vec2> sweepVelocity_, sweepPosition_; ///< the particles', then still, sink
     /// Sweeps over each band, from the ground up, with the bands below immovable.
     static constexpr int kShockSweeps = 4;
@@ -436,7 +402,7 @@ class ParticleCollisions {
     static constexpr double kSupport = 0.2;
     /// Gaps below this, in radii, count as touching (no closing allowed).
     static constexpr double kSlop = 1e-3;
-    std::vector<std::uint32_t> adjacencyStart_, adjacency_, fill_, frontier_;
+    std::vector<std::uint32_t> adjacencyStart_, adjacency_, fill_, frontier_, keyStart_;
     std::vector<ContactEvent> events_;
     CollisionStats stats_;
     double detectMicros_ = 0.0;

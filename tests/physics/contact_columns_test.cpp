@@ -77,7 +77,7 @@ TEST(ContactColumns, FourImpulseRowsAtOnceGiveTheBitsOfOneAtATime) {
     if (!contactLanesAvailable()) std::printf("no AVX2 here: both sweeps run one row at a time\n");
     std::mt19937_64 rng(11);
     for (int trial = 0; trial < 300; ++trial) {
-        ImpulseColumns rows;
+        ContactColumns rows;
         fillRuns(rng, rows, [&](std::size_t k, std::uint32_t a, std::uint32_t b) {
             const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
             rows.a[k] = a;
@@ -85,7 +85,7 @@ TEST(ContactColumns, FourImpulseRowsAtOnceGiveTheBitsOfOneAtATime) {
             const double angle = pick(rng, 3.0);
             rows.nx[k] = std::cos(angle), rows.ny[k] = std::sin(angle);
             rows.closing[k] = pick(rng, 0.5), rows.friction[k] = std::abs(pick(rng, 0.6));
-            for (ImpulseColumns::Masses* m : {&rows.all, &rows.band}) {
+            for (ContactColumns::Masses* m : {&rows.all, &rows.band}) {
                 const bool bMoves = kind >= 2;
                 m->wa[k] = kind == 3 ? 0.0 : 10.0, m->wb[k] = bMoves ? 10.0 : 0.0;
                 const double sum = m->wa[k] + m->wb[k];
@@ -95,7 +95,7 @@ TEST(ContactColumns, FourImpulseRowsAtOnceGiveTheBitsOfOneAtATime) {
             rows.normalImpulse[k] = std::abs(pick(rng, 0.2));
             rows.tangentImpulse[k] = pick(rng, 0.1);
         });
-        ImpulseColumns one = rows;
+        ContactColumns one = rows;
         std::vector<Vec2> v = randomState(rng), w = v;
         std::vector<std::uint8_t> touchedLanes(kParticles + 2), touchedOne(kParticles + 2);
         for (int sweep = 0; sweep < 3; ++sweep) {
@@ -118,27 +118,31 @@ TEST(ContactColumns, FourImpulseRowsAtOnceGiveTheBitsOfOneAtATime) {
 TEST(ContactColumns, FourProjectionRowsAtOnceGiveTheBitsOfOneAtATime) {
     std::mt19937_64 rng(12);
     for (int trial = 0; trial < 300; ++trial) {
-        ProjectColumns rows;
+        ContactColumns rows;
         fillRuns(rng, rows, [&](std::size_t k, std::uint32_t a, std::uint32_t b) {
-            const bool bMoves = std::uniform_int_distribution<int>(0, 2)(rng) > 0;
-            rows.a[k] = a, rows.b[k] = b;
-            rows.pushB[k] = bMoves ? b : kSink;
+            const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
+            const bool bMoves = kind > 0, still = kind == 3 && k % 4 == 1; // no mass: no step
+            rows.a[k] = a, rows.readB[k] = b;
             rows.reach[k] = std::abs(pick(rng, 1.5)), rows.cap[k] = std::abs(pick(rng, 0.3));
-            rows.fa[k] = bMoves ? 0.5 : 1.0, rows.fb[k] = bMoves ? 0.5 : 0.0;
+            ContactColumns::Masses& m = rows.all;
+            m.pushB[k] = bMoves ? b : kSink;
+            m.mass[k] = still ? 0.0 : bMoves ? 0.05 : 0.1;
+            m.fa[k] = still ? 0.0 : bMoves ? 0.5 : 1.0, m.fb[k] = still || !bMoves ? 0.0 : 0.5;
         });
-        ProjectColumns one = rows;
+        ContactColumns one = rows;
         std::vector<Vec2> p = randomState(rng), q = p;
         // Some pairs on top of each other: the normal is then straight up.
         for (std::size_t k = 0; k < rows.size(); k += 5)
-            p[rows.b[k]] = p[rows.a[k]], q[rows.b[k]] = q[rows.a[k]];
+            p[rows.readB[k]] = p[rows.a[k]], q[rows.readB[k]] = q[rows.a[k]];
         std::vector<std::uint8_t> touchedLanes(kParticles + 2), touchedOne(kParticles + 2);
         auto noShapes = [](std::size_t) { FAIL() << "no shape rows here"; };
         for (int sweep = 0; sweep < 3; ++sweep) {
-            sweepProjectColumns(rows, 0, rows.size(), p.data(), touchedLanes.data(),
+            sweepProjectColumns(rows, rows.all, 0, rows.size(), p.data(), touchedLanes.data(),
                                 contactLanesAvailable(), noShapes);
-            sweepProjectColumns(one, 0, one.size(), q.data(), touchedOne.data(), false, noShapes);
+            sweepProjectColumns(one, one.all, 0, one.size(), q.data(), touchedOne.data(), false,
+                                noShapes);
         }
-        if (contactLanesAvailable()) markTouched(rows, touchedLanes.data(), rows.pushB);
+        if (contactLanesAvailable()) markTouched(rows, touchedLanes.data(), rows.all.pushB);
         ASSERT_TRUE(sameBits(p, q)) << trial;
         for (std::uint32_t i = 0; i < kParticles; ++i)
             ASSERT_EQ(touchedLanes[i], touchedOne[i]) << trial << " " << i;
