@@ -29,12 +29,6 @@ SurfacePoint closestPoint(const Segment& s, Vec2 p) {
     return {dist, unitOr(perp(ab), {0.0, 1.0})};
 }
 
-SurfacePoint closestPoint(const Circle& c, Vec2 p) {
-    const Vec2 d = p - c.center;
-    const double l = length(d);
-    return {l - c.radius, unitOr(d, {0.0, 1.0})};
-}
-
 // Outside: the nearest edge point. Inside: minus the distance to the nearest edge
 // line (the least separating axis), with that edge's normal.
 SurfacePoint closestPoint(const ConvexPolygon& poly, Vec2 p) {
