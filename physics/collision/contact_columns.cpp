@@ -98,8 +98,8 @@ inline void scatter(Vec2* v, const std::uint32_t* idx, __m256d x, __m256d y) {
 }
 
 // Keeps the lanes a step changed, for markTouched.
-inline void keepChanged(std::vector<std::uint64_t>& changed, std::size_t k, __m256d mask) {
-    auto* at = reinterpret_cast<__m256i*>(changed.data() + k);
+inline void keepChanged(std::uint64_t* changed, std::size_t k, __m256d mask) {
+    auto* at = reinterpret_cast<__m256i*>(changed + k);
     _mm256_storeu_si256(at, _mm256_or_si256(_mm256_loadu_si256(at), _mm256_castpd_si256(mask)));
 }
 
@@ -114,13 +114,32 @@ inline __m256d minOf(__m256d x, __m256d y) {
 inline __m256d negate(__m256d x) {
     return _mm256_xor_pd(x, _mm256_set1_pd(-0.0));
 }
-inline __m256d load(const std::vector<double>& c, std::size_t k) {
-    return _mm256_loadu_pd(c.data() + k);
+inline __m256d load(const double* c, std::size_t k) {
+    return _mm256_loadu_pd(c + k);
 }
 // a where m, else b.
 inline __m256d where(__m256d m, __m256d a, __m256d b) {
     return _mm256_blendv_pd(b, a, m);
 }
+
+// The columns a sweep reads with one set of masses, as plain pointers: taken once a sweep,
+// not once every four rows (after each store through a vector's data, the compiler would
+// load them all again: an __m256i store may alias anything).
+struct Lanes {
+    const std::uint32_t *a, *readB, *pushB;
+    const std::uint8_t* shape;
+    const double *nx, *ny, *closing, *friction, *reach, *cap;
+    const double *wa, *wb, *mass, *fa, *fb;
+    double *normalImpulse, *tangentImpulse;
+    std::uint64_t* changed;
+    Lanes(ContactColumns& r, const ContactColumns::Masses& m)
+        : a(r.a.data()), readB(r.readB.data()), pushB(m.pushB.data()), shape(r.shape.data()),
+          nx(r.nx.data()), ny(r.ny.data()), closing(r.closing.data()), friction(r.friction.data()),
+          reach(r.reach.data()), cap(r.cap.data()), wa(m.wa.data()), wb(m.wb.data()),
+          mass(m.mass.data()), fa(m.fa.data()), fb(m.fb.data()),
+          normalImpulse(r.normalImpulse.data()), tangentImpulse(r.tangentImpulse.data()),
+          changed(r.changed.data()) {}
+};
 
 // What a lane step read of its two sides: a, and b (at b, or still).
 struct Sides {
@@ -138,14 +157,14 @@ inline void push(Vec2* s, const std::uint32_t* a, const std::uint32_t* pushB, __
             where(changed, _mm256_sub_pd(read.by, _mm256_mul_pd(y, kb)), read.by));
 }
 
-void impulseRows4(ContactColumns& r, const ContactColumns::Masses& m, std::size_t k, Vec2* v) {
+inline void impulseRows4(const Lanes& r, std::size_t k, Vec2* v) {
     const __m256d zero = _mm256_setzero_pd();
-    const __m256d mass = load(m.mass, k);
+    const __m256d mass = load(r.mass, k);
     const __m256d active = _mm256_cmp_pd(mass, zero, _CMP_GT_OQ);
     if (_mm256_testz_pd(active, active)) return;
     __m256d vax, vay, vbx, vby;
-    gather(v, r.a.data() + k, vax, vay);
-    gather(v, r.readB.data() + k, vbx, vby);
+    gather(v, r.a + k, vax, vay);
+    gather(v, r.readB + k, vbx, vby);
     const __m256d vrx = _mm256_sub_pd(vax, vbx), vry = _mm256_sub_pd(vay, vby);
     const __m256d nx = load(r.nx, k), ny = load(r.ny, k);
     const __m256d tx = negate(ny), ty = nx; // perp(normal)
@@ -162,26 +181,33 @@ void impulseRows4(ContactColumns& r, const ContactColumns::Masses& m, std::size_
     const __m256d tangential =
         maxOf(minOf(_mm256_sub_pd(tangentImpulse, _mm256_mul_pd(vt, mass)), limit), negate(limit));
     const __m256d jt = _mm256_sub_pd(tangential, tangentImpulse);
-    _mm256_storeu_pd(r.normalImpulse.data() + k, where(active, total, normalImpulse));
-    _mm256_storeu_pd(r.tangentImpulse.data() + k, where(active, tangential, tangentImpulse));
+    _mm256_storeu_pd(r.normalImpulse + k, where(active, total, normalImpulse));
+    _mm256_storeu_pd(r.tangentImpulse + k, where(active, tangential, tangentImpulse));
     const __m256d still =
         _mm256_and_pd(_mm256_cmp_pd(jn, zero, _CMP_EQ_OQ), _mm256_cmp_pd(jt, zero, _CMP_EQ_OQ));
     const __m256d changed = _mm256_andnot_pd(still, active);
     if (_mm256_testz_pd(changed, changed)) return;
     const __m256d jx = _mm256_add_pd(_mm256_mul_pd(nx, jn), _mm256_mul_pd(tx, jt));
     const __m256d jy = _mm256_add_pd(_mm256_mul_pd(ny, jn), _mm256_mul_pd(ty, jt));
-    push(v, r.a.data() + k, m.pushB.data() + k, changed, {vax, vay, vbx, vby}, jx, jy,
-         load(m.wa, k), load(m.wb, k));
+    push(v, r.a + k, r.pushB + k, changed, {vax, vay, vbx, vby}, jx, jy, load(r.wa, k),
+         load(r.wb, k));
     keepChanged(r.changed, k, changed);
 }
 
-void projectPairs4(ContactColumns& r, const ContactColumns::Masses& m, std::size_t k, Vec2* p) {
+void impulseSweep(ContactColumns& rows, const ContactColumns::Masses& m, std::size_t from,
+                  std::size_t to, Vec2* v) {
+    const Lanes r(rows, m);
+    for (std::size_t k = from; k < to; k += 4)
+        impulseRows4(r, k, v);
+}
+
+inline void projectPairs4(const Lanes& r, std::size_t k, Vec2* p) {
     const __m256d zero = _mm256_setzero_pd();
-    const __m256d active = _mm256_cmp_pd(load(m.mass, k), zero, _CMP_GT_OQ);
+    const __m256d active = _mm256_cmp_pd(load(r.mass, k), zero, _CMP_GT_OQ);
     if (_mm256_testz_pd(active, active)) return;
     __m256d pax, pay, pbx, pby;
-    gather(p, r.a.data() + k, pax, pay);
-    gather(p, r.readB.data() + k, pbx, pby);
+    gather(p, r.a + k, pax, pay);
+    gather(p, r.readB + k, pbx, pby);
     const __m256d dx = _mm256_sub_pd(pax, pbx), dy = _mm256_sub_pd(pay, pby);
     const __m256d distanceSquared = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
     const __m256d reach = load(r.reach, k);
@@ -198,9 +224,18 @@ void projectPairs4(ContactColumns& r, const ContactColumns::Masses& m, std::size
     const __m256d changed = _mm256_and_pd(near, _mm256_cmp_pd(depth, zero, _CMP_GT_OQ));
     if (_mm256_testz_pd(changed, changed)) return;
     const __m256d mx = _mm256_mul_pd(nx, depth), my = _mm256_mul_pd(ny, depth);
-    push(p, r.a.data() + k, m.pushB.data() + k, changed, {pax, pay, pbx, pby}, mx, my,
-         load(m.fa, k), load(m.fb, k));
+    push(p, r.a + k, r.pushB + k, changed, {pax, pay, pbx, pby}, mx, my, load(r.fa, k),
+         load(r.fb, k));
     keepChanged(r.changed, k, changed);
+}
+
+std::size_t projectPairRuns(ContactColumns& rows, const ContactColumns::Masses& m, std::size_t from,
+                            std::size_t to, Vec2* p) {
+    const Lanes r(rows, m);
+    std::size_t k = from;
+    for (; k < to && !r.shape[k]; k += 4)
+        projectPairs4(r, k, p);
+    return k;
 }
 
 } // namespace avx2
@@ -224,8 +259,7 @@ void sweepImpulseColumns(ContactColumns& rows, const ContactColumns::Masses& mas
                          bool lanes) {
 #if defined(ARTILLERY_CONTACT_AVX2)
     if (lanes) {
-        for (std::size_t k = from; k < to; k += 4)
-            avx2::impulseRows4(rows, masses, k, velocity);
+        avx2::impulseSweep(rows, masses, from, to, velocity);
         return;
     }
 #else
@@ -237,12 +271,13 @@ void sweepImpulseColumns(ContactColumns& rows, const ContactColumns::Masses& mas
 
 namespace detail {
 
-void projectPairs4(ContactColumns& rows, const ContactColumns::Masses& masses, std::size_t k,
-                   Vec2* position) {
+std::size_t projectPairRuns(ContactColumns& rows, const ContactColumns::Masses& masses,
+                            std::size_t from, std::size_t to, Vec2* position) {
 #if defined(ARTILLERY_CONTACT_AVX2)
-    avx2::projectPairs4(rows, masses, k, position);
+    return avx2::projectPairRuns(rows, masses, from, to, position);
 #else
-    (void)rows, (void)masses, (void)k, (void)position; // never called without AVX2
+    (void)rows, (void)masses, (void)to, (void)position; // never called without AVX2
+    return from;
 #endif
 }
 

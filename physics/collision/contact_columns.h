@@ -84,9 +84,10 @@ void markTouched(Columns& rows, std::uint8_t* touched, const Pushes&... pushes) 
 namespace detail {
 void projectPair(const ContactColumns& rows, const ContactColumns::Masses& masses, std::size_t k,
                  Vec2* position, std::uint8_t* touched);
-/// Four pair rows k .. k + 3 at once (contactLanesAvailable() only).
-void projectPairs4(ContactColumns& rows, const ContactColumns::Masses& masses, std::size_t k,
-                   Vec2* position);
+/// The runs of four pair rows from `from` on, each four at once, up to `to` or the first
+/// run of shape rows, where it stops (contactLanesAvailable() only).
+std::size_t projectPairRuns(ContactColumns& rows, const ContactColumns::Masses& masses,
+                            std::size_t from, std::size_t to, Vec2* position);
 } // namespace detail
 
 template <class ShapeStep>
@@ -102,14 +103,10 @@ void sweepProjectColumns(ContactColumns& rows, const ContactColumns::Masses& mas
         }
         return;
     }
-    for (std::size_t k = from; k < to; k += 4) {
-        if (!rows.shape[k]) {
-            detail::projectPairs4(rows, masses, k, position);
-            continue;
-        }
+    for (std::size_t k = detail::projectPairRuns(rows, masses, from, to, position); k < to;
+         k = detail::projectPairRuns(rows, masses, k + 4, to, position))
         for (std::size_t l = k; l < k + 4; ++l)
             if (rows.shape[l]) shapeStep(l); // padding: a pair row
-    }
 }
 
 } // namespace phys
