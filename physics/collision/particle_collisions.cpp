@@ -941,12 +941,13 @@ void ParticleCollisions::reportDeferred(const ParticleSet& set) {
     }
 }
 
-// contactOrder_: the contacts by band (the level of their upper particle), a counting sort,
-// so the pair order, which is fixed, breaks ties (after "movable first" within a band). Levels
-// spread from the particles the ground holds up (level 1) to the particles they hold up, breadth
-// first; particles that nothing connects to the ground this way come last. A particle's level is
-// its distance from the ground, whatever order the search takes them in. Only the contacts'
-// particles (bodies_) are counted, by their places there.
+// contactOrder_: the contacts by band (the level of their upper particle), those with
+// something immovable last in each band, a counting sort, so the pair order, which is
+// fixed, breaks ties. Levels spread from the particles the ground holds up (level 1) to
+// the particles they hold up, breadth first; particles that nothing connects to the
+// ground this way come last. A particle's level is its distance from the ground, whatever
+// order the search takes them in. Only the contacts' particles (bodies_) are counted, by
+// their places there.
 void ParticleCollisions::orderContactsByLevel() {
     const std::size_t n = bodies_.size();
     // Who holds whom up, among the movable particles: offsets into a flat list.
