@@ -392,7 +392,6 @@ class ParticleCollisions {
     ContactColumns rows_;
     std::vector<std::uint32_t> rowStart_;
     Wavefronts wavefronts_;
-    std::vector<std::uint32_t> sequence_, placed_;    ///< scratch of layOutRows
     std::vector<Vec2> sweepVelocity_, sweepPosition_; ///< the particles', then still, sink
     /// Sweeps over each band, from the ground up, with the bands below immovable.
     static constexpr int kShockSweeps = 4;

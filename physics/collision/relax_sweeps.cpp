@@ -107,29 +107,19 @@ void ParticleCollisions::warmStart() {
 void ParticleCollisions::layOutRows(const ParticleSet& set) {
     const auto count = static_cast<std::uint32_t>(contacts_.size());
     const std::uint32_t still = stillSlot(), sink = sinkSlot();
+    // The contacts as the sweeps take them: contactOrder_ itself, or its wavefronts.
     const std::vector<std::uint32_t>* order = &contactOrder_;
+    rowStart_ = bandStart_;
     if (lanes_) {
-        sequence_.resize(count);
-        for (std::uint32_t k = 0; k < count; ++k)
-            sequence_[k] = k;
         wavefronts_.begin(still); // still and sink order nothing
-        wavefronts_.add(sequence_, bandStart_, [&](std::uint32_t k) {
-            const RelaxContact& c = contacts_[contactOrder_[k]];
+        wavefronts_.add(contactOrder_, bandStart_, [&](std::uint32_t index) {
+            const RelaxContact& c = contacts_[index];
             const bool shape = c.b == kNoParticle;
             const std::uint32_t b = shape ? still : c.b;
             return std::array<std::uint32_t, 4>{shape ? 1u : 0u, c.a, b, b};
         });
-        // The places of contactOrder_ as the wavefronts take them: the contacts themselves.
         order = &wavefronts_.order(4);
         rowStart_ = wavefronts_.barrierStarts();
-        placed_.resize(order->size());
-        for (std::size_t at = 0; at < order->size(); ++at) {
-            const std::uint32_t k = (*order)[at];
-            placed_[at] = k < count ? contactOrder_[k] : Wavefronts::kPadding;
-        }
-        order = &placed_;
-    } else {
-        rowStart_ = bandStart_;
     }
     // Three divisions a pair of inverse masses, done once for each pair: a pile of like
     // balls has a handful (1 and 1, 1 and 0, 0 and 1), each seen thousands of times, and
