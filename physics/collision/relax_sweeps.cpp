@@ -9,7 +9,7 @@
 //               once per visit;
 //   wavefronts  where the processor has AVX2, the rows are laid out once in the
 //               wavefronts of their order (wavefronts.h), which every sweep takes, four
-//               at a time: the bits of the sweeps in that order, in about 700 steps of
+//               at a time: the bits of the sweeps in that order, in about 650 steps of
 //               four for 2,500 contacts;
 //   copies      the velocities and positions as pairs, with two slots past the
 //               particles: still, at rest, which a shape reads as its velocity, and sink,
