@@ -1,6 +1,7 @@
 #include "physics/collision/particle_collisions.h"
 
 #include "physics/collision/contact_resolver.h"
+#include "physics/collision/pair_filter.h"
 
 #include <algorithm>
 #include <bit>
@@ -418,17 +419,8 @@ void ParticleCollisions::findPairs(const ParticleSet& set, const CollisionDef& d
         break;
     }
     if (kindsChanged_) selectLivePairs();
-    // Kept pairs whose exact boxes overlap; without branches (which pass is a coin toss).
-    const auto n = static_cast<std::uint32_t>(boxes_.size());
     pairs_.resize(livePairs_.size());
-    std::size_t kept = 0;
-    for (const ProxyPair& p : livePairs_) {
-        const Aabb& a = boxes_[p.first];
-        const Aabb& b = p.second < n ? boxes_[p.second] : staticIndex_.box(p.second - n);
-        pairs_[kept] = p;
-        kept += a.overlapsBranchless(b);
-    }
-    pairs_.resize(kept);
+    pairs_.resize(keepOverlapping(livePairs_, boxes_, staticIndex_.boxes(), pairs_.data()));
 }
 
 void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shapes,
