@@ -984,9 +984,14 @@ void ParticleCollisions::orderContactsByLevel() {
         const bool immovableSide = c.b == kNoParticle || c.wa == 0.0 || c.wb == 0.0;
         return 2 * (l == kUnsupported ? unsupported : l) + (immovableSide ? 1 : 0);
     };
+    // Each contact's key once, in a column the placing pass reads instead of the contacts.
     keyStart_.assign(2 * unsupported + 3, 0u);
-    for (const RelaxContact& c : contacts_)
-        ++keyStart_[key(c) + 1];
+    contactKey_.resize(contacts_.size());
+    for (std::size_t k = 0; k < contacts_.size(); ++k) {
+        const auto bucket = static_cast<std::uint32_t>(key(contacts_[k]));
+        contactKey_[k] = bucket;
+        ++keyStart_[bucket + 1];
+    }
     for (std::size_t k = 0; k + 1 < keyStart_.size(); ++k)
         keyStart_[k + 1] += keyStart_[k];
     bandStart_.resize(unsupported + 2);
@@ -994,7 +999,7 @@ void ParticleCollisions::orderContactsByLevel() {
         bandStart_[b] = keyStart_[2 * b];
     contactOrder_.resize(contacts_.size());
     for (std::uint32_t k = 0; k < contacts_.size(); ++k)
-        contactOrder_[keyStart_[key(contacts_[k])]++] = k;
+        contactOrder_[keyStart_[contactKey_[k]]++] = k;
 }
 
 void ParticleCollisions::penaltyPhase(ParticleSet& set, const StaticShapes& shapes,

@@ -401,7 +401,8 @@ class ParticleCollisions {
     static constexpr double kSupport = 0.2;
     /// Gaps below this, in radii, count as touching (no closing allowed).
     static constexpr double kSlop = 1e-3;
-    std::vector<std::uint32_t> adjacencyStart_, adjacency_, fill_, frontier_, keyStart_;
+    std::vector<std::uint32_t> adjacencyStart_, adjacency_, fill_, frontier_, keyStart_,
+        contactKey_;
     std::vector<ContactEvent> events_;
     CollisionStats stats_;
     double detectMicros_ = 0.0;
