@@ -820,7 +820,9 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
         // for those writes to land (that copy was most of this loop's time).
         RelaxContact& c = contacts_.emplace_back();
         c.a = a;
+        c.b = isStatic ? kNoParticle : b;
         c.proxy = b;
+        c.normalImpulse = c.tangentImpulse = 0.0;
         if (isStatic) {
             c.shape = shapes.ref(b - slots);
             const SurfacePoint sp = shapes.closestPoint(c.shape, set.position(a));
@@ -835,7 +837,6 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
             }
             c.friction = mats.pair(set.material[a], shapes.material(c.shape)).staticFriction;
         } else {
-            c.b = b;
             const Vec2 d = set.position(a) - set.position(b);
             const double L = length(d);
             c.normal = L > 0.0 ? d / L : Vec2{0.0, 1.0};
