@@ -1,6 +1,7 @@
 #include "physics/model_pass.h"
 
 #include "physics/ballistics.h"
+#include "physics/cpu_features.h"
 
 #include <cmath>
 
@@ -196,14 +197,6 @@ struct Lanes {
 #include "physics/model_pass_lanes.inc"
 } // namespace avx2
 #pragma GCC pop_options
-
-bool haveAvx2() {
-    static const bool yes = [] {
-        __builtin_cpu_init();
-        return __builtin_cpu_supports("avx2") != 0;
-    }();
-    return yes;
-}
 #endif
 
 template <DragModel Drag, FlightScheme Scheme>
@@ -220,7 +213,7 @@ ModelCounts sweep(ParticleSet& s, const LocalForceLaw& law, const ModelRule* rul
     };
     if (law.water) lanes = 1; // buoyancy and water drag: one particle at a time
 #if defined(ARTILLERY_FLIGHT_AVX2)
-    if (lanes >= 4 && haveAvx2())
+    if (lanes >= 4 && processorHasAvx2())
         i = avx2::laneSweep<Drag, Scheme>(s, law, rule, g, h, i, counts, single);
 #endif
 #if defined(__SSE2__)

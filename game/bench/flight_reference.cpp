@@ -1,5 +1,7 @@
 #include "game/bench/flight_reference.h"
 
+#include "physics/cpu_features.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -186,21 +188,13 @@ std::size_t avx2VerletRange(const Arrays& a, const FlightReferenceStep& c, std::
     return i;
 }
 #pragma GCC pop_options
-
-bool processorHasAvx2() {
-    static const bool yes = [] {
-        __builtin_cpu_init();
-        return __builtin_cpu_supports("avx2") != 0;
-    }();
-    return yes;
-}
 #endif
 
 } // namespace
 
 int flightReferenceLanes() {
 #if defined(ARTILLERY_REFERENCE_AVX2)
-    if (processorHasAvx2()) return 4;
+    if (phys::processorHasAvx2()) return 4;
 #endif
 #if defined(__SSE2__)
     return 2;

@@ -1,5 +1,7 @@
 #include "physics/collision/contact_columns.h"
 
+#include "physics/cpu_features.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -244,11 +246,7 @@ std::size_t projectPairRuns(ContactColumns& rows, const ContactColumns::Masses& 
 
 bool contactLanesAvailable() {
 #if defined(ARTILLERY_CONTACT_AVX2)
-    static const bool yes = [] {
-        __builtin_cpu_init();
-        return __builtin_cpu_supports("avx2") != 0;
-    }();
-    return yes;
+    return processorHasAvx2();
 #else
     return false;
 #endif

@@ -1,5 +1,7 @@
 #include "physics/collision/pair_filter.h"
 
+#include "physics/cpu_features.h"
+
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #include <immintrin.h>
 #define ARTILLERY_PAIR_FILTER_AVX2 1
@@ -51,14 +53,6 @@ std::size_t keepOverlappingAvx2(std::span<const ProxyPair> pairs, std::span<cons
     return kept;
 }
 
-bool avx2Available() {
-    static const bool yes = [] {
-        __builtin_cpu_init();
-        return __builtin_cpu_supports("avx2") != 0;
-    }();
-    return yes;
-}
-
 } // namespace
 #pragma GCC pop_options
 #endif
@@ -66,7 +60,7 @@ bool avx2Available() {
 std::size_t keepOverlapping(std::span<const ProxyPair> pairs, std::span<const Aabb> particles,
                             std::span<const Aabb> statics, ProxyPair* out) {
 #if defined(ARTILLERY_PAIR_FILTER_AVX2)
-    if (avx2Available()) return keepOverlappingAvx2(pairs, particles, statics, out);
+    if (processorHasAvx2()) return keepOverlappingAvx2(pairs, particles, statics, out);
 #endif
     return keepOverlappingScalar(pairs, particles, statics, out);
 }
