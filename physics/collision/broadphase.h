@@ -131,6 +131,7 @@ class StaticShapeIndex {
     void query(const Aabb& box, std::vector<std::uint32_t>& out) const;
     /// The box of shape i (StaticShapes::ref order), as of the last update.
     const Aabb& box(std::size_t i) const { return boxes_[i]; }
+    /// Every shape's box, in the same order.
     std::span<const Aabb> boxes() const { return boxes_; }
     /// StaticShapes::version() of the last update.
     std::uint64_t version() const { return version_; }
