@@ -56,7 +56,7 @@ bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShape
         strays_.push_back(i);
         strayMark_[i] = 1;
     }
-    indexLivePairs();
+    indexCachedPairs();
 
     // Changed: the pairs of each changed particle whose exact boxes overlap, from its
     // kept pairs and the strays, or, for a stray, from every proxy.
@@ -68,7 +68,8 @@ bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShape
             continue;
         }
         for (std::uint32_t k = pairStart_[i]; k < pairStart_[i + 1]; ++k) {
-            const ProxyPair p = livePairs_[pairsOf_[k]];
+            const ProxyPair p = cachedPairs_[pairsOf_[k]];
+            if (!isLive(p)) continue;
             if (p.second >= n) {
                 if (boxes_[i].overlapsBranchless(staticIndex_.box(p.second - n)))
                     pairs_.push_back(p);
@@ -139,13 +140,14 @@ void ParticleCollisions::pairsOfStray(std::uint32_t i) {
         pairs_.push_back({i, n + s});
 }
 
-// The live pairs by particle, as offsets into a flat list of pair indices: a particle's
-// pairs with the shapes and with the particles on either side of the pair.
-void ParticleCollisions::indexLivePairs() {
-    if (indexedVersion_ == livePairsVersion_) return;
+// The cached pairs by particle, as offsets into a flat list of pair indices: a particle's
+// pairs with the shapes and with the particles on either side of the pair. A particle's
+// live pairs are those of its cached pairs that the live kinds can make (isLive).
+void ParticleCollisions::indexCachedPairs() {
+    if (indexedVersion_ == cachedPairsVersion_) return;
     const auto n = static_cast<std::uint32_t>(boxes_.size());
     pairStart_.assign(n + 1, 0u);
-    for (const ProxyPair& p : livePairs_) {
+    for (const ProxyPair& p : cachedPairs_) {
         ++pairStart_[p.first + 1];
         if (p.second < n) ++pairStart_[p.second + 1];
     }
@@ -153,12 +155,12 @@ void ParticleCollisions::indexLivePairs() {
         pairStart_[i + 1] += pairStart_[i];
     pairsOf_.resize(pairStart_[n]);
     pairFill_.assign(pairStart_.begin(), pairStart_.end() - 1);
-    for (std::uint32_t k = 0; k < livePairs_.size(); ++k) {
-        const ProxyPair& p = livePairs_[k];
+    for (std::uint32_t k = 0; k < cachedPairs_.size(); ++k) {
+        const ProxyPair& p = cachedPairs_[k];
         pairsOf_[pairFill_[p.first]++] = k;
         if (p.second < n) pairsOf_[pairFill_[p.second]++] = k;
     }
-    indexedVersion_ = livePairsVersion_;
+    indexedVersion_ = cachedPairsVersion_;
 }
 
 } // namespace phys

@@ -383,16 +383,11 @@ void ParticleCollisions::patchPairCache(const ParticleSet& set, double h) {
 // particle that falls asleep and wakes again while its box stays in its fat box gets its
 // pairs back without a broad phase (until a patch drops them: it is then patched).
 void ParticleCollisions::selectLivePairs() {
-    const auto n = static_cast<std::uint32_t>(kinds_.size());
-    livePairs_.clear();
-    for (const ProxyPair& p : cachedPairs_) {
-        const ProxyKind a = kinds_[p.first];
-        const ProxyKind b = p.second < n ? kinds_[p.second] : ProxyKind::Resting;
-        if (pairable(a, b)) livePairs_.push_back(p);
-    }
     liveKinds_ = kinds_;
+    livePairs_.clear();
+    for (const ProxyPair& p : cachedPairs_)
+        if (isLive(p)) livePairs_.push_back(p);
     kindsChanged_ = false;
-    ++livePairsVersion_;
 }
 
 // Right after a build or a patch every cached pair can pair with the kinds of the cache.
@@ -400,7 +395,7 @@ void ParticleCollisions::takeCachedPairsAsLive() {
     livePairs_ = cachedPairs_;
     liveKinds_ = fatKinds_;
     kindsChanged_ = false;
-    ++livePairsVersion_;
+    ++cachedPairsVersion_;
 }
 
 void ParticleCollisions::findPairs(const ParticleSet& set, const CollisionDef& def, double h) {

@@ -169,6 +169,12 @@ class ParticleCollisions {
     Aabb fatBox(const ParticleSet& set, std::size_t i, double h) const;
     static constexpr double kFatBoxPlay = 0.5; ///< radii of play in a fat box (fatBox)
     void selectLivePairs();
+    /// A cached pair that the live kinds can make: one of livePairs_.
+    bool isLive(const ProxyPair& p) const {
+        const auto n = static_cast<std::uint32_t>(liveKinds_.size());
+        return pairable(liveKinds_[p.first],
+                        p.second < n ? liveKinds_[p.second] : ProxyKind::Resting);
+    }
     void takeCachedPairsAsLive();
     void detect(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                 double h);
@@ -181,7 +187,7 @@ class ParticleCollisions {
     /// when a changed particle left what the kept pairs cover (detect runs instead).
     bool detectChanges(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                        double h);
-    void indexLivePairs();
+    void indexCachedPairs();
     /// Proxy i's pairs among all proxies and the shapes, by their exact boxes.
     void pairsOfStray(std::uint32_t i);
     /// Proxies i and j (particles) may pair, by their kinds and exact boxes.
@@ -307,10 +313,12 @@ class ParticleCollisions {
     std::vector<std::uint32_t> changed_;     ///< the particles whose paths this pass changed
     std::vector<std::uint8_t> leftToSolver_; ///< per candidate: a resting pair deferred
     std::vector<Candidate> carried_, mergedCandidates_; ///< scratch of detectChanges
-    // The live pairs by particle (offsets into a flat list of their indices), built when a
-    // later pass needs them, for the live pairs of livePairsVersion_.
+    // The cached pairs by particle (offsets into a flat list of their indices), built when
+    // a later pass needs them, for the cache of cachedPairsVersion_: once per build or
+    // mend of the cache, not each time the live pairs are selected again (as particles
+    // fall asleep, once a tick).
     std::vector<std::uint32_t> pairStart_, pairsOf_, pairFill_;
-    std::uint64_t livePairsVersion_ = 0, indexedVersion_ = ~std::uint64_t{0};
+    std::uint64_t cachedPairsVersion_ = 0, indexedVersion_ = ~std::uint64_t{0};
     // Particles a later pass changed beyond what the live pairs cover (their boxes left
     // their fat boxes, or they woke), until the next full detection mends the cache: at
     // most kMostStrays, more run the full detection.
