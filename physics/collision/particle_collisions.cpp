@@ -325,7 +325,7 @@ void ParticleCollisions::patchPairCache(const ParticleSet& set, double h) {
     auto dropped = [&](const ProxyPair& p) {
         const bool shape = p.second >= n;
         return escapedMark_[p.first] != 0 || (!shape && escapedMark_[p.second] != 0) ||
-               !pairable(kinds_[p.first], shape ? ProxyKind::Resting : kinds_[p.second]);
+               !pairableAs(kinds_, p);
     };
     std::erase_if(particlePairs_, dropped);
     std::erase_if(staticPairs_, dropped);

@@ -169,12 +169,13 @@ class ParticleCollisions {
     Aabb fatBox(const ParticleSet& set, std::size_t i, double h) const;
     static constexpr double kFatBoxPlay = 0.5; ///< radii of play in a fat box (fatBox)
     void selectLivePairs();
-    /// A cached pair that the live kinds can make: one of livePairs_.
-    bool isLive(const ProxyPair& p) const {
-        const auto n = static_cast<std::uint32_t>(liveKinds_.size());
-        return pairable(liveKinds_[p.first],
-                        p.second < n ? liveKinds_[p.second] : ProxyKind::Resting);
+    /// Pair p can pair with these kinds of the particles (a shape is Resting).
+    static bool pairableAs(const std::vector<ProxyKind>& kinds, const ProxyPair& p) {
+        const std::size_t n = kinds.size();
+        return pairable(kinds[p.first], p.second < n ? kinds[p.second] : ProxyKind::Resting);
     }
+    /// A cached pair that the live kinds can make: one of livePairs_.
+    bool isLive(const ProxyPair& p) const { return pairableAs(liveKinds_, p); }
     void takeCachedPairsAsLive();
     void detect(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                 double h);

@@ -109,7 +109,6 @@ void ParticleCollisions::layOutRows(const ParticleSet& set) {
     const std::uint32_t still = stillSlot(), sink = sinkSlot();
     // The contacts as the sweeps take them: contactOrder_ itself, or its wavefronts.
     const std::vector<std::uint32_t>* order = &contactOrder_;
-    rowStart_ = bandStart_;
     if (lanes_) {
         wavefronts_.begin(still); // still and sink order nothing
         wavefronts_.add(contactOrder_, bandStart_, [&](std::uint32_t index) {
@@ -120,6 +119,8 @@ void ParticleCollisions::layOutRows(const ParticleSet& set) {
         });
         order = &wavefronts_.order(4);
         rowStart_ = wavefronts_.barrierStarts();
+    } else {
+        rowStart_ = bandStart_;
     }
     // Three divisions a pair of inverse masses, done once for each pair: a pile of like
     // balls has a handful (1 and 1, 1 and 0, 0 and 1), each seen thousands of times, and
