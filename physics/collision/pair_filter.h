@@ -7,9 +7,15 @@
 // b's with its halves swapped (hi.x, hi.y, lo.x, lo.y), the upper two lanes negated so
 // that "lo <= hi" and "hi >= lo" are both "<=". Negating is exact and an ordered
 // comparison is false with a NaN either way, so both give the same pairs.
+//
+// The contact solver filters once more: of the pairs of particles whose boxes overlap,
+// those whose centres are near enough to be a contact (keepNear), with the normal and the
+// depth it needs. Its square root and division, four pairs at a time, come off the
+// solver's build of its contacts, which waited on them and then branched on the depth.
 #pragma once
 
 #include "physics/collision/broadphase.h"
+#include "physics/vec2.h"
 
 #include <cstddef>
 #include <span>
@@ -26,5 +32,32 @@ std::size_t keepOverlapping(std::span<const ProxyPair> pairs, std::span<const Aa
 /// keepOverlapping one pair at a time without AVX2 (the reference the tests compare with).
 std::size_t keepOverlappingScalar(std::span<const ProxyPair> pairs, std::span<const Aabb> particles,
                                   std::span<const Aabb> statics, ProxyPair* out);
+
+/// A pair that may be a contact of the solver. For two particles, the normal from b's
+/// centre to a's ({0, 1} when they coincide) and the depth: their radii summed less the
+/// distance between the centres (negative: a gap). For a particle and a shape both are
+/// left to the caller.
+struct NearPair {
+    ProxyPair pair;
+    Vec2 normal;
+    double depth;
+};
+
+/// The particles' positions and radii, by slot.
+struct Discs {
+    std::span<const double> x, y, radius;
+};
+
+/// Writes to `out`, in their order, every pair with a shape (its second at or past
+/// discs.x.size()) and every pair of particles whose depth exceeds
+/// -tolerance - speculative * (ra + rb), and returns how many. `out` has room for every
+/// pair. The normal and the depth are those of the solver's one-pair arithmetic, bit for
+/// bit.
+std::size_t keepNear(std::span<const ProxyPair> pairs, const Discs& discs, double tolerance,
+                     double speculative, NearPair* out);
+
+/// keepNear one pair at a time without AVX2 (the reference the tests compare with).
+std::size_t keepNearScalar(std::span<const ProxyPair> pairs, const Discs& discs, double tolerance,
+                           double speculative, NearPair* out);
 
 } // namespace phys

@@ -804,8 +804,11 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
     if (level_.size() < n) level_.resize(n, kUnsupported);
     growTo(bodyMark_, n), growTo(bodyIndex_, n);
     bodies_.clear();
-    for (const ProxyPair& pair : pairs_) {
-        const std::uint32_t a = pair.first, b = pair.second;
+    nearPairs_.resize(pairs_.size());
+    nearPairs_.resize(keepNear(pairs_, {set.px, set.py, set.radius}, def.toiTolerance, kSpeculative,
+                               nearPairs_.data()));
+    for (const NearPair& near : nearPairs_) {
+        const std::uint32_t a = near.pair.first, b = near.pair.second;
         const bool isStatic = b >= slots;
         if (!isStatic && !def.particlePairs) continue;
         const double wa = moving(set, a) ? set.invMass[a] : 0.0;
@@ -831,15 +834,13 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
                 c.depth = set.radius[a] + sp.distance;
             }
             c.friction = mats.pair(set.material[a], shapes.material(c.shape)).staticFriction;
-        } else {
-            const Vec2 d = set.position(a) - set.position(b);
-            const double L = length(d);
-            c.normal = L > 0.0 ? d / L : Vec2{0.0, 1.0};
-            c.depth = set.radius[a] + set.radius[b] - L;
+        } else { // near enough: keepNear tested the depth
+            c.normal = near.normal;
+            c.depth = near.depth;
             c.friction = mats.pair(set.material[a], set.material[b]).staticFriction;
         }
         const double reach = set.radius[a] + (isStatic ? 0.0 : set.radius[b]);
-        if (!(c.depth > -def.toiTolerance - kSpeculative * reach)) {
+        if (isStatic && !(c.depth > -def.toiTolerance - kSpeculative * reach)) {
             contacts_.pop_back();
             continue;
         }

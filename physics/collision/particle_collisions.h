@@ -52,6 +52,7 @@
 #include "physics/collision/collision_def.h"
 #include "physics/collision/contact_columns.h"
 #include "physics/collision/narrowphase.h"
+#include "physics/collision/pair_filter.h"
 #include "physics/collision/shapes.h"
 #include "physics/collision/time_order.h"
 #include "physics/collision/wavefronts.h"
@@ -276,6 +277,7 @@ class ParticleCollisions {
     bool kindsChanged_ = true; ///< a kind may differ from liveKinds_ (buildProxy)
     std::vector<ProxyKind> kinds_;
     std::vector<ProxyPair> pairs_;
+    std::vector<NearPair> nearPairs_; ///< the solver's pairs near enough to be contacts
     // The pair cache: broad phase over fat boxes (exact box grown by fatBox), kept
     // while every exact box stays inside its fat box and nothing else changes.
     std::vector<Aabb> fatBoxes_;
