@@ -117,8 +117,11 @@ std::size_t keepNearAvx2(std::span<const ProxyPair> pairs, const Discs& discs, d
         const __m256d L =
             _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)));
         const __m256d apart = _mm256_cmp_pd(L, zero, _CMP_GT_OQ);
-        _mm256_store_pd(nx, _mm256_blendv_pd(zero, _mm256_div_pd(dx, L), apart));
-        _mm256_store_pd(ny, _mm256_blendv_pd(one, _mm256_div_pd(dy, L), apart));
+        // Divided by 1 where the centres coincide, whose normal is {0, 1}: no 0 / 0 is
+        // born in a lane the pair's own arithmetic would not divide in.
+        const __m256d divisor = _mm256_blendv_pd(one, L, apart);
+        _mm256_store_pd(nx, _mm256_blendv_pd(zero, _mm256_div_pd(dx, divisor), apart));
+        _mm256_store_pd(ny, _mm256_blendv_pd(one, _mm256_div_pd(dy, divisor), apart));
         const __m256d reach = _mm256_add_pd(ra, rb);
         const __m256d d = _mm256_sub_pd(reach, L);
         _mm256_store_pd(depth, d);
