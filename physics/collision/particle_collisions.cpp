@@ -804,6 +804,7 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
     if (level_.size() < n) level_.resize(n, kUnsupported);
     growTo(bodyMark_, n), growTo(bodyIndex_, n);
     bodies_.clear();
+    holds_.clear();
     nearPairs_.resize(pairs_.size());
     nearPairs_.resize(keepNear(pairs_, {set.px, set.py, set.radius}, def.toiTolerance, kSpeculative,
                                nearPairs_.data()));
@@ -873,6 +874,9 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
         if (c.support == -1 && wb > 0.0 && wa == 0.0) level_[b] = 1;
         addBody(a);
         if (!isStatic) addBody(b);
+        // The particle below holds the one above up, when both can move.
+        if (!isStatic && c.support != 0 && wa > 0.0 && wb > 0.0)
+            holds_.push_back(c.support == 1 ? std::pair{b, a} : std::pair{a, b});
     }
     if (contacts_.empty()) {
         warm_.clear();
@@ -940,20 +944,15 @@ void ParticleCollisions::reportDeferred(const ParticleSet& set) {
 void ParticleCollisions::orderContactsByLevel() {
     const std::size_t n = bodies_.size();
     // Who holds whom up, among the movable particles: offsets into a flat list.
-    auto holder = [](const RelaxContact& c) { return c.support == 1 ? c.b : c.a; };
-    auto held = [](const RelaxContact& c) { return c.support == 1 ? c.a : c.b; };
-    auto holds = [](const RelaxContact& c) {
-        return c.b != kNoParticle && c.support != 0 && c.wa > 0.0 && c.wb > 0.0;
-    };
     adjacencyStart_.assign(n + 1, 0u);
-    for (const RelaxContact& c : contacts_)
-        if (holds(c)) ++adjacencyStart_[bodyIndex_[holder(c)] + 1];
+    for (const auto& [holder, held] : holds_)
+        ++adjacencyStart_[bodyIndex_[holder] + 1];
     for (std::size_t i = 0; i < n; ++i)
         adjacencyStart_[i + 1] += adjacencyStart_[i];
     adjacency_.resize(adjacencyStart_[n]);
     fill_.assign(adjacencyStart_.begin(), adjacencyStart_.end() - 1);
-    for (const RelaxContact& c : contacts_)
-        if (holds(c)) adjacency_[fill_[bodyIndex_[holder(c)]]++] = held(c);
+    for (const auto& [holder, held] : holds_)
+        adjacency_[fill_[bodyIndex_[holder]]++] = held;
     // Breadth first from the ground.
     frontier_.clear();
     for (const std::uint32_t i : bodies_)

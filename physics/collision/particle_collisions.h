@@ -419,6 +419,9 @@ class ParticleCollisions {
     static constexpr double kSlop = 1e-3;
     std::vector<std::uint32_t> adjacencyStart_, adjacency_, fill_, frontier_, keyStart_,
         contactKey_;
+    /// Who holds whom up among the movable particles, one entry per such contact, in the
+    /// contacts' order (the build lists them; the levels read these, not the contacts).
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> holds_; ///< holder, held
     std::vector<ContactEvent> events_;
     CollisionStats stats_;
     double detectMicros_ = 0.0;
