@@ -82,6 +82,24 @@ constexpr double kVelocityRounding = 1e-12, kAccelRounding = 1e-9;
 /// one into the other, pass after pass, by less each time (a few 1e-7 m).
 constexpr double kOverlapSlop = 1e-3;
 
+/// The time of impact of a sphere of `radius` on path `m` that starts touching a surface
+/// whose normal there is `normal`: a contact only if the path heads into the surface,
+/// now (v.n < 0, or v.n = 0 and a.n < 0) or, leaving slower than it is pulled back, when
+/// it returns before tEnd (t = -2 v.n / a.n on a flat surface; rounding leaves v.n ~
+/// +1e-17 after a resting contact, which returns at once). Normal components below
+/// rounding (a resolved contact leaves ~1e-17) are zero. `g0`: the gap at the start.
+inline std::optional<double> touchingTime(double g0, Vec2 normal, double radius,
+                                          const PathMotion& m, double tEnd, const ToiSettings& s) {
+    const double t0 = m.t0;
+    const double vn = dot(normal, m.v), an = dot(normal, m.a);
+    const double vEps = kVelocityRounding * atLeastOne(m.v);
+    const double aEps = kAccelRounding * atLeastOne(m.a);
+    const double slop = std::max(s.tolerance, kOverlapSlop * radius);
+    if (g0 < -slop || vn < -vEps || (vn <= vEps && an < -aEps)) return t0;
+    if (an < -aEps && -2.0 * vn / an <= tEnd - t0) return t0 - 2.0 * vn / an;
+    return std::nullopt;
+}
+
 /// Finds the time of impact in [m.t0, tEnd] of a sphere of `radius` on path `m` with
 /// a static shape (Shape: Segment, Circle or ConvexPolygon; see the file comment).
 /// A sphere that starts touching counts only if it is heading in (or inside by more than
@@ -94,20 +112,7 @@ std::optional<double> timeOfImpact(const Shape& shape, double radius, const Path
     if (!(tEnd > t0)) return std::nullopt;
     const SurfacePoint start = closestPoint(shape, m.p);
     const double g0 = start.distance - radius;
-    if (g0 <= s.tolerance) {
-        // Touching at the start: a contact only if the path heads into the surface,
-        // now (v.n < 0, or v.n = 0 and a.n < 0) or, leaving slower than it is pulled
-        // back, when it returns within the interval (t = -2 v.n / a.n on a flat surface;
-        // rounding leaves v.n ~ +1e-17 after a resting contact, which returns at once).
-        // Normal components below rounding (a resolved contact leaves ~1e-17) are zero.
-        const double vn = dot(start.normal, m.v), an = dot(start.normal, m.a);
-        const double vEps = kVelocityRounding * atLeastOne(m.v);
-        const double aEps = kAccelRounding * atLeastOne(m.a);
-        const double slop = std::max(s.tolerance, kOverlapSlop * radius);
-        if (g0 < -slop || vn < -vEps || (vn <= vEps && an < -aEps)) return t0;
-        if (an < -aEps && -2.0 * vn / an <= tEnd - t0) return t0 - 2.0 * vn / an;
-        return std::nullopt;
-    }
+    if (g0 <= s.tolerance) return touchingTime(g0, start.normal, radius, m, tEnd, s);
 
     // Bisection of a bracket [ta, tb] with gap(ta) > 0 >= gap(tb), then secant
     // (Illinois) steps inside it; returns a time whose gap is within the tolerance, or

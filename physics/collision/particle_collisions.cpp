@@ -425,8 +425,18 @@ void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shap
     findPairs(set, def, h);
     stats_.pairs += static_cast<int>(pairs_.size());
     candidates_.clear();
-    for (const ProxyPair& pair : pairs_)
-        addCandidate(set, shapes, def, pair, h);
+    // Most pairs of a pile start touching: their times need no search (pair_starts.h).
+    pairStarts_.resize(pairs_.size());
+    const PathDiscs discs{std::span<const PathMotion>(path_).first(set.slots()), set.radius};
+    classifyPairStarts(pairs_, discs, h, toi_, pairStarts_.data());
+    for (std::size_t k = 0; k < pairs_.size(); ++k) {
+        const PairStart& start = pairStarts_[k];
+        if (start.kind == PairStart::Search)
+            addCandidate(set, shapes, def, pairs_[k], h);
+        else if (start.kind == PairStart::Contact && def.particlePairs)
+            candidates_.push_back(
+                {pairs_[k].first, pairs_[k].second, {}, start.time, pairs_[k].second, false});
+    }
     orderCandidates();
     ++pass_; // paths are as detected until a contact of this pass changes them
     detectMicros_ += clock_.microsSince(t0);

@@ -53,6 +53,7 @@
 #include "physics/collision/contact_columns.h"
 #include "physics/collision/narrowphase.h"
 #include "physics/collision/pair_filter.h"
+#include "physics/collision/pair_starts.h"
 #include "physics/collision/shapes.h"
 #include "physics/collision/time_order.h"
 #include "physics/collision/wavefronts.h"
@@ -278,6 +279,7 @@ class ParticleCollisions {
     std::vector<ProxyKind> kinds_;
     std::vector<ProxyPair> pairs_;
     std::vector<NearPair> nearPairs_; ///< the solver's pairs near enough to be contacts
+    std::vector<PairStart> pairStarts_; ///< what the start of each pair's path tells
     // The pair cache: broad phase over fat boxes (exact box grown by fatBox), kept
     // while every exact box stays inside its fat box and nothing else changes.
     std::vector<Aabb> fatBoxes_;
