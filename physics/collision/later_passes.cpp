@@ -85,9 +85,7 @@ bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShape
     std::sort(pairs_.begin(), pairs_.end());
     pairs_.erase(std::unique(pairs_.begin(), pairs_.end()), pairs_.end());
     stats_.pairs += static_cast<int>(pairs_.size());
-    candidates_.clear();
-    for (const ProxyPair& pair : pairs_)
-        addCandidate(set, shapes, def, pair, h);
+    addCandidates(set, shapes, def, h);
 
     auto pairOrder = [](const Candidate& x, const Candidate& y) {
         return x.a < y.a || (x.a == y.a && x.proxy < y.proxy);

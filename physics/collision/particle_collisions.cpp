@@ -424,8 +424,17 @@ void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shap
     buildProxies(set, shapes, def, h, false);
     findPairs(set, def, h);
     stats_.pairs += static_cast<int>(pairs_.size());
+    addCandidates(set, shapes, def, h);
+    orderCandidates();
+    ++pass_; // paths are as detected until a contact of this pass changes them
+    detectMicros_ += clock_.microsSince(t0);
+}
+
+// The candidates of pairs_, in pair order. Most pairs of a pile start touching: their
+// times need no search (pair_starts.h).
+void ParticleCollisions::addCandidates(const ParticleSet& set, const StaticShapes& shapes,
+                                       const CollisionDef& def, double h) {
     candidates_.clear();
-    // Most pairs of a pile start touching: their times need no search (pair_starts.h).
     pairStarts_.resize(pairs_.size());
     const PathDiscs discs{std::span<const PathMotion>(path_).first(set.slots()), set.radius};
     classifyPairStarts(pairs_, discs, h, toi_, pairStarts_.data());
@@ -437,9 +446,6 @@ void ParticleCollisions::detect(const ParticleSet& set, const StaticShapes& shap
             candidates_.push_back(
                 {pairs_[k].first, pairs_[k].second, {}, start.time, pairs_[k].second, false});
     }
-    orderCandidates();
-    ++pass_; // paths are as detected until a contact of this pass changes them
-    detectMicros_ += clock_.microsSince(t0);
 }
 
 void ParticleCollisions::addCandidate(const ParticleSet& set, const StaticShapes& shapes,

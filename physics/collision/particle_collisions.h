@@ -181,6 +181,9 @@ class ParticleCollisions {
     void takeCachedPairsAsLive();
     void detect(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                 double h);
+    /// candidates_: the pairs of pairs_ that meet within the step, in pair order.
+    void addCandidates(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
+                       double h);
     /// A pair of the broad phase that meets within the step becomes a candidate.
     void addCandidate(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                       ProxyPair pair, double h);
