@@ -1,5 +1,6 @@
 #include "physics/collision/pair_filter.h"
 
+#include "physics/collision/narrowphase.h"
 #include "physics/cpu_features.h"
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
@@ -60,6 +61,8 @@ std::size_t keepOverlappingScalar(std::span<const ProxyPair> pairs, std::span<co
 #pragma GCC target("avx2")
 namespace {
 
+#include "physics/collision/lanes.inc"
+
 std::size_t keepOverlappingAvx2(std::span<const ProxyPair> pairs, std::span<const Aabb> particles,
                                 std::span<const Aabb> statics, ProxyPair* out) {
     static_assert(sizeof(Aabb) == 4 * sizeof(double), "lo.x, lo.y, hi.x, hi.y");
@@ -76,13 +79,6 @@ std::size_t keepOverlappingAvx2(std::span<const ProxyPair> pairs, std::span<cons
         kept += below == 0xF;
     }
     return kept;
-}
-
-// Four doubles at the slots in `at` (a masked gather with every lane on: GCC 12's plain
-// one reads an uninitialised source).
-inline __m256d gather(const double* base, __m128i at) {
-    const __m256d all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-    return _mm256_mask_i32gather_pd(_mm256_setzero_pd(), base, at, all, 8);
 }
 
 // Four pairs at a time: their slots gathered, the arithmetic of nearPair in lanes (no
@@ -107,12 +103,12 @@ std::size_t keepNearAvx2(std::span<const ProxyPair> pairs, const Discs& discs, d
         const __m128i second = _mm256_extracti128_si256(ab, 1);
         const __m128i shape = _mm_cmpgt_epi32(second, lastSlot);
         const __m128i b = _mm_blendv_epi8(second, a, shape);
-        const __m256d xa = gather(discs.x.data(), a);
-        const __m256d ya = gather(discs.y.data(), a);
-        const __m256d ra = gather(discs.radius.data(), a);
-        const __m256d xb = gather(discs.x.data(), b);
-        const __m256d yb = gather(discs.y.data(), b);
-        const __m256d rb = gather(discs.radius.data(), b);
+        const __m256d xa = gatherAt(discs.x.data(), a);
+        const __m256d ya = gatherAt(discs.y.data(), a);
+        const __m256d ra = gatherAt(discs.radius.data(), a);
+        const __m256d xb = gatherAt(discs.x.data(), b);
+        const __m256d yb = gatherAt(discs.y.data(), b);
+        const __m256d rb = gatherAt(discs.radius.data(), b);
         const __m256d dx = _mm256_sub_pd(xa, xb), dy = _mm256_sub_pd(ya, yb);
         const __m256d L =
             _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)));

@@ -37,32 +37,7 @@ void classifyPairStartsScalar(std::span<const ProxyPair> pairs, const PathDiscs&
 #pragma GCC target("avx2")
 namespace {
 
-// Four paths' fields as vectors, lane j from paths[at[j]].
-struct PathLanes {
-    __m256d px, py, vx, vy, ax, ay, t0;
-};
-
-PathLanes loadPaths(const PathMotion* paths, const std::uint32_t* at) {
-    static_assert(sizeof(PathMotion) == 7 * sizeof(double), "p, v, a, t0");
-    const PathMotion &m0 = paths[at[0]], &m1 = paths[at[1]], &m2 = paths[at[2]], &m3 = paths[at[3]];
-    // (p.x, p.y, v.x, v.y) of each, transposed.
-    const __m256d r0 = _mm256_loadu_pd(&m0.p.x), r1 = _mm256_loadu_pd(&m1.p.x);
-    const __m256d r2 = _mm256_loadu_pd(&m2.p.x), r3 = _mm256_loadu_pd(&m3.p.x);
-    const __m256d lo01 = _mm256_unpacklo_pd(r0, r1), hi01 = _mm256_unpackhi_pd(r0, r1);
-    const __m256d lo23 = _mm256_unpacklo_pd(r2, r3), hi23 = _mm256_unpackhi_pd(r2, r3);
-    PathLanes l;
-    l.px = _mm256_permute2f128_pd(lo01, lo23, 0x20);
-    l.py = _mm256_permute2f128_pd(hi01, hi23, 0x20);
-    l.vx = _mm256_permute2f128_pd(lo01, lo23, 0x31);
-    l.vy = _mm256_permute2f128_pd(hi01, hi23, 0x31);
-    // (a.x, a.y) of each.
-    const __m256d a02 = _mm256_loadu2_m128d(&m2.a.x, &m0.a.x);
-    const __m256d a13 = _mm256_loadu2_m128d(&m3.a.x, &m1.a.x);
-    l.ax = _mm256_unpacklo_pd(a02, a13);
-    l.ay = _mm256_unpackhi_pd(a02, a13);
-    l.t0 = _mm256_setr_pd(m0.t0, m1.t0, m2.t0, m3.t0);
-    return l;
-}
+#include "physics/collision/lanes.inc"
 
 // PathMotion::position(t) and velocity(t) from the later t0, as relativeTo takes them.
 void advanceTo(const PathLanes& m, __m256d t, __m256d& x, __m256d& y, __m256d& vx, __m256d& vy) {
@@ -86,11 +61,6 @@ __m256d atLeastOne(__m256d x, __m256d y) {
     const __m256d squared = _mm256_add_pd(_mm256_mul_pd(x, x), _mm256_mul_pd(y, y));
     const __m256d small = _mm256_cmp_pd(squared, one, _CMP_LE_OQ);
     return _mm256_blendv_pd(_mm256_max_pd(_mm256_sqrt_pd(squared), one), one, small);
-}
-
-__m256d gather(const double* base, __m128i at) {
-    const __m256d all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-    return _mm256_mask_i32gather_pd(_mm256_setzero_pd(), base, at, all, 8);
 }
 
 void classifyPairStartsAvx2(std::span<const ProxyPair> pairs, const PathDiscs& discs, double tEnd,
@@ -130,8 +100,8 @@ void classifyPairStartsAvx2(std::span<const ProxyPair> pairs, const PathDiscs& d
         // closestPoint on the circle of b's radius about the origin (m.p - {0, 0}).
         const __m128i slotsA = _mm_load_si128(reinterpret_cast<const __m128i*>(first));
         const __m128i slotsB = _mm_load_si128(reinterpret_cast<const __m128i*>(second));
-        const __m256d ra = gather(discs.radius.data(), slotsA);
-        const __m256d rb = gather(discs.radius.data(), slotsB);
+        const __m256d ra = gatherAt(discs.radius.data(), slotsA);
+        const __m256d rb = gatherAt(discs.radius.data(), slotsB);
         const __m256d dx = _mm256_sub_pd(x, zero), dy = _mm256_sub_pd(y, zero);
         const __m256d l = lengthOf(dx, dy);
         // A lane divides only by a number that is not zero: by 1 where the one-pair

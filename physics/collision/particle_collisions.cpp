@@ -62,16 +62,6 @@ bool sameBits(double a, double b) {
     return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
-// How far a proxy's box reaches past its path: the radius, grown by `grow` of itself, and
-// the tolerance.
-double proxyReach(double radius, double grow, const CollisionDef& def) {
-    return radius * (1.0 + grow) + def.toiTolerance;
-}
-
-Aabb boxAround(Vec2 p, double r) {
-    return {p - Vec2{r, r}, p + Vec2{r, r}};
-}
-
 } // namespace
 
 // One pass over the flags a sub-step (and over a sleeper's position and radius) finds the
@@ -164,16 +154,20 @@ void ParticleCollisions::buildProxies(const ParticleSet& set, const StaticShapes
         liveKinds_.resize(n, ProxyKind::None);
         kindsChanged_ = true;
     }
+    boxed_.clear();
     for (const std::uint32_t i : active_)
-        buildProxy(set, def, i, h, atEndOnly, grow);
+        if (setProxyKind(set, i) != ProxyKind::None) boxed_.push_back(i);
+    pathBoxes(boxed_, std::span<const PathMotion>(path_).first(n), set.radius,
+              {h, grow, def.toiTolerance, atEndOnly}, boxes_.data());
 }
 
 void ParticleCollisions::boxSettlingForSolver(const ParticleSet& set, const CollisionDef& def) {
     solverBoxes_.resize(set.slots());
     for (const std::uint32_t i : active_) {
         if (settledFlags_[i] == kUnsettled || kinds_[i] == ProxyKind::None) continue;
-        // At rest, and no contact changed its path: buildProxy's box of a path at rest.
-        const Aabb box = boxAround(path_[i].p, proxyReach(set.radius[i], kSpeculative, def));
+        // At rest, and no contact changed its path: the solver's box of a path at rest.
+        const Aabb box =
+            pathBox(path_[i], set.radius[i], {0.0, kSpeculative, def.toiTolerance, false});
         solverBoxes_[i] = box;
         // No solver checked this box against its fat box: one outside is checked (and the
         // cache mended) in the next sub-step, which works on it again.
@@ -181,33 +175,19 @@ void ParticleCollisions::boxSettlingForSolver(const ParticleSet& set, const Coll
     }
 }
 
-void ParticleCollisions::buildProxy(const ParticleSet& set, const CollisionDef& def, std::size_t i,
-                                    double h, bool atEndOnly, double grow) {
+ProxyKind ParticleCollisions::setProxyKind(const ParticleSet& set, std::size_t i) {
     const ProxyKind kind = (set.flags[i] & (kAlive | kNoCollide)) != kAlive ? ProxyKind::None
                            : moving(set, i)                                 ? ProxyKind::Moving
                                                                             : ProxyKind::Resting;
     kindsChanged_ |= kind != liveKinds_[i];
     kinds_[i] = kind;
-    if (kind == ProxyKind::None) return;
-    const PathMotion& m = path_[i];
-    const double r = proxyReach(set.radius[i], grow, def);
-    if (isPositiveZero(m.v) && isPositiveZero(m.a)) {
-        // A path at rest (a sleeper's): the box of where it is. The same bits as below,
-        // where the path's points differ from m.p at most in the sign of a zero.
-        boxes_[i] = boxAround(m.p, r);
-        return;
-    }
-    const Vec2 end = m.position(h);
-    // A quadratic path lies in the triangle of its Bezier control points:
-    // start, start + v T/2, end.
-    const Vec2 mid = m.p + m.v * (0.5 * (h - m.t0));
-    Vec2 lo = end, hi = end;
-    if (!atEndOnly)
-        for (const Vec2 q : {m.p, mid}) {
-            lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
-            hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
-        }
-    boxes_[i] = {lo - Vec2{r, r}, hi + Vec2{r, r}};
+    return kind;
+}
+
+void ParticleCollisions::buildProxy(const ParticleSet& set, const CollisionDef& def, std::size_t i,
+                                    double h, bool atEndOnly, double grow) {
+    if (setProxyKind(set, i) != ProxyKind::None)
+        boxes_[i] = pathBox(path_[i], set.radius[i], {h, grow, def.toiTolerance, atEndOnly});
 }
 
 // For the pair cache: room for half a radius of play (contacts push particles by up to

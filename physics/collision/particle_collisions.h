@@ -54,6 +54,7 @@
 #include "physics/collision/narrowphase.h"
 #include "physics/collision/pair_filter.h"
 #include "physics/collision/pair_starts.h"
+#include "physics/collision/path_boxes.h"
 #include "physics/collision/shapes.h"
 #include "physics/collision/time_order.h"
 #include "physics/collision/wavefronts.h"
@@ -159,6 +160,8 @@ class ParticleCollisions {
     /// Boxes of the paths (or of the end positions), radii grown by `grow` of themselves.
     void buildProxies(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                       double h, bool atEndOnly, double grow = 0.0);
+    /// Particle i's proxy kind (kinds_[i]), noting whether it changed from the live one.
+    ProxyKind setProxyKind(const ParticleSet& set, std::size_t i);
     /// Particle i's proxy: its kind and the box of its path.
     void buildProxy(const ParticleSet& set, const CollisionDef& def, std::size_t i, double h,
                     bool atEndOnly, double grow);
@@ -283,6 +286,7 @@ class ParticleCollisions {
     std::vector<ProxyPair> pairs_;
     std::vector<NearPair> nearPairs_; ///< the solver's pairs near enough to be contacts
     std::vector<PairStart> pairStarts_; ///< what the start of each pair's path tells
+    std::vector<std::uint32_t> boxed_;  ///< the active particles with a proxy
     // The pair cache: broad phase over fat boxes (exact box grown by fatBox), kept
     // while every exact box stays inside its fat box and nothing else changes.
     std::vector<Aabb> fatBoxes_;
