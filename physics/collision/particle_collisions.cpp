@@ -165,9 +165,11 @@ void ParticleCollisions::boxSettlingForSolver(const ParticleSet& set, const Coll
     solverBoxes_.resize(set.slots());
     for (const std::uint32_t i : active_) {
         if (settledFlags_[i] == kUnsettled || kinds_[i] == ProxyKind::None) continue;
-        // At rest, and no contact changed its path: the solver's box of a path at rest.
+        // At rest, and no contact changed its path: the solver's box of a path at rest
+        // where it is.
+        const PathMotion atRest{path_[i].p, {}, {}, 0.0};
         const Aabb box =
-            pathBox(path_[i], set.radius[i], {0.0, kSpeculative, def.toiTolerance, false});
+            pathBox(atRest, set.radius[i], {0.0, kSpeculative, def.toiTolerance, false});
         solverBoxes_[i] = box;
         // No solver checked this box against its fat box: one outside is checked (and the
         // cache mended) in the next sub-step, which works on it again.
