@@ -41,7 +41,7 @@ std::size_t keepNearScalar(std::span<const ProxyPair> pairs, const Discs& discs,
         }
         out[kept] = nearPair(p, discs);
         const double reach = discs.radius[p.first] + discs.radius[p.second];
-        kept += out[kept].depth > -tolerance - speculative * reach;
+        kept += nearEnough(out[kept].depth, reach, tolerance, speculative);
     }
     return kept;
 }
@@ -81,9 +81,9 @@ std::size_t keepOverlappingAvx2(std::span<const ProxyPair> pairs, std::span<cons
     return kept;
 }
 
-// Four pairs at a time: their slots gathered, the arithmetic of nearPair in lanes (no
-// fused multiply-add; a square root and a division are correctly rounded either way). A
-// shape's lane reads a's disc twice and is kept whatever it gives.
+// Four pairs at a time: their slots gathered, the arithmetic of nearPair and nearEnough
+// in lanes (no fused multiply-add; a square root and a division are correctly rounded
+// either way). A shape's lane reads a's disc twice and is kept whatever it gives.
 std::size_t keepNearAvx2(std::span<const ProxyPair> pairs, const Discs& discs, double tolerance,
                          double speculative, NearPair* out) {
     static_assert(sizeof(ProxyPair) == 2 * sizeof(std::uint32_t), "first, second");

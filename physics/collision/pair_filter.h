@@ -43,14 +43,21 @@ struct NearPair {
     double depth;
 };
 
+/// Whether a contact of `depth` (negative: a gap) between discs whose radii sum to
+/// `reach` is near enough to be one of the solver's: a gap below `tolerance` plus
+/// `speculative` of the reach may close in one step.
+inline bool nearEnough(double depth, double reach, double tolerance, double speculative) {
+    return depth > -tolerance - speculative * reach;
+}
+
 /// The particles' positions and radii, by slot.
 struct Discs {
     std::span<const double> x, y, radius;
 };
 
 /// Writes to `out`, in their order, every pair with a shape (its second at or past
-/// discs.x.size()) and every pair of particles whose depth exceeds
-/// -tolerance - speculative * (ra + rb), and returns how many. `out` has room for every
+/// discs.x.size()) and every pair of particles nearEnough with reach ra + rb, and
+/// returns how many. `out` has room for every
 /// pair. The normal and the depth are those of the solver's one-pair arithmetic, bit for
 /// bit.
 std::size_t keepNear(std::span<const ProxyPair> pairs, const Discs& discs, double tolerance,

@@ -97,20 +97,20 @@ void classifyPairStartsAvx2(std::span<const ProxyPair> pairs, const PathDiscs& d
         const __m256d vx = _mm256_sub_pd(vxa, vxb), vy = _mm256_sub_pd(vya, vyb);
         const __m256d ax = _mm256_sub_pd(a.ax, b.ax), ay = _mm256_sub_pd(a.ay, b.ay);
         const __m256d live = _mm256_cmp_pd(end, t0, _CMP_GT_OQ);
-        // closestPoint on the circle of b's radius about the origin (m.p - {0, 0}).
+        // closestPoint on the circle of b's radius about the origin: m.p - {0, 0} is m.p
+        // to the bit (x - 0 is x, and -0 - 0 is -0), so the relative position is d.
         const __m128i slotsA = _mm_load_si128(reinterpret_cast<const __m128i*>(first));
         const __m128i slotsB = _mm_load_si128(reinterpret_cast<const __m128i*>(second));
         const __m256d ra = gatherAt(discs.radius.data(), slotsA);
         const __m256d rb = gatherAt(discs.radius.data(), slotsB);
-        const __m256d dx = _mm256_sub_pd(x, zero), dy = _mm256_sub_pd(y, zero);
-        const __m256d l = lengthOf(dx, dy);
+        const __m256d l = lengthOf(x, y);
         // A lane divides only by a number that is not zero: by 1 where the one-pair
         // arithmetic would not divide, so no 0 / 0 or x / 0 is born in a lane whose result
         // is not taken (the physics tests trap them).
         const __m256d apart = _mm256_cmp_pd(l, tiny, _CMP_GT_OQ);
         const __m256d byLength = _mm256_blendv_pd(one, l, apart);
-        const __m256d nx = _mm256_blendv_pd(zero, _mm256_div_pd(dx, byLength), apart);
-        const __m256d ny = _mm256_blendv_pd(one, _mm256_div_pd(dy, byLength), apart);
+        const __m256d nx = _mm256_blendv_pd(zero, _mm256_div_pd(x, byLength), apart);
+        const __m256d ny = _mm256_blendv_pd(one, _mm256_div_pd(y, byLength), apart);
         const __m256d g0 = _mm256_sub_pd(_mm256_sub_pd(l, rb), ra);
         const __m256d touching = _mm256_cmp_pd(g0, tolerance, _CMP_LE_OQ);
         // touchingTime.

@@ -839,7 +839,7 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
             c.friction = mats.pair(set.material[a], set.material[b]).staticFriction;
         }
         const double reach = set.radius[a] + (isStatic ? 0.0 : set.radius[b]);
-        if (isStatic && !(c.depth > -def.toiTolerance - kSpeculative * reach)) {
+        if (isStatic && !nearEnough(c.depth, reach, def.toiTolerance, kSpeculative)) {
             contacts_.pop_back();
             continue;
         }
