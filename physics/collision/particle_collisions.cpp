@@ -82,12 +82,20 @@ void ParticleCollisions::selectActive(const ParticleSet& set, const CollisionDef
     std::uint32_t* const active = active_.data();
     std::size_t count = 0;
     settledAsleep_ = 0;
+    growTo(sleptAt_, n);
+    wokeOrGone_.clear();
+    // A sleeper that woke or went since the last sub-step (so one that is not settled).
+    auto noteWaking = [&](std::size_t i, std::uint32_t f) {
+        if (sleptAt_[i].radius > 0.0 && (f & (kAlive | kSleeping)) != (kAlive | kSleeping))
+            wokeOrGone_.push_back(static_cast<std::uint32_t>(i));
+    };
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t f = set.flags[i];
         const bool rests =
             !all && (!(f & kAlive) || ((f & kSleeping) && isPositiveZero({set.vx[i], set.vy[i]})));
         active[count] = static_cast<std::uint32_t>(i);
         if (!rests) { // awake (or every particle): active, and not settled after
+            noteWaking(i, f);
             activeMark_[i] = 1;
             ++count;
             settledFlags_[i] = kUnsettled;
@@ -101,6 +109,7 @@ void ParticleCollisions::selectActive(const ParticleSet& set, const CollisionDef
             settledAsleep_ += (f & kAlive) ? 1 : 0;
             continue;
         }
+        noteWaking(i, f);
         ++count;
         settledFlags_[i] = f;
         at = {set.px[i], set.py[i], set.radius[i]};
@@ -721,6 +730,7 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
                                       double tickTime, Vec2 up) {
     toi_ = {def.continuous, def.bisectionHalvings, def.toiTolerance, def.maxAdvanceIterations};
     ++substep_;
+    up_ = up;
     selectActive(set, def, !def.skipSettled);
     buildPaths(set, h);
     bool converged = false;
@@ -752,6 +762,8 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
         warm_.clear(); // nothing to carry over to the next sub-step
         boxSettlingForSolver(set, def);
     }
+    holdsOfWoken(set, def, up);
+    wakeWhereHoldersMoved(set, def, up);
 }
 
 // The contacts left at the end of a sub-step that the passes did not settle (a pile, a
@@ -887,6 +899,7 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
     for (const RelaxContact& c : contacts_)
         warm_.push_back({(std::uint64_t{c.a} << 32) | c.proxy, c.normalImpulse, c.tangentImpulse});
 
+    collectHolds(set);
     // Whatever moved restarts its multi-step integrator; whatever is in contact rests.
     for (const RelaxContact& c : contacts_) {
         resting_[c.a] = 1;
@@ -1076,6 +1089,7 @@ void ParticleCollisions::updateSleep(ParticleSet& set, const CollisionDef& def, 
     }
     const double stray = def.sleepSpeed * def.sleepTime; // m: the window's allowed drift
     int asleep = static_cast<int>(settledAsleep_);       // settled: asleep, and stays so
+    bool newHolds = false;
     for (const std::uint32_t i : active_) {
         if (set.flags[i] & kSleeping) {
             asleep += (set.flags[i] & kAlive) ? 1 : 0;
@@ -1094,12 +1108,17 @@ void ParticleCollisions::updateSleep(ParticleSet& set, const CollisionDef& def, 
         sleepTimer_[i] += dt;
         if (sleepTimer_[i] >= def.sleepTime) {
             set.flags[i] = (set.flags[i] | kSleeping) & ~kHistory;
+            sleptAt_[i] = {set.px[i], set.py[i], set.radius[i]};
+            holdsOfNewSleeper(set, def, i);
+            newHolds = true;
             set.vx[i] = set.vy[i] = 0.0;
             set.halfVx[i] = set.halfVy[i] = 0.0;
             restartWindow(i);
             ++asleep;
         }
     }
+    if (newHolds) sortHolds();
+    wakeHeldSleepers(set, asleep);
     stats_.sleeping = asleep;
 }
 

@@ -582,9 +582,10 @@ TEST(Pile, SettledSleepersAreSkippedWithTheBitsOfWorkingOnEveryParticle) {
         skipped += active[1][t], every += active[0][t];
     }
     // The heap sleeps whole before the first change: from then on only what changes and
-    // what it wakes is worked on.
+    // what it wakes is worked on (with the sleepers that what moved held up: 54 % of the
+    // work of every particle, 49 % when those hung where they slept).
     EXPECT_EQ(sleeping[1][248], 400);
-    EXPECT_LT(skipped * 2, every);
+    EXPECT_LT(skipped * 5, every * 3);
     std::printf("heap of 400 balls, 420 ticks: %ld particles worked on, against %ld\n", skipped,
                 every);
 
@@ -640,6 +641,34 @@ TEST(Pile, ABallOnTwoSleepersIsHeldByBothAtOnce) {
                 static_cast<double>(passes) / static_cast<double>(steps), allPasses, steps, most);
     EXPECT_LE(allPasses, 12);
     EXPECT_LT(passes, 3 * steps);
+}
+
+// The bench's pile of balls in columns slides and topples for seconds after it lands, and
+// part of it sleeps meanwhile. Every sleeper rests on something below it: the floor or a
+// ball under its centre, within the solver's reach (a sleeper is immovable, so one whose
+// support slid away would hang in the air; it wakes and follows instead).
+TEST(Pile, NoSleeperHangsOverAHole) {
+    World w = std::move(droppedBalls(1500, false).world);
+    const ParticleSet& p = w.particles;
+    const double reach = 2.0 * kR * 1.1 + w.def().collision.toiTolerance; // kSpeculative
+    int checked = 0;
+    for (int t = 1; t <= 480; ++t) {
+        w.step();
+        if (t % 60 != 0) continue;
+        for (std::size_t i = 0; i < p.slots(); ++i) {
+            if (!(p.flags[i] & kSleeping)) continue;
+            bool held = p.py[i] <= kR * 1.1 + w.def().collision.toiTolerance; // the floor
+            for (std::size_t j = 0; j < p.slots() && !held; ++j) {
+                const Vec2 d =
+                    p.position(static_cast<ParticleId>(i)) - p.position(static_cast<ParticleId>(j));
+                held = j != i && d.y > 0.0 && length(d) <= reach;
+            }
+            ASSERT_TRUE(held) << "ball " << i << " sleeps at (" << p.px[i] << ", " << p.py[i]
+                              << ") over nothing, tick " << t;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 4 * 1000); // most of the pile sleeps at each check
 }
 
 // The contact solver's sweeps laid out in wavefronts (contacts that share no particle),
