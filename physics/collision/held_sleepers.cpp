@@ -9,7 +9,7 @@
 //             falls asleep (sleepSpeed * sleepTime, updateSleep's rule): it slid away,
 //             fell or was knocked, and the sleeper would have gone with it;
 //   leaves    or is removed, so that nothing near enough holds the sleeper up.
-// The holds are those of the solver's contacts (collectHolds), those of a particle that
+// The holds are those of the solver's contacts (collectHold), those of a particle that
 // falls asleep on awake ones (holdsOfNewSleeper: the passes alone may hold it there, with
 // no solver), and those of a sleeper that wakes or is removed: from the place it slept,
 // it held up the sleepers that rested on it (holdsOfWoken; asleep, the two were no
@@ -37,15 +37,12 @@ bool ParticleCollisions::holdsUp(const ParticleSet& set, Vec2 at, double radius,
            dot(d, up) > kSupport * l;
 }
 
-void ParticleCollisions::collectHolds(const ParticleSet& set) {
-    for (const RelaxContact& c : contacts_) {
-        // A sleeper is immovable (its side's mass is 0); most contacts have none.
-        if ((c.wa > 0.0 && c.wb > 0.0) || c.b == kNoParticle || c.support == 0) continue;
-        const std::uint32_t held = c.support == 1 ? c.a : c.b;
-        const std::uint32_t holder = c.support == 1 ? c.b : c.a;
-        if (asleep(set, held) && moving(set, holder))
-            heldNow_.push_back({holder, held, {x0_[holder], y0_[holder]}});
-    }
+void ParticleCollisions::collectHold(const ParticleSet& set, const RelaxContact& c) {
+    if (c.support == 0) return;
+    const std::uint32_t held = c.support == 1 ? c.a : c.b;
+    const std::uint32_t holder = c.support == 1 ? c.b : c.a;
+    if (asleep(set, held) && moving(set, holder))
+        heldNow_.push_back({holder, held, {x0_[holder], y0_[holder]}});
 }
 
 void ParticleCollisions::holdsOfNewSleeper(const ParticleSet& set, const CollisionDef& def,

@@ -895,16 +895,18 @@ void ParticleCollisions::relaxContacts(ParticleSet& set, const StaticShapes& sha
     orderContactsByLevel();
     sweepContacts(set, shapes, def);
 
+    // One pass over the contacts: their impulses, which start the next sub-step's sweeps;
+    // whatever is in contact rests; the sleepers held up by a free particle (a contact
+    // of two particles with one side immovable).
     warm_.clear();
-    for (const RelaxContact& c : contacts_)
-        warm_.push_back({(std::uint64_t{c.a} << 32) | c.proxy, c.normalImpulse, c.tangentImpulse});
-
-    collectHolds(set);
-    // Whatever moved restarts its multi-step integrator; whatever is in contact rests.
     for (const RelaxContact& c : contacts_) {
+        warm_.push_back({(std::uint64_t{c.a} << 32) | c.proxy, c.normalImpulse, c.tangentImpulse});
         resting_[c.a] = 1;
-        if (c.b != kNoParticle) resting_[c.b] = 1;
+        if (c.b == kNoParticle) continue;
+        resting_[c.b] = 1;
+        if (c.wa == 0.0 || c.wb == 0.0) collectHold(set, c);
     }
+    // Whatever moved restarts its multi-step integrator.
     for (const std::uint32_t i : bodies_) {
         if (touched_[i]) set.flags[i] &= ~kHistory;
         bodyMark_[i] = 0;

@@ -248,35 +248,6 @@ class ParticleCollisions {
     void relaxContacts(ParticleSet& set, const StaticShapes& shapes, const MaterialTable& mats,
                        const CollisionDef& def, double h, Vec2 up);
     void orderContactsByLevel();
-    // Sleepers that lose what holds them up wake (held_sleepers.cpp).
-    struct Hold {
-        std::uint32_t holder, held; ///< a sleeper and the awake particle holding it up
-        Vec2 holderAt;              ///< where the holder was when it began to
-        std::uint64_t key() const {
-            return (std::uint64_t{std::min(holder, held)} << 32) | std::max(holder, held);
-        }
-    };
-    /// The holds of this sub-step's contacts, and those kept from the last sub-step, in
-    /// pair order; the sleepers that wake when the tick ends.
-    std::vector<Hold> heldNow_, held_, heldOn_;
-    std::vector<std::uint32_t> toWake_;
-    /// A particle of `radius` at `at` holds sleeper s up: near enough for the solver, and
-    /// s above it within kSupport of vertical.
-    bool holdsUp(const ParticleSet& set, Vec2 at, double radius, std::uint32_t s,
-                 const CollisionDef& def, Vec2 up) const;
-    /// The holds of the solver's contacts, into heldNow_.
-    void collectHolds(const ParticleSet& set);
-    /// The awake particles that hold up s, which falls asleep now, into held_ (unsorted).
-    void holdsOfNewSleeper(const ParticleSet& set, const CollisionDef& def, std::uint32_t s);
-    void sortHolds(); ///< held_ in pair order, each pair once
-    Vec2 up_;         ///< the up of the last impulse sub-step
-    /// What the sleepers of wokeOrGone_ held up where they slept, into held_.
-    void holdsOfWoken(const ParticleSet& set, const CollisionDef& def, Vec2 up);
-    /// The holds of now and of before, one list: a sleeper whose holder moved too far or
-    /// is gone wakes when the tick ends.
-    void wakeWhereHoldersMoved(const ParticleSet& set, const CollisionDef& def, Vec2 up);
-    /// At the tick's end: toWake_ wake (asleepCount: the sleepers, less those that woke).
-    void wakeHeldSleepers(ParticleSet& set, int& asleepCount);
     bool moving(const ParticleSet& set, std::size_t i) const {
         return set.invMass[i] > 0.0 && (set.flags[i] & (kAlive | kSleeping | kNoCollide)) == kAlive;
     }
@@ -390,6 +361,36 @@ class ParticleCollisions {
         int support;                          ///< 1: b (or the shape) holds a up; -1: a holds b
         double normalImpulse, tangentImpulse; ///< accumulated, N s
     };
+    // Sleepers that lose what holds them up wake (held_sleepers.cpp).
+    struct Hold {
+        std::uint32_t holder, held; ///< a sleeper and the awake particle holding it up
+        Vec2 holderAt;              ///< where the holder was when it began to
+        std::uint64_t key() const {
+            return (std::uint64_t{std::min(holder, held)} << 32) | std::max(holder, held);
+        }
+    };
+    /// The holds of this sub-step's contacts, and those kept from the last sub-step, in
+    /// pair order; the sleepers that wake when the tick ends.
+    std::vector<Hold> heldNow_, held_, heldOn_;
+    std::vector<std::uint32_t> toWake_;
+    /// A particle of `radius` at `at` holds sleeper s up: near enough for the solver, and
+    /// s above it within kSupport of vertical.
+    bool holdsUp(const ParticleSet& set, Vec2 at, double radius, std::uint32_t s,
+                 const CollisionDef& def, Vec2 up) const;
+    /// The hold of a contact of the solver between two particles, one of them immovable
+    /// (if it holds a sleeper up), into heldNow_.
+    void collectHold(const ParticleSet& set, const RelaxContact& c);
+    /// The awake particles that hold up s, which falls asleep now, into held_ (unsorted).
+    void holdsOfNewSleeper(const ParticleSet& set, const CollisionDef& def, std::uint32_t s);
+    void sortHolds(); ///< held_ in pair order, each pair once
+    Vec2 up_;         ///< the up of the last impulse sub-step
+    /// What the sleepers of wokeOrGone_ held up where they slept, into held_.
+    void holdsOfWoken(const ParticleSet& set, const CollisionDef& def, Vec2 up);
+    /// The holds of now and of before, one list: a sleeper whose holder moved too far or
+    /// is gone wakes when the tick ends.
+    void wakeWhereHoldersMoved(const ParticleSet& set, const CollisionDef& def, Vec2 up);
+    /// At the tick's end: toWake_ wake (asleepCount: the sleepers, less those that woke).
+    void wakeHeldSleepers(ParticleSet& set, int& asleepCount);
     static constexpr std::uint32_t kUnsupported = 0xffffffffu;
     /// The level of the contact's upper particle (kUnsupported if it has none).
     std::uint32_t bandOf(const RelaxContact& c) const {
