@@ -30,11 +30,11 @@
 namespace phys {
 
 bool ParticleCollisions::holdsUp(const ParticleSet& set, Vec2 at, double radius, std::uint32_t s,
-                                 const CollisionDef& def, Vec2 up) const {
+                                 const CollisionDef& def) const {
     const Vec2 d = set.position(s) - at;
     const double reach = radius + set.radius[s], l = length(d);
     return nearEnough(reach - l, reach, def.toiTolerance, kSpeculative) &&
-           dot(d, up) > kSupport * l;
+           dot(d, up_) > kSupport * l;
 }
 
 void ParticleCollisions::collectHold(const ParticleSet& set, const RelaxContact& c) {
@@ -48,7 +48,7 @@ void ParticleCollisions::collectHold(const ParticleSet& set, const RelaxContact&
 void ParticleCollisions::holdsOfNewSleeper(const ParticleSet& set, const CollisionDef& def,
                                            std::uint32_t s) {
     auto collect = [&](std::uint32_t a) {
-        if (a != s && moving(set, a) && holdsUp(set, set.position(a), set.radius[a], s, def, up_))
+        if (a != s && moving(set, a) && holdsUp(set, set.position(a), set.radius[a], s, def))
             held_.push_back({a, s, set.position(a)});
     };
     // Awake until now, it pairs in the kept pairs with everything near it.
@@ -74,7 +74,7 @@ void ParticleCollisions::sortHolds() {
                 held_.end());
 }
 
-void ParticleCollisions::holdsOfWoken(const ParticleSet& set, const CollisionDef& def, Vec2 up) {
+void ParticleCollisions::holdsOfWoken(const ParticleSet& set, const CollisionDef& def) {
     if (wokeOrGone_.empty()) return;
     const std::size_t before = held_.size();
     for (const std::uint32_t a : wokeOrGone_) {
@@ -83,7 +83,7 @@ void ParticleCollisions::holdsOfWoken(const ParticleSet& set, const CollisionDef
         const Vec2 place{at.x, at.y};
         auto collect = [&](std::uint32_t s) {
             if (s != a && (set.flags[s] & kAlive) && asleep(set, s) &&
-                holdsUp(set, place, at.radius, s, def, up))
+                holdsUp(set, place, at.radius, s, def))
                 held_.push_back({a, s, place});
         };
         // The fat box of a sleeper it held meets its place grown by what the solver
@@ -103,8 +103,7 @@ void ParticleCollisions::holdsOfWoken(const ParticleSet& set, const CollisionDef
     if (held_.size() != before) sortHolds();
 }
 
-void ParticleCollisions::wakeWhereHoldersMoved(const ParticleSet& set, const CollisionDef& def,
-                                               Vec2 up) {
+void ParticleCollisions::wakeWhereHoldersMoved(const ParticleSet& set, const CollisionDef& def) {
     const double stray = def.sleepSpeed * def.sleepTime;
     // A hold goes on while its holder stays within the stray of where it began to hold.
     auto goOn = [&](const Hold& h) {
@@ -130,8 +129,7 @@ void ParticleCollisions::wakeWhereHoldersMoved(const ParticleSet& set, const Col
         if (!contact) {
             const bool gone = h.holder >= set.slots() || !(set.flags[h.holder] & kAlive);
             if (!gone && (set.flags[h.holder] & kSleeping)) continue; // asleep under it
-            if (gone ||
-                !holdsUp(set, set.position(h.holder), set.radius[h.holder], h.held, def, up)) {
+            if (gone || !holdsUp(set, set.position(h.holder), set.radius[h.holder], h.held, def)) {
                 toWake_.push_back(h.held); // removed, or left within the step
                 continue;
             }

@@ -762,8 +762,8 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
         warm_.clear(); // nothing to carry over to the next sub-step
         boxSettlingForSolver(set, def);
     }
-    holdsOfWoken(set, def, up);
-    wakeWhereHoldersMoved(set, def, up);
+    holdsOfWoken(set, def);
+    wakeWhereHoldersMoved(set, def);
 }
 
 // The contacts left at the end of a sub-step that the passes did not settle (a pile, a

@@ -363,7 +363,7 @@ class ParticleCollisions {
     };
     // Sleepers that lose what holds them up wake (held_sleepers.cpp).
     struct Hold {
-        std::uint32_t holder, held; ///< a sleeper and the awake particle holding it up
+        std::uint32_t holder, held; ///< an awake particle and the sleeper it holds up
         Vec2 holderAt;              ///< where the holder was when it began to
         std::uint64_t key() const {
             return (std::uint64_t{std::min(holder, held)} << 32) | std::max(holder, held);
@@ -376,19 +376,19 @@ class ParticleCollisions {
     /// A particle of `radius` at `at` holds sleeper s up: near enough for the solver, and
     /// s above it within kSupport of vertical.
     bool holdsUp(const ParticleSet& set, Vec2 at, double radius, std::uint32_t s,
-                 const CollisionDef& def, Vec2 up) const;
+                 const CollisionDef& def) const;
     /// The hold of a contact of the solver between two particles, one of them immovable
     /// (if it holds a sleeper up), into heldNow_.
     void collectHold(const ParticleSet& set, const RelaxContact& c);
     /// The awake particles that hold up s, which falls asleep now, into held_ (unsorted).
     void holdsOfNewSleeper(const ParticleSet& set, const CollisionDef& def, std::uint32_t s);
     void sortHolds(); ///< held_ in pair order, each pair once
-    Vec2 up_;         ///< the up of the last impulse sub-step
+    Vec2 up_;         ///< the up of the last impulse sub-step (holdsUp's)
     /// What the sleepers of wokeOrGone_ held up where they slept, into held_.
-    void holdsOfWoken(const ParticleSet& set, const CollisionDef& def, Vec2 up);
+    void holdsOfWoken(const ParticleSet& set, const CollisionDef& def);
     /// The holds of now and of before, one list: a sleeper whose holder moved too far or
     /// is gone wakes when the tick ends.
-    void wakeWhereHoldersMoved(const ParticleSet& set, const CollisionDef& def, Vec2 up);
+    void wakeWhereHoldersMoved(const ParticleSet& set, const CollisionDef& def);
     /// At the tick's end: toWake_ wake (asleepCount: the sleepers, less those that woke).
     void wakeHeldSleepers(ParticleSet& set, int& asleepCount);
     static constexpr std::uint32_t kUnsupported = 0xffffffffu;
