@@ -2,6 +2,7 @@
 
 #include "physics/collision/contact_resolver.h"
 #include "physics/collision/pair_filter.h"
+#include "physics/collision/settled_scan.h"
 
 #include <algorithm>
 #include <bit>
@@ -74,7 +75,7 @@ bool sameBits(double a, double b) {
 void ParticleCollisions::selectActive(const ParticleSet& set, const CollisionDef& def, bool all) {
     const std::size_t n = set.slots();
     settledFlags_.resize(n, kUnsettled);
-    settledAt_.resize(n);
+    settledX_.resize(n), settledY_.resize(n), settledRadius_.resize(n);
     activeMark_.resize(n);
     const bool sameTolerance = sameBits(def.toiTolerance, settledTolerance_);
     settledTolerance_ = def.toiTolerance;
@@ -89,7 +90,17 @@ void ParticleCollisions::selectActive(const ParticleSet& set, const CollisionDef
         if (sleptAt_[i].radius > 0.0 && (f & (kAlive | kSleeping)) != (kAlive | kSleeping))
             wokeOrGone_.push_back(static_cast<std::uint32_t>(i));
     };
+    const SettledRecords records{set.flags.data(),     set.vx.data(),    set.vy.data(),
+                                 set.px.data(),        set.py.data(),    set.radius.data(),
+                                 settledFlags_.data(), settledX_.data(), settledY_.data(),
+                                 settledRadius_.data()};
+    std::size_t scanFrom = 0; // after a group that was not wholly settled, its four here
     for (std::size_t i = 0; i < n; ++i) {
+        if (!all && sameTolerance && i >= scanFrom) {
+            i = skipSettled(records, i, n, kAlive, kSleeping, activeMark_.data(), settledAsleep_);
+            if (i == n) break;
+            scanFrom = i + 4;
+        }
         const std::uint32_t f = set.flags[i];
         const bool rests =
             !all && (!(f & kAlive) || ((f & kSleeping) && isPositiveZero({set.vx[i], set.vy[i]})));
@@ -101,9 +112,9 @@ void ParticleCollisions::selectActive(const ParticleSet& set, const CollisionDef
             settledFlags_[i] = kUnsettled;
             continue;
         }
-        Place& at = settledAt_[i];
-        const bool settled = sameTolerance && f == settledFlags_[i] && sameBits(set.px[i], at.x) &&
-                             sameBits(set.py[i], at.y) && sameBits(set.radius[i], at.radius);
+        const bool settled =
+            sameTolerance && f == settledFlags_[i] && sameBits(set.px[i], settledX_[i]) &&
+            sameBits(set.py[i], settledY_[i]) && sameBits(set.radius[i], settledRadius_[i]);
         activeMark_[i] = settled ? 0 : 1;
         if (settled) {
             settledAsleep_ += (f & kAlive) ? 1 : 0;
@@ -112,7 +123,7 @@ void ParticleCollisions::selectActive(const ParticleSet& set, const CollisionDef
         noteWaking(i, f);
         ++count;
         settledFlags_[i] = f;
-        at = {set.px[i], set.py[i], set.radius[i]};
+        settledX_[i] = set.px[i], settledY_[i] = set.py[i], settledRadius_[i] = set.radius[i];
     }
     active_.resize(count);
     stats_.active += static_cast<int>(count);

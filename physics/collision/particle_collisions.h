@@ -253,7 +253,7 @@ class ParticleCollisions {
     }
 
     // The active particles of this sub-step (selectActive), marked in activeMark_. A
-    // particle's settledFlags_ and settledAt_ are its flags and place (with its radius)
+    // particle's settledFlags_ and settledX_, settledY_, settledRadius_ are its flags and place
     // when a sub-step last worked on it asleep (or on its empty slot), or the flags are
     // kUnsettled: it is settled while its state stays that one bit for bit, at rest, and
     // no contact changes its path.
@@ -268,7 +268,7 @@ class ParticleCollisions {
     std::vector<std::uint32_t> active_;
     std::vector<std::uint8_t> activeMark_;
     std::vector<std::uint32_t> settledFlags_;
-    std::vector<Place> settledAt_;
+    std::vector<double> settledX_, settledY_, settledRadius_; ///< the places, by slot
     std::size_t settledAsleep_ = 0; ///< alive particles settled (so asleep) at the start
     double settledTolerance_ = 0.0; ///< what the settled boxes were built with
 
