@@ -94,12 +94,14 @@ void ParticleCollisions::selectActive(const ParticleSet& set, const CollisionDef
                                  set.px.data(),        set.py.data(),    set.radius.data(),
                                  settledFlags_.data(), settledX_.data(), settledY_.data(),
                                  settledRadius_.data()};
-    std::size_t scanFrom = 0; // after a group that was not wholly settled, its four here
+    // Where a scan stops at once, the slots are likely awake: the next four one at a time.
+    std::size_t scanFrom = 0;
     for (std::size_t i = 0; i < n; ++i) {
         if (!all && sameTolerance && i >= scanFrom) {
+            const std::size_t from = i;
             i = skipSettled(records, i, n, kAlive, kSleeping, activeMark_.data(), settledAsleep_);
             if (i == n) break;
-            scanFrom = i + 4;
+            scanFrom = i == from ? i + 4 : i + 1;
         }
         const std::uint32_t f = set.flags[i];
         const bool rests =

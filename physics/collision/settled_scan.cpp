@@ -49,10 +49,21 @@ std::size_t skipSettledAvx2(const SettledRecords& r, std::size_t i, std::size_t 
                              sameBits4(r.radius + i, r.settledRadius + i));
         const __m256i settled =
             _mm256_and_si256(_mm256_and_si256(rests, place), _mm256_cvtepi32_epi64(sameFlags));
-        if (_mm256_movemask_pd(_mm256_castsi256_pd(settled)) != 0xF) break;
-        std::memset(activeMark + i, 0, 4);
-        const int aliveLanes = _mm_movemask_ps(_mm_castsi128_ps(dead)) ^ 0xF;
-        asleep += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(aliveLanes)));
+        const unsigned lanes =
+            static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(settled)));
+        const unsigned aliveLanes =
+            static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(dead))) ^ 0xFu;
+        if (lanes == 0xFu) {
+            std::memset(activeMark + i, 0, 4);
+            asleep += static_cast<std::size_t>(__builtin_popcount(aliveLanes));
+            continue;
+        }
+        // The settled lanes before the first that is not.
+        const unsigned first = static_cast<unsigned>(__builtin_ctz(~lanes));
+        for (unsigned k = 0; k < first; ++k)
+            activeMark[i + k] = 0;
+        asleep += static_cast<std::size_t>(__builtin_popcount(aliveLanes & ((1u << first) - 1u)));
+        return i + first;
     }
     return i;
 }

@@ -6,8 +6,8 @@
 // nearly every slot passes, and the test, a dozen loads and branches a slot, was a tenth
 // of such a tick. skipSettled runs the same test on four slots at a time with AVX2 where
 // the processor has it: integer comparisons of the flags and of the doubles' bits, so it
-// passes exactly the slots the one-slot test passes, and stops at the first group of four
-// with a slot that does not pass, for selectActive to take that slot itself.
+// passes exactly the slots the one-slot test passes, and stops at the first slot that
+// does not pass, for selectActive to take that slot itself.
 #pragma once
 
 #include <cstddef>
@@ -26,8 +26,8 @@ struct SettledRecords {
 
 /// From slot i, the slots before n that are settled, in groups of four where the processor
 /// has AVX2 (none without): each gets activeMark 0, and those alive count into asleep.
-/// Returns the first slot of the first group that is not wholly settled (or of the tail
-/// shorter than four), for the caller to test one slot at a time.
+/// Returns the first slot that is not settled, or the first of the tail shorter than four,
+/// for the caller to test one slot at a time.
 std::size_t skipSettled(const SettledRecords& r, std::size_t i, std::size_t n, std::uint32_t alive,
                         std::uint32_t sleeping, std::uint8_t* activeMark, std::size_t& asleep);
 
