@@ -1104,7 +1104,7 @@ void ParticleCollisions::updateSleep(ParticleSet& set, const CollisionDef& def, 
     }
     const double stray = def.sleepSpeed * def.sleepTime; // m: the window's allowed drift
     int asleep = static_cast<int>(settledAsleep_);       // settled: asleep, and stays so
-    bool newHolds = false;
+    const std::size_t holds = held_.size();
     for (const std::uint32_t i : active_) {
         if (set.flags[i] & kSleeping) {
             asleep += (set.flags[i] & kAlive) ? 1 : 0;
@@ -1125,14 +1125,13 @@ void ParticleCollisions::updateSleep(ParticleSet& set, const CollisionDef& def, 
             set.flags[i] = (set.flags[i] | kSleeping) & ~kHistory;
             sleptAt_[i] = {set.px[i], set.py[i], set.radius[i]};
             holdsOfNewSleeper(set, def, i);
-            newHolds = true;
             set.vx[i] = set.vy[i] = 0.0;
             set.halfVx[i] = set.halfVy[i] = 0.0;
             restartWindow(i);
             ++asleep;
         }
     }
-    if (newHolds) sortHolds();
+    if (held_.size() != holds) sortHolds(); // a new sleeper held up by awake particles
     wakeHeldSleepers(set, asleep);
     stats_.sleeping = asleep;
 }
