@@ -56,7 +56,7 @@ struct CollisionDef {
     /// which settles the contacts the passes leave: of velocity impulses (>= 1) and of
     /// position projection (>= 1).
     int relaxVelocitySweeps = 8;
-    int relaxPositionSweeps = 4;
+    int relaxPositionSweeps = 1;
     /// The solver's sweeps take their contacts in wavefronts (contacts sharing no
     /// particle), four at a time where the processor has AVX2: the same bits as one at a
     /// time in their own order, for less time. Off: one at a time in their own order.

@@ -302,9 +302,10 @@ TEST(Pile, TheSolverLeavesAnImpactToThePasses) {
 
 // A ball bouncing out of its fattened box in a falling pile mends the pile's kept pairs
 // (a test of its box against the others) instead of rebuilding them all, and the pile
-// ends bit for bit as when every escape rebuilds. In the first second of 3,000 balls
-// dropped in columns: 18 rebuilds and 41 mends, against 32 rebuilds (one rebuild brings
-// the next: every fat box is regrown around where its ball is now).
+// ends bit for bit as when every escape rebuilds. In the first two seconds of 3,000 balls
+// dropped in columns: 18 rebuilds and 70 mends, against 60 rebuilds (one rebuild brings
+// the next: every fat box is regrown around where its ball is now). Most escapes come
+// in the second second, as the columns lean and slide.
 TEST(Pile, EscapesMendTheKeptPairsWithTheRebuildsBits) {
     auto settle = [](bool patchPairs, int& broadPhases, int& patches) {
         Heap heap = droppedBalls(3000, false);
@@ -315,7 +316,7 @@ TEST(Pile, EscapesMendTheKeptPairsWithTheRebuildsBits) {
         d.collision.redetectChangesOnly = false;
         heap.world.setDef(d);
         broadPhases = patches = 0;
-        for (int t = 0; t < 120; ++t) {
+        for (int t = 0; t < 240; ++t) {
             heap.world.step();
             broadPhases += heap.world.collisionStats().broadPhases;
             patches += heap.world.collisionStats().cachePatches;
@@ -329,7 +330,7 @@ TEST(Pile, EscapesMendTheKeptPairsWithTheRebuildsBits) {
     EXPECT_EQ(none, 0);
     EXPECT_GT(patches, 0);
     EXPECT_LE(mendedBroadPhases * 3, rebuiltBroadPhases * 2); // a third of them spared at least
-    std::printf("3,000 balls, 120 ticks: %d rebuilds and %d mends, against %d rebuilds\n",
+    std::printf("3,000 balls, 240 ticks: %d rebuilds and %d mends, against %d rebuilds\n",
                 mendedBroadPhases, patches, rebuiltBroadPhases);
 }
 
@@ -522,13 +523,13 @@ TEST(Pile, SettledSleepersAreSkippedWithTheBitsOfWorkingOnEveryParticle) {
         double top = 0.0;
         for (std::size_t i = 0; i < p.slots(); ++i)
             if (p.flags[i] & kAlive) top = std::max(top, p.py[i]);
-        if (t == 250) {
+        if (t == 280) {
             const ParticleId s = firstSleeper(p, 50);
             ASSERT_NE(s, kNoParticle);
             p.setPosition(s, p.position(s) + Vec2{0.0, 0.3});
         }
-        if (t == 270) p.setVelocity(firstSleeper(p, 100), {0.5, 0.0});
-        if (t == 290) { // the slot of a sleeper, refilled asleep with the same flags, above
+        if (t == 300) p.setVelocity(firstSleeper(p, 100), {0.5, 0.0});
+        if (t == 320) { // the slot of a sleeper, refilled asleep with the same flags, above
             const ParticleId s = firstSleeper(p, 150);
             ASSERT_NE(s, kNoParticle);
             const std::uint32_t flags = p.flags[s];
@@ -539,18 +540,18 @@ TEST(Pile, SettledSleepersAreSkippedWithTheBitsOfWorkingOnEveryParticle) {
             ASSERT_EQ(p.add(d), s);
             ASSERT_EQ(p.flags[s], flags);
         }
-        if (t == 292) { // a ball dropped onto the sleeper of the refilled slot
+        if (t == 322) { // a ball dropped onto the sleeper of the refilled slot
             const ParticleId s = firstSleeper(p, 150);
             p.add(ball(p.position(s) + Vec2{0.0, 0.3}));
         }
-        if (t == 330) {
+        if (t == 360) {
             ParticleDef d = ball({0.4, top + 0.3});
             d.flags = kSleeping;
             d.velocity = {0.2, 0.0};
             p.add(d);
         }
-        if (t == 350) w.wakeAll();
-        if (t == 390) {
+        if (t == 380) w.wakeAll();
+        if (t == 420) {
             WorldDef d = w.def();
             d.collision.toiTolerance *= 2.0;
             w.setDef(d);
@@ -560,7 +561,7 @@ TEST(Pile, SettledSleepersAreSkippedWithTheBitsOfWorkingOnEveryParticle) {
     std::vector<PlayedTick> played[2];
     for (const bool skip : {true, false}) {
         const auto build = [] { return std::move(staggeredHeap(400).world); };
-        played[skip] = playWith([&](CollisionDef& c) { c.skipSettled = skip; }, 420, build,
+        played[skip] = playWith([&](CollisionDef& c) { c.skipSettled = skip; }, 450, build,
                                 [&](World& w, int t) {
                                     if (t > 0) {
                                         sleeping[skip].push_back(w.collisionStats().sleeping);
@@ -582,11 +583,11 @@ TEST(Pile, SettledSleepersAreSkippedWithTheBitsOfWorkingOnEveryParticle) {
         skipped += active[1][t], every += active[0][t];
     }
     // The heap sleeps whole before the first change: from then on only what changes and
-    // what it wakes is worked on (with the sleepers that what moved held up: 54 % of the
-    // work of every particle, 49 % when those hung where they slept).
-    EXPECT_EQ(sleeping[1][248], 400);
+    // what it wakes is worked on, with the sleepers that what moved held up: 50 % of the
+    // work of every particle.
+    EXPECT_EQ(sleeping[1][278], 400);
     EXPECT_LT(skipped * 5, every * 3);
-    std::printf("heap of 400 balls, 420 ticks: %ld particles worked on, against %ld\n", skipped,
+    std::printf("heap of 400 balls, 450 ticks: %ld particles worked on, against %ld\n", skipped,
                 every);
 
     // A ball that falls asleep on the floor, where no contact solver runs (the passes hold
