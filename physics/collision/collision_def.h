@@ -53,10 +53,11 @@ struct CollisionDef {
     /// particles, stay exact at their time of impact.
     bool restingPairsToSolver = true;
     /// Sweeps of the end-of-step contact solver (sequential impulses, then projection),
-    /// which settles the contacts the passes leave: of velocity impulses (>= 1) and of
-    /// position projection (>= 1).
+    /// which settles the contacts the passes leave: of velocity impulses (>= 1), and the
+    /// most of position projection over all contacts (>= 1; after the first, only while a
+    /// sweep pushed some pair apart by more than a tenth of a radius).
     int relaxVelocitySweeps = 8;
-    int relaxPositionSweeps = 1;
+    int relaxPositionSweeps = 4;
     /// The solver's sweeps take their contacts in wavefronts (contacts sharing no
     /// particle), four at a time where the processor has AVX2: the same bits as one at a
     /// time in their own order, for less time. Off: one at a time in their own order.

@@ -54,23 +54,24 @@ inline void impulseRow(ContactColumns& r, const ContactColumns::Masses& m, std::
 
 namespace detail {
 
-void projectPair(const ContactColumns& r, const ContactColumns::Masses& m, std::size_t k, Vec2* p,
-                 std::uint8_t* touched) {
-    if (!(m.mass[k] > 0.0)) return;
+bool projectPair(const ContactColumns& r, const ContactColumns::Masses& m, std::size_t k, Vec2* p,
+                 std::uint8_t* touched, double deepShare) {
+    if (!(m.mass[k] > 0.0)) return false;
     const std::uint32_t a = r.a[k], pushB = m.pushB[k];
     const double reach = r.reach[k];
     const Vec2 d = p[a] - p[r.readB[k]];
     const double distanceSquared = dot(d, d);
-    if (distanceSquared >= reach * reach) return;
+    if (distanceSquared >= reach * reach) return false;
     const double L = std::sqrt(distanceSquared);
     const Vec2 normal = L > 0.0 ? Vec2{d.x / L, d.y / L} : Vec2{0.0, 1.0};
     const double depth = std::min(reach - L, r.cap[k]);
-    if (!(depth > 0.0)) return;
+    if (!(depth > 0.0)) return false;
     const Vec2 move = normal * depth;
     p[a] += move * m.fa[k];
     p[pushB] -= move * m.fb[k];
     touched[a] = 1;
     touched[pushB] = 1;
+    return depth > deepShare * r.cap[k];
 }
 
 } // namespace detail
@@ -203,10 +204,11 @@ void impulseSweep(ContactColumns& rows, const ContactColumns::Masses& m, std::si
         impulseRows4(r, k, v);
 }
 
-inline void projectPairs4(const Lanes& r, std::size_t k, Vec2* p) {
+// Returns the lanes whose push was deep (deeper than deepShare of its cap).
+inline __m256d projectPairs4(const Lanes& r, std::size_t k, Vec2* p, __m256d deepShare) {
     const __m256d zero = _mm256_setzero_pd();
     const __m256d active = _mm256_cmp_pd(load(r.mass, k), zero, _CMP_GT_OQ);
-    if (_mm256_testz_pd(active, active)) return;
+    if (_mm256_testz_pd(active, active)) return zero;
     __m256d pax, pay, pbx, pby;
     gather(p, r.a + k, pax, pay);
     gather(p, r.readB + k, pbx, pby);
@@ -217,26 +219,31 @@ inline void projectPairs4(const Lanes& r, std::size_t k, Vec2* p) {
     // NaN goes on).
     const __m256d near = _mm256_and_pd(
         active, _mm256_cmp_pd(distanceSquared, _mm256_mul_pd(reach, reach), _CMP_NGE_UQ));
-    if (_mm256_testz_pd(near, near)) return;
+    if (_mm256_testz_pd(near, near)) return zero;
     const __m256d L = _mm256_sqrt_pd(distanceSquared);
     const __m256d apart = _mm256_cmp_pd(L, zero, _CMP_GT_OQ);
     const __m256d nx = where(apart, _mm256_div_pd(dx, L), zero);
     const __m256d ny = where(apart, _mm256_div_pd(dy, L), _mm256_set1_pd(1.0));
-    const __m256d depth = minOf(_mm256_sub_pd(reach, L), load(r.cap, k));
+    const __m256d cap = load(r.cap, k);
+    const __m256d depth = minOf(_mm256_sub_pd(reach, L), cap);
     const __m256d changed = _mm256_and_pd(near, _mm256_cmp_pd(depth, zero, _CMP_GT_OQ));
-    if (_mm256_testz_pd(changed, changed)) return;
+    if (_mm256_testz_pd(changed, changed)) return zero;
     const __m256d mx = _mm256_mul_pd(nx, depth), my = _mm256_mul_pd(ny, depth);
     push(p, r.a + k, r.pushB + k, changed, {pax, pay, pbx, pby}, mx, my, load(r.fa, k),
          load(r.fb, k));
     keepChanged(r.changed, k, changed);
+    return _mm256_and_pd(changed, _mm256_cmp_pd(depth, _mm256_mul_pd(deepShare, cap), _CMP_GT_OQ));
 }
 
 std::size_t projectPairRuns(ContactColumns& rows, const ContactColumns::Masses& m, std::size_t from,
-                            std::size_t to, Vec2* p) {
+                            std::size_t to, Vec2* p, double deepShare, bool& deep) {
     const Lanes r(rows, m);
+    const __m256d share = _mm256_set1_pd(deepShare);
+    __m256d deepLanes = _mm256_setzero_pd();
     std::size_t k = from;
     for (; k < to && !r.shape[k]; k += 4)
-        projectPairs4(r, k, p);
+        deepLanes = _mm256_or_pd(deepLanes, projectPairs4(r, k, p, share));
+    deep = deep || !_mm256_testz_pd(deepLanes, deepLanes);
     return k;
 }
 
@@ -270,11 +277,13 @@ void sweepImpulseColumns(ContactColumns& rows, const ContactColumns::Masses& mas
 namespace detail {
 
 std::size_t projectPairRuns(ContactColumns& rows, const ContactColumns::Masses& masses,
-                            std::size_t from, std::size_t to, Vec2* position) {
+                            std::size_t from, std::size_t to, Vec2* position, double deepShare,
+                            bool& deep) {
 #if defined(ARTILLERY_CONTACT_AVX2)
-    return avx2::projectPairRuns(rows, masses, from, to, position);
+    return avx2::projectPairRuns(rows, masses, from, to, position, deepShare, deep);
 #else
-    (void)rows, (void)masses, (void)to, (void)position; // never called without AVX2
+    // never called without AVX2
+    (void)rows, (void)masses, (void)to, (void)position, (void)deepShare, (void)deep;
     return from;
 #endif
 }

@@ -62,11 +62,13 @@ void sweepImpulseColumns(ContactColumns& rows, const ContactColumns::Masses& mas
                          bool lanes);
 
 /// One position sweep over rows [from, to), the same way; `shapeStep(k)` steps a row
-/// against a shape (such rows gather in runs of their own, four to a run when `lanes`).
+/// against a shape (such rows gather in runs of their own, four to a run when `lanes`) and
+/// returns whether its push was deep. Returns whether any row pushed its sides apart by
+/// more than `deepShare` of its cap (the most it moves at once): deep overlap is left.
 template <class ShapeStep>
-void sweepProjectColumns(ContactColumns& rows, const ContactColumns::Masses& masses,
+bool sweepProjectColumns(ContactColumns& rows, const ContactColumns::Masses& masses,
                          std::size_t from, std::size_t to, Vec2* position, std::uint8_t* touched,
-                         bool lanes, ShapeStep&& shapeStep);
+                         bool lanes, double deepShare, ShapeStep&& shapeStep);
 
 /// touched[k] = 1 for the slots of every row the lane sweeps changed (a, and where b's
 /// push goes in any of `pushes`); `changed` cleared.
@@ -82,31 +84,36 @@ void markTouched(Columns& rows, std::uint8_t* touched, const Pushes&... pushes) 
 
 // The parts of sweepProjectColumns that are not templates.
 namespace detail {
-void projectPair(const ContactColumns& rows, const ContactColumns::Masses& masses, std::size_t k,
-                 Vec2* position, std::uint8_t* touched);
+/// Whether the push was deep.
+bool projectPair(const ContactColumns& rows, const ContactColumns::Masses& masses, std::size_t k,
+                 Vec2* position, std::uint8_t* touched, double deepShare);
 /// The runs of four pair rows from `from` on, each four at once, up to `to` or the first
-/// run of shape rows, where it stops (contactLanesAvailable() only).
+/// run of shape rows, where it stops (contactLanesAvailable() only); `deep` becomes true
+/// where a push was deep.
 std::size_t projectPairRuns(ContactColumns& rows, const ContactColumns::Masses& masses,
-                            std::size_t from, std::size_t to, Vec2* position);
+                            std::size_t from, std::size_t to, Vec2* position, double deepShare,
+                            bool& deep);
 } // namespace detail
 
 template <class ShapeStep>
-void sweepProjectColumns(ContactColumns& rows, const ContactColumns::Masses& masses,
+bool sweepProjectColumns(ContactColumns& rows, const ContactColumns::Masses& masses,
                          std::size_t from, std::size_t to, Vec2* position, std::uint8_t* touched,
-                         bool lanes, ShapeStep&& shapeStep) {
+                         bool lanes, double deepShare, ShapeStep&& shapeStep) {
+    bool deep = false;
     if (!lanes) {
         for (std::size_t k = from; k < to; ++k) {
-            if (rows.shape[k])
-                shapeStep(k);
-            else
-                detail::projectPair(rows, masses, k, position, touched);
+            const bool deepPush =
+                rows.shape[k] ? shapeStep(k)
+                              : detail::projectPair(rows, masses, k, position, touched, deepShare);
+            deep = deep || deepPush;
         }
-        return;
+        return deep;
     }
-    for (std::size_t k = detail::projectPairRuns(rows, masses, from, to, position); k < to;
-         k = detail::projectPairRuns(rows, masses, k + 4, to, position))
+    for (std::size_t k = detail::projectPairRuns(rows, masses, from, to, position, deepShare, deep);
+         k < to; k = detail::projectPairRuns(rows, masses, k + 4, to, position, deepShare, deep))
         for (std::size_t l = k; l < k + 4; ++l)
-            if (rows.shape[l]) shapeStep(l); // padding: a pair row
+            if (rows.shape[l]) deep = shapeStep(l) || deep; // padding: a pair row
+    return deep;
 }
 
 } // namespace phys

@@ -455,6 +455,11 @@ class ParticleCollisions {
     std::vector<Vec2> sweepVelocity_, sweepPosition_; ///< the particles', then still, sink
     /// Sweeps over each band, from the ground up, with the bands below immovable.
     static constexpr int kShockSweeps = 4;
+    /// The position sweeps over all contacts go on (up to relaxPositionSweeps) only while
+    /// one pushed a pair apart by more than this share of its cap: a tenth of the smaller
+    /// radius. One sweep leaves a resting pile's overlaps (under a hundredth of a radius)
+    /// to the bands; more would only move its balls about.
+    static constexpr double kDeepPush = 0.5;
     /// Contacts up to this gap, in radii (of the pair's sum), are constraints too.
     static constexpr double kSpeculative = 0.1;
     /// A contact holds a particle up when its normal is this close to vertical (cosine).

@@ -204,11 +204,13 @@ void ParticleCollisions::sweepImpulses(const CollisionDef& def) {
     }
 }
 
-// Position: sweeps over all contacts, then band by band from the ground up, on the rows of
-// the velocity sweeps; in each band the contacts against what never moves (a shape, a
-// fixed or sleeping particle) come after the others, so that nothing is left inside
-// those, whatever else stays to do. A row whose sides are both immovable in its band does
-// nothing. Velocities are left as the impulses made them, so the projection adds no energy.
+// Position: sweeps over all contacts (a second and later ones only while the one before
+// pushed deep: a resting pile needs one, and each more moves its balls about), then band
+// by band from the ground up, on the rows of the velocity sweeps; in each band the
+// contacts against what never moves (a shape, a fixed or sleeping particle) come after
+// the others, so that nothing is left inside those, whatever else stays to do. A row
+// whose sides are both immovable in its band does nothing. Velocities are left as the
+// impulses made them, so the projection adds no energy.
 void ParticleCollisions::sweepProjections(const StaticShapes& shapes, const CollisionDef& def) {
     Vec2* const p = sweepPosition_.data();
     std::uint8_t* const touched = touched_.data();
@@ -228,23 +230,25 @@ void ParticleCollisions::sweepProjections(const StaticShapes& shapes, const Coll
             const double reach = rows.reach[k];
             const double depth =
                 crossed ? reach - sp.distance : std::min(reach - sp.distance, rows.cap[k]);
-            if (!(depth > 0.0)) return;
+            if (!(depth > 0.0)) return false;
             const Vec2 move = sp.normal * depth;
             const std::uint32_t pushB = m.pushB[k];
             p[a] += move * m.fa[k];
             p[pushB] -= move * m.fb[k];
             touched[a] = 1;
             touched[pushB] = 1;
+            return depth > kDeepPush * rows.cap[k];
         };
     };
     for (int sweep = 0; sweep < def.relaxPositionSweeps; ++sweep)
-        sweepProjectColumns(rows, rows.all, 0, rows.size(), p, touched, lanes_,
-                            shapeStep(rows.all));
+        if (!sweepProjectColumns(rows, rows.all, 0, rows.size(), p, touched, lanes_, kDeepPush,
+                                 shapeStep(rows.all)))
+            break;
     const std::size_t bands = bandStart_.size() - 1;
     for (std::size_t band = 1; band + 1 < bands; ++band)
         for (int sweep = 0; sweep < kShockSweeps; ++sweep)
             sweepProjectColumns(rows, rows.band, rowStart_[band], rowStart_[band + 1], p, touched,
-                                lanes_, shapeStep(rows.band));
+                                lanes_, kDeepPush, shapeStep(rows.band));
     if (lanes_) markTouched(rows, touched, rows.all.pushB, rows.band.pushB);
 }
 

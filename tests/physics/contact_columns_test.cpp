@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <bit>
 #include <cstdio>
 #include <random>
@@ -117,6 +118,7 @@ TEST(ContactColumns, FourImpulseRowsAtOnceGiveTheBitsOfOneAtATime) {
 
 TEST(ContactColumns, FourProjectionRowsAtOnceGiveTheBitsOfOneAtATime) {
     std::mt19937_64 rng(12);
+    int deepSweeps[2] = {0, 0}; // sweeps that did not push deep, and that did
     for (int trial = 0; trial < 300; ++trial) {
         ContactColumns rows;
         fillRuns(rng, rows, [&](std::size_t k, std::uint32_t a, std::uint32_t b) {
@@ -135,16 +137,57 @@ TEST(ContactColumns, FourProjectionRowsAtOnceGiveTheBitsOfOneAtATime) {
         for (std::size_t k = 0; k < rows.size(); k += 5)
             p[rows.readB[k]] = p[rows.a[k]], q[rows.readB[k]] = q[rows.a[k]];
         std::vector<std::uint8_t> touchedLanes(kParticles + 2), touchedOne(kParticles + 2);
-        auto noShapes = [](std::size_t) { FAIL() << "no shape rows here"; };
+        auto noShapes = [](std::size_t) {
+            ADD_FAILURE() << "no shape rows here";
+            return false;
+        };
+        // 0: every push is deep; 1: only a push of more than the cap, which none is.
+        const double deepShare = std::array{0.0, 0.5, 0.99, 1.0}[trial % 4];
         for (int sweep = 0; sweep < 3; ++sweep) {
-            sweepProjectColumns(rows, rows.all, 0, rows.size(), p.data(), touchedLanes.data(),
-                                contactLanesAvailable(), noShapes);
-            sweepProjectColumns(one, one.all, 0, one.size(), q.data(), touchedOne.data(), false,
-                                noShapes);
+            const bool deepLanes =
+                sweepProjectColumns(rows, rows.all, 0, rows.size(), p.data(), touchedLanes.data(),
+                                    contactLanesAvailable(), deepShare, noShapes);
+            const bool deepOne = sweepProjectColumns(one, one.all, 0, one.size(), q.data(),
+                                                     touchedOne.data(), false, deepShare, noShapes);
+            ASSERT_EQ(deepLanes, deepOne) << trial << ", sweep " << sweep;
+            ++deepSweeps[deepOne];
         }
         if (contactLanesAvailable()) markTouched(rows, touchedLanes.data(), rows.all.pushB);
         ASSERT_TRUE(sameBits(p, q)) << trial;
         for (std::uint32_t i = 0; i < kParticles; ++i)
             ASSERT_EQ(touchedLanes[i], touchedOne[i]) << trial << " " << i;
+    }
+    EXPECT_GT(deepSweeps[0], 100);
+    EXPECT_GT(deepSweeps[1], 100);
+}
+
+// A sweep says whether it pushed deep: a pair 0.375 inside each other, with a cap of
+// 0.25, moves 0.25 apart in the first sweep (deeper than half the cap) and the last 0.125
+// in the second (not deeper), and the third pushes nothing. (Binary fractions: exact.)
+TEST(ContactColumns, ASweepSaysWhetherItPushedDeeperThanItsShareOfTheCap) {
+    for (const bool lanes : {false, true}) {
+        if (lanes && !contactLanesAvailable()) continue;
+        // The pair's row, then (for the lanes) three padding rows: at the sink against
+        // still, with no mass.
+        ContactColumns rows;
+        rows.resize(4);
+        for (std::size_t k = 0; k < 4; ++k)
+            rows.a[k] = kSink, rows.readB[k] = kStill, rows.all.pushB[k] = kSink;
+        rows.a[0] = 0, rows.readB[0] = 1, rows.reach[0] = 1.0, rows.cap[0] = 0.25;
+        ContactColumns::Masses& m = rows.all;
+        m.wa[0] = m.wb[0] = 1.0, m.mass[0] = 0.5, m.fa[0] = m.fb[0] = 0.5, m.pushB[0] = 1;
+        std::vector<Vec2> p(kParticles + 2);
+        p[0] = {0.0, 0.625}, p[1] = {0.0, 0.0};
+        std::vector<std::uint8_t> touched(kParticles + 2);
+        auto noShapes = [](std::size_t) { return false; };
+        auto sweep = [&](double deepShare) {
+            return sweepProjectColumns(rows, rows.all, 0, lanes ? 4 : 1, p.data(), touched.data(),
+                                       lanes, deepShare, noShapes);
+        };
+        EXPECT_TRUE(sweep(0.5)) << lanes;
+        EXPECT_EQ(p[0].y - p[1].y, 0.875);
+        EXPECT_FALSE(sweep(0.5)) << lanes;
+        EXPECT_EQ(p[0].y - p[1].y, 1.0);
+        EXPECT_FALSE(sweep(0.0)) << lanes; // nothing left to push
     }
 }
