@@ -457,7 +457,7 @@ class ParticleCollisions {
     static constexpr int kShockSweeps = 4;
     /// The position sweeps over all contacts go on (up to relaxPositionSweeps) only while
     /// one pushed a pair apart by more than this share of its cap: a tenth of the smaller
-    /// radius. One sweep leaves a resting pile's overlaps (under a hundredth of a radius)
+    /// radius. One sweep leaves a resting pile's overlaps (about a hundredth of a radius)
     /// to the bands; more would only move its balls about.
     static constexpr double kDeepPush = 0.5;
     /// Contacts up to this gap, in radii (of the pair's sum), are constraints too.
