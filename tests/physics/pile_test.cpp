@@ -300,6 +300,36 @@ TEST(Pile, TheSolverLeavesAnImpactToThePasses) {
     EXPECT_NEAR(w.particles.px[id] + r, 5.0 - (v / 120.0 - gap), 1e-9); // toiTolerance
 }
 
+// The position sweeps over all contacts after the first run only while one pushed a pair
+// apart by more than a tenth of a radius: a heap resting awake (sleep off) gets the bits
+// of one sweep whatever the most is, and one that a heavy ball lands in does not.
+TEST(Pile, ARestingHeapGetsOneSweepOverAllContactsALandingMore) {
+    auto play = [](int positionSweeps, bool landing) {
+        Heap heap = staggeredHeap(400);
+        WorldDef d = heap.world.def();
+        d.collision.sleep = false;
+        heap.world.setDef(d);
+        for (int t = 0; t < 360; ++t)
+            heap.world.step();
+        d.collision.relaxPositionSweeps = positionSweeps;
+        heap.world.setDef(d);
+        if (landing) {
+            ParticleDef shot;
+            shot.position = {heap.width / 2.0, 3.0};
+            shot.velocity = {0.0, -8.0};
+            shot.radius = 2.0 * kR;
+            shot.mass = 5.0;
+            shot.material = material::kWooden;
+            heap.world.particles.add(shot);
+        }
+        for (int t = 0; t < 120; ++t)
+            heap.world.step();
+        return heap.world.hash();
+    };
+    EXPECT_EQ(play(1, false), play(4, false)) << "resting";
+    EXPECT_NE(play(1, true), play(4, true)) << "landing";
+}
+
 // A ball bouncing out of its fattened box in a falling pile mends the pile's kept pairs
 // (a test of its box against the others) instead of rebuilding them all, and the pile
 // ends bit for bit as when every escape rebuilds. In the first two seconds of 3,000 balls
