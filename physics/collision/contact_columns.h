@@ -63,8 +63,9 @@ void sweepImpulseColumns(ContactColumns& rows, const ContactColumns::Masses& mas
 
 /// One position sweep over rows [from, to), the same way; `shapeStep(k)` steps a row
 /// against a shape (such rows gather in runs of their own, four to a run when `lanes`) and
-/// returns whether its push was deep. Returns whether any row pushed its sides apart by
-/// more than `deepShare` of its cap (the most it moves at once): deep overlap is left.
+/// returns how far it pushed (0: not at all). Returns whether any row pushed its sides
+/// apart by more than `deepShare` of its cap (the most it moves at once): deep overlap is
+/// left.
 template <class ShapeStep>
 bool sweepProjectColumns(ContactColumns& rows, const ContactColumns::Masses& masses,
                          std::size_t from, std::size_t to, Vec2* position, std::uint8_t* touched,
@@ -100,10 +101,11 @@ bool sweepProjectColumns(ContactColumns& rows, const ContactColumns::Masses& mas
                          std::size_t from, std::size_t to, Vec2* position, std::uint8_t* touched,
                          bool lanes, double deepShare, ShapeStep&& shapeStep) {
     bool deep = false;
+    auto shapeRow = [&](std::size_t k) { return shapeStep(k) > deepShare * rows.cap[k]; };
     if (!lanes) {
         for (std::size_t k = from; k < to; ++k) {
             const bool deepPush =
-                rows.shape[k] ? shapeStep(k)
+                rows.shape[k] ? shapeRow(k)
                               : detail::projectPair(rows, masses, k, position, touched, deepShare);
             deep = deep || deepPush;
         }
@@ -112,7 +114,7 @@ bool sweepProjectColumns(ContactColumns& rows, const ContactColumns::Masses& mas
     for (std::size_t k = detail::projectPairRuns(rows, masses, from, to, position, deepShare, deep);
          k < to; k = detail::projectPairRuns(rows, masses, k + 4, to, position, deepShare, deep))
         for (std::size_t l = k; l < k + 4; ++l)
-            if (rows.shape[l]) deep = shapeStep(l) || deep; // padding: a pair row
+            if (rows.shape[l]) deep = shapeRow(l) || deep; // padding: a pair row
     return deep;
 }
 

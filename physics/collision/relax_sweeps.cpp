@@ -216,7 +216,7 @@ void ParticleCollisions::sweepProjections(const StaticShapes& shapes, const Coll
     std::uint8_t* const touched = touched_.data();
     ContactColumns& rows = rows_;
     // A contact with a shape: push the centre out along the shape's normal, at most a
-    // fifth of the radius at a time.
+    // fifth of the radius at a time; how far it pushed tells whether the push was deep.
     auto shapeStep = [&](const ContactColumns::Masses& m) {
         return [&, p, touched](std::size_t k) {
             const std::uint32_t a = rows.a[k];
@@ -230,14 +230,14 @@ void ParticleCollisions::sweepProjections(const StaticShapes& shapes, const Coll
             const double reach = rows.reach[k];
             const double depth =
                 crossed ? reach - sp.distance : std::min(reach - sp.distance, rows.cap[k]);
-            if (!(depth > 0.0)) return false;
+            if (!(depth > 0.0)) return 0.0;
             const Vec2 move = sp.normal * depth;
             const std::uint32_t pushB = m.pushB[k];
             p[a] += move * m.fa[k];
             p[pushB] -= move * m.fb[k];
             touched[a] = 1;
             touched[pushB] = 1;
-            return depth > kDeepPush * rows.cap[k];
+            return depth;
         };
     };
     for (int sweep = 0; sweep < def.relaxPositionSweeps; ++sweep)

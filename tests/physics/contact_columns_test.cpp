@@ -139,7 +139,7 @@ TEST(ContactColumns, FourProjectionRowsAtOnceGiveTheBitsOfOneAtATime) {
         std::vector<std::uint8_t> touchedLanes(kParticles + 2), touchedOne(kParticles + 2);
         auto noShapes = [](std::size_t) {
             ADD_FAILURE() << "no shape rows here";
-            return false;
+            return 0.0;
         };
         // 0: every push is deep; 1: only a push of more than the cap, which none is.
         const double deepShare = std::array{0.0, 0.5, 0.99, 1.0}[trial % 4];
@@ -179,7 +179,7 @@ TEST(ContactColumns, ASweepSaysWhetherItPushedDeeperThanItsShareOfTheCap) {
         std::vector<Vec2> p(kParticles + 2);
         p[0] = {0.0, 0.625}, p[1] = {0.0, 0.0};
         std::vector<std::uint8_t> touched(kParticles + 2);
-        auto noShapes = [](std::size_t) { return false; };
+        auto noShapes = [](std::size_t) { return 0.0; };
         auto sweep = [&](double deepShare) {
             return sweepProjectColumns(rows, rows.all, 0, lanes ? 4 : 1, p.data(), touched.data(),
                                        lanes, deepShare, noShapes);
