@@ -110,20 +110,21 @@ PileLayout pileLayout(long n) {
     return l;
 }
 
-template <class Place>
-void placeBalls(long n, const PileLayout& l, Place place) {
+template <class Place> void placeBalls(long n, const PileLayout& l, PileShape shape, Place place) {
     std::mt19937_64 rng(777);
     std::uniform_real_distribution<double> jitter(-0.01, 0.01);
     for (long i = 0; i < n; ++i) {
         const long c = i % l.columns, r = i / l.columns;
-        place(Vec2{kBallSpacing * (static_cast<double>(c) + 1.0) + jitter(rng),
+        // Staggered: odd rows half a spacing right (the box has half a spacing to spare).
+        const double shift = shape == PileShape::Staggered && r % 2 == 1 ? 0.5 : 0.0;
+        place(Vec2{kBallSpacing * (static_cast<double>(c) + 1.0 + shift) + jitter(rng),
                    kBallSpacing * (static_cast<double>(r) + 1.0) + jitter(rng)});
     }
 }
 
 } // namespace
 
-std::unique_ptr<World> particlePile(long n) {
+std::unique_ptr<World> particlePile(long n, PileShape shape) {
     const PileLayout l = pileLayout(n);
     auto w = std::make_unique<World>(WorldDef{}); // default collision settings
     const double top = kBallSpacing * static_cast<double>(l.rows + 4);
@@ -131,7 +132,7 @@ std::unique_ptr<World> particlePile(long n) {
     w->shapes.addSegment({0.0, 0.0}, {0.0, top}, material::kWooden);
     w->shapes.addSegment({l.width, 0.0}, {l.width, top}, material::kWooden);
     w->particles.reserve(static_cast<std::size_t>(n));
-    placeBalls(n, l, [&](Vec2 p) {
+    placeBalls(n, l, shape, [&](Vec2 p) {
         ParticleDef pd;
         pd.position = p;
         pd.radius = kBallRadius;
@@ -142,7 +143,7 @@ std::unique_ptr<World> particlePile(long n) {
     return w;
 }
 
-std::unique_ptr<RigidWorld> rigidPile(long n, RigidPileSetup setup) {
+std::unique_ptr<RigidWorld> rigidPile(long n, RigidPileSetup setup, PileShape shape) {
     const PileLayout l = pileLayout(n);
     const double s = setup.scale;
     RigidWorldDef def;
@@ -160,7 +161,7 @@ std::unique_ptr<RigidWorld> rigidPile(long n, RigidPileSetup setup) {
     w->createTerrain(floor, wood);
     w->createTerrain(left, wood);
     w->createTerrain(right, wood);
-    placeBalls(n, l, [&](Vec2 p) {
+    placeBalls(n, l, shape, [&](Vec2 p) {
         BodyDef bd;
         bd.position = p * s;
         w->createCircle(bd, kBallRadius * s, wood);
@@ -203,12 +204,13 @@ namespace {
 // drop in windows, in turn. The windows are not repeats: the pile lands, settles and
 // falls asleep across them, so each side's figure is its cost of the whole span, not the
 // median of its windows (which would time whichever stage fell in the middle).
-PileComparison comparePilesOnce(long balls, int windowTicks, int windows) {
+PileComparison comparePilesOnce(long balls, int windowTicks, int windows, PileShape shape) {
     PileComparison r;
     r.balls = balls;
-    auto particles = particlePile(balls);
-    auto rigid = rigidPile(balls);
-    auto tuned = rigidPile(balls, kTunedBox2D);
+    r.shape = shape;
+    auto particles = particlePile(balls, shape);
+    auto rigid = rigidPile(balls, {}, shape);
+    auto tuned = rigidPile(balls, kTunedBox2D, shape);
     const double tick = WorldDef{}.tickSeconds;
     for (int i = 0; i < kPileSettleTicks; ++i) {
         particles->step();
@@ -249,10 +251,10 @@ PileComparison comparePilesOnce(long balls, int windowTicks, int windows) {
 
 } // namespace
 
-PileComparison comparePiles(long balls, int windowTicks, int windows, int runs) {
-    PileComparison best = comparePilesOnce(balls, windowTicks, windows);
+PileComparison comparePiles(long balls, int windowTicks, int windows, int runs, PileShape shape) {
+    PileComparison best = comparePilesOnce(balls, windowTicks, windows, shape);
     for (int k = 1; k < runs; ++k) {
-        const PileComparison run = comparePilesOnce(balls, windowTicks, windows);
+        const PileComparison run = comparePilesOnce(balls, windowTicks, windows, shape);
         best.particleRunMs.push_back(run.particleMs);
         best.rigidRunMs.push_back(run.rigidMs);
         best.tunedRigidRunMs.push_back(run.tunedRigidMs);

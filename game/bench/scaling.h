@@ -53,9 +53,14 @@ double pileWorkload(long n, int steps);
 /// the game sets Box2D up, and at the size Box2D is tuned for (kTunedBox2D, below).
 double rigidPileWorkload(long n, int steps);
 double tunedRigidPileWorkload(long n, int steps);
+/// How the balls start: rows straight above each other (the pile: the balls land in
+/// columns, each touching the balls above and below it), or every other row shifted by
+/// half a spacing (the heap: each ball settles into the notch of two below it and
+/// touches its neighbours at the sides, as poured balls do).
+enum class PileShape { Columns, Staggered };
 /// The two piles themselves, unsettled, for programs that step them on their own
 /// (bench/bench_pile.cpp counts their instructions under callgrind).
-std::unique_ptr<phys::World> particlePile(long n);
+std::unique_ptr<phys::World> particlePile(long n, PileShape shape = PileShape::Columns);
 
 /// How the Box2D pile is built. The game's way is metres with continuous collision on
 /// (which RigidWorld itself switches off past kMostContinuousBodies bodies, so for the
@@ -73,7 +78,8 @@ struct RigidPileSetup {
 /// Box2D at its best for this scene: balls 1 m across, and no time of impact, which
 /// these speeds do not need (nothing leaves the box without it; tested).
 inline constexpr RigidPileSetup kTunedBox2D{10.0, false};
-std::unique_ptr<phys::RigidWorld> rigidPile(long n, RigidPileSetup setup = {});
+std::unique_ptr<phys::RigidWorld> rigidPile(long n, RigidPileSetup setup = {},
+                                            PileShape shape = PileShape::Columns);
 
 /// Ticks run before the pile workloads are timed: 0.5 s at 1/120 s, so most balls are
 /// in contact when the clock starts.
@@ -83,6 +89,7 @@ inline constexpr int kPileSettleTicks = 60;
 /// span of the drop, ticks kPileSettleTicks + 1 on, in its best of `runs` runs.
 struct PileComparison {
     long balls = 0;
+    PileShape shape = PileShape::Columns;
     /// ms per step over the whole timed span (its windows' total over its ticks): the cost
     /// of simulating those ticks of the drop, in the side's fastest run.
     double particleMs = 0, rigidMs = 0;
@@ -117,8 +124,8 @@ struct PileComparison {
         return kPileSettleTicks + windowTicks * static_cast<int>(particleWindowMs.size());
     }
 };
-PileComparison comparePiles(long balls = 2000, int windowTicks = 60, int windows = 3,
-                            int runs = 1);
+PileComparison comparePiles(long balls = 2000, int windowTicks = 60, int windows = 3, int runs = 1,
+                            PileShape shape = PileShape::Columns);
 
 /// Which lead a pile is judged by: speedup() or speedupOverTuned().
 using PileLead = double (PileComparison::*)() const;
@@ -171,6 +178,7 @@ struct ScalingReport {
     std::vector<ScalingPoint> points; ///< every workload's sweep
     PileComparison pile;                 ///< the 2,000 balls (or the --quick size)
     std::vector<PileComparison> piles;   ///< every pile size compared, smallest first
+    std::vector<PileComparison> heaps;   ///< the same sizes as staggered heaps
     std::vector<FlightComparison> flights;
     double clothMs = 0;                  ///< clothFrameMs(64)
     double clothLoad = NAN;

@@ -126,6 +126,35 @@ TEST(ScalingWorkloads, APileComparisonOfRunsKeepsEachSidesFastestRun) {
     EXPECT_EQ(r.awakeBallTicks, one.awakeBallTicks);
 }
 
+// The heap is the pile's balls with every other row half a spacing to the right, as
+// particles and as Box2D circles alike, all inside the box (a radius from each wall).
+TEST(ScalingWorkloads, TheHeapIsThePileWithEveryOtherRowHalfASpacingOver) {
+    constexpr long kBalls = 300;
+    auto pile = particlePile(kBalls), heap = particlePile(kBalls, PileShape::Staggered);
+    auto rigidHeap = rigidPile(kBalls, {}, PileShape::Staggered);
+    const phys::ParticleSet &p = pile->particles, &h = heap->particles;
+    ASSERT_EQ(h.slots(), static_cast<std::size_t>(kBalls));
+    const auto columns = static_cast<std::size_t>(std::ceil(std::sqrt(2.0 * kBalls)));
+    const double width = 0.12 * static_cast<double>(columns + 1);
+    std::vector<phys::Vec2> bodies;
+    for (const phys::BodyId id : rigidHeap->bodies())
+        if (rigidHeap->state(id).type == phys::BodyType::Dynamic)
+            bodies.push_back(rigidHeap->state(id).position);
+    ASSERT_EQ(bodies.size(), h.slots());
+    int shifted = 0;
+    for (std::size_t i = 0; i < h.slots(); ++i) {
+        const bool oddRow = (i / columns) % 2 == 1;
+        EXPECT_NEAR(h.px[i] - p.px[i], oddRow ? 0.06 : 0.0, 1e-12) << "ball " << i;
+        EXPECT_EQ(h.py[i], p.py[i]);
+        EXPECT_GE(h.px[i], 0.05);
+        EXPECT_LE(h.px[i], width - 0.05);
+        EXPECT_NEAR(bodies[i].x, h.px[i], 1e-6); // Box2D keeps floats
+        EXPECT_NEAR(bodies[i].y, h.py[i], 1e-6);
+        shifted += oddRow ? 1 : 0;
+    }
+    EXPECT_GT(shifted, kBalls / 3);
+}
+
 // The tuned Box2D pile is the game's pile with every length (and gravity) ten times:
 // the same motion in Box2D's units. Before anything lands, every ball has fallen exactly
 // ten times as far, to float rounding; and without time of impact nothing leaves the box.
