@@ -94,6 +94,10 @@ struct CollisionStats {
     int changesOnly = 0;  ///< passes that detected only what the pass before changed
     int active = 0;       ///< particles the sub-steps worked on (the others were settled)
     int sleeping = 0;     ///< particles asleep after the step
+    /// The contact solver's contacts, and the rows its sweeps take for them: one a
+    /// contact, plus the padding of the runs of fewer than four in the AVX2 lanes.
+    int solverContacts = 0;
+    int solverRows = 0;
 };
 
 class ParticleCollisions {
@@ -447,6 +451,20 @@ class ParticleCollisions {
     }
     std::uint32_t sinkSlot() const { return stillSlot() + 1; }
     bool lanes_ = false; ///< this solve's sweeps run in wavefronts of four lanes
+    /// Per band: its sweeps run in lanes (else one row at a time, in its own order).
+    std::vector<std::uint8_t> bandLanes_;
+    const std::vector<std::uint32_t>&
+    keepLanesWhereTheyFill(const std::vector<std::uint32_t>& wavefronts);
+    /// A band whose wavefronts take more rows than this a contact is swept one row at a
+    /// time (measured on a staggered heap: 1.5 was slower, 3 no faster).
+    static constexpr double kMostRowsPerContact = 2.0;
+    std::vector<std::uint32_t> mixedOrder_;
+    struct SweepRun {
+        std::uint32_t from, to;
+        bool lanes;
+    };
+    std::vector<SweepRun> sweepRuns_;
+    void joinBandsIntoRuns();
     /// The rows of every sweep, in contactOrder_'s order (in its wavefronts when the lanes
     /// run, with padding rows); each band's from rowStart_[band].
     ContactColumns rows_;

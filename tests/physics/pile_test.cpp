@@ -731,6 +731,37 @@ TEST(Pile, TheSweepsInWavefrontsGiveTheBitsOfTheSweepsInOrder) {
             [seed] { return rattlingBox(seed, 60, 0.8, 10.0); }, [](World&, int) {});
 }
 
+// In a heap whose balls touch side by side, a row of balls listed pair by pair is a
+// chain of contacts, one wavefront each: in lanes, nearly three rows a contact. Such a
+// band is swept one row at a time instead (a band keeps its lanes up to two rows a
+// contact), in the bits of the sweeps in order: the staggered heap lands and settles
+// in the same bits with lanes as without, in at most two rows a contact, and some bands
+// keep their lanes (where the processor has AVX2; elsewhere every row is a contact).
+TEST(Pile, AHeapTouchingSideBySideSweepsItsChainsOneRowAtATimeInTheSameBits) {
+    Heap lanes = staggeredHeap(1000), inOrder = staggeredHeap(1000);
+    WorldDef d = inOrder.world.def();
+    d.collision.contactLanes = false;
+    inOrder.world.setDef(d);
+    long contacts = 0, rows = 0;
+    for (int t = 0; t < 150; ++t) {
+        lanes.world.step();
+        inOrder.world.step();
+        ASSERT_EQ(lanes.world.hash(), inOrder.world.hash()) << "tick " << t;
+        const CollisionStats &l = lanes.world.collisionStats(), &o = inOrder.world.collisionStats();
+        EXPECT_EQ(o.solverRows, o.solverContacts);
+        contacts += l.solverContacts;
+        rows += l.solverRows;
+    }
+    std::printf("staggered heap of 1,000 balls, ticks 1-150: %ld contacts in %ld rows "
+                "(lanes here: %s)\n",
+                contacts, rows, contactLanesAvailable() ? "yes" : "no");
+    EXPECT_GT(contacts, 150L * 1000); // most balls are in the solver's contacts
+    EXPECT_LE(rows, 2 * contacts);
+    if (contactLanesAvailable()) {
+        EXPECT_GT(rows, contacts); // some bands keep their lanes
+    }
+}
+
 // The profile's clock is only read around the step's phases, never inside them: a world
 // stepped with profiling off (as the aim preview and the computer's trial shots are) ends
 // bit for bit where the profiled one does, with no time on its profile.
