@@ -247,6 +247,19 @@ std::vector<Chart> scalingCharts(const game::bench::ScalingReport& report) {
                                workloadColor("box2d-tuned"),
                                format("%.3g ms (x10, no TOI)", pile.tunedRigidMs)});
     }
+    // The same balls poured in staggered rows: the lead where each ball touches four to
+    // six others, beside the columns' (no target).
+    for (const auto& heap : report.heaps) {
+        if (heap.balls != pile.balls) continue;
+        const double balls = static_cast<double>(heap.balls);
+        std::snprintf(note, sizeof note, "%.3g ms, %.1fx / %.1fx faster", heap.particleMs,
+                      heap.speedup(), heap.speedupOverTuned());
+        ratios.bars.push_back(
+            {format("heap of %.0f: particles", balls), heap.particleMs, NAN, particle, note});
+        ratios.bars.push_back({format("heap of %.0f: Box2D tuned", balls), heap.tunedRigidMs, NAN,
+                               workloadColor("box2d-tuned"),
+                               format("%.3g ms (x10, no TOI)", heap.tunedRigidMs)});
+    }
     for (const auto& f : report.flights) {
         if (f.n < 1000000) continue; // the 1M figures: out of cache, the memory's limit
         const char* who = f.integrator == "velocity-verlet" ? "Verlet" : "sympl.";
