@@ -16,7 +16,8 @@
 // `--tuned` builds the Box2D side as Box2D is at its best for this scene (kTunedBox2D:
 // every length x10, no time of impact) instead of as the game builds it.
 //
-// `--heap N --seconds S` instead drops the staggered heap of tests/physics/pile_test.cpp
+// `--heap N --seconds S` instead drops the heap of `artillery bench scaling` (and of
+// tests/physics/pile_test.cpp)
 // (N balls, each row offset by half a spacing) and prints, every simulated second, how
 // many balls sleep, the kinetic energy, the fastest ball and the deepest overlap (in
 // radii): whether a big heap comes to rest, and how far inside itself it rests.
@@ -38,7 +39,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <random>
 #include <string>
 
 namespace {
@@ -129,31 +129,12 @@ void printSettling(World& w, double seconds) {
     }
 }
 
-// The heap of tests/physics/pile_test.cpp (staggeredHeap): n balls on a grid 0.12 m apart,
-// each row offset by half a spacing, in an open box.
+// The heap of `artillery bench scaling` and tests/physics/pile_test.cpp (staggeredHeap):
+// the pile's balls with every other row half a spacing over, so they settle into a heap.
 void runHeap(long n, double seconds) {
-    World w;
-    const int columns = static_cast<int>(std::ceil(std::sqrt(2.0 * static_cast<double>(n))));
-    const int rows = static_cast<int>((n + columns - 1) / columns);
-    const double width = 0.12 * columns + 0.18, top = 0.12 * (rows + 4);
-    w.shapes.addSegment({0.0, 0.0}, {width, 0.0}, material::kWooden);
-    w.shapes.addSegment({0.0, 0.0}, {0.0, top}, material::kWooden);
-    w.shapes.addSegment({width, 0.0}, {width, top}, material::kWooden);
-    std::mt19937_64 rng(777);
-    std::uniform_real_distribution<double> jitter(-0.01, 0.01);
-    for (long i = 0; i < n; ++i) {
-        const long c = i % columns, r = i / columns;
-        ParticleDef pd;
-        pd.position = {0.12 * static_cast<double>(c + 1) + 0.06 * static_cast<double>(r % 2) +
-                           jitter(rng),
-                       0.12 * static_cast<double>(r + 1) + jitter(rng)};
-        pd.radius = 0.05;
-        pd.mass = 0.1;
-        pd.material = material::kWooden;
-        w.particles.add(pd);
-    }
-    std::printf("heap of %ld balls, %d columns\n", n, columns);
-    printSettling(w, seconds);
+    auto w = game::bench::particlePile(n, game::bench::PileShape::Staggered);
+    std::printf("heap of %ld balls, staggered rows\n", n);
+    printSettling(*w, seconds);
 }
 
 // The scaling bench's own pile (rows straight above each other, so it lands in columns

@@ -99,25 +99,28 @@ constexpr double kWoodenRestitution = 0.603; // the notes' wooden preset (materi
 
 struct PileLayout {
     long columns = 1, rows = 1;
-    double width = 1.0; ///< inside of the box, m
+    double width = 1.0;       ///< inside of the box, m
+    double oddRowShift = 0.0; ///< spacings the odd rows start to the right
 };
 
-PileLayout pileLayout(long n) {
+// The staggered heap is the heap of tests/physics/pile_test.cpp (staggeredHeap) and of
+// `bench_pile --heap`: its odd rows half a spacing right, in a box wider by as much.
+PileLayout pileLayout(long n, PileShape shape) {
     PileLayout l;
     l.columns = std::max(4L, static_cast<long>(std::ceil(std::sqrt(2.0 * n))));
     l.rows = (n + l.columns - 1) / l.columns;
-    l.width = static_cast<double>(l.columns) * kBallSpacing + kBallSpacing;
+    l.oddRowShift = shape == PileShape::Staggered ? 0.5 : 0.0;
+    l.width = static_cast<double>(l.columns) * kBallSpacing + (1.0 + l.oddRowShift) * kBallSpacing;
     return l;
 }
 
-template <class Place> void placeBalls(long n, const PileLayout& l, PileShape shape, Place place) {
+template <class Place> void placeBalls(long n, const PileLayout& l, Place place) {
     std::mt19937_64 rng(777);
     std::uniform_real_distribution<double> jitter(-0.01, 0.01);
     for (long i = 0; i < n; ++i) {
         const long c = i % l.columns, r = i / l.columns;
-        // Staggered: odd rows half a spacing right (the box has half a spacing to spare).
-        const double shift = shape == PileShape::Staggered && r % 2 == 1 ? 0.5 : 0.0;
-        place(Vec2{kBallSpacing * (static_cast<double>(c) + 1.0 + shift) + jitter(rng),
+        const double shift = r % 2 == 1 ? l.oddRowShift * kBallSpacing : 0.0;
+        place(Vec2{kBallSpacing * (static_cast<double>(c) + 1.0) + shift + jitter(rng),
                    kBallSpacing * (static_cast<double>(r) + 1.0) + jitter(rng)});
     }
 }
@@ -125,14 +128,14 @@ template <class Place> void placeBalls(long n, const PileLayout& l, PileShape sh
 } // namespace
 
 std::unique_ptr<World> particlePile(long n, PileShape shape) {
-    const PileLayout l = pileLayout(n);
+    const PileLayout l = pileLayout(n, shape);
     auto w = std::make_unique<World>(WorldDef{}); // default collision settings
     const double top = kBallSpacing * static_cast<double>(l.rows + 4);
     w->shapes.addSegment({0.0, 0.0}, {l.width, 0.0}, material::kWooden);
     w->shapes.addSegment({0.0, 0.0}, {0.0, top}, material::kWooden);
     w->shapes.addSegment({l.width, 0.0}, {l.width, top}, material::kWooden);
     w->particles.reserve(static_cast<std::size_t>(n));
-    placeBalls(n, l, shape, [&](Vec2 p) {
+    placeBalls(n, l, [&](Vec2 p) {
         ParticleDef pd;
         pd.position = p;
         pd.radius = kBallRadius;
@@ -144,7 +147,7 @@ std::unique_ptr<World> particlePile(long n, PileShape shape) {
 }
 
 std::unique_ptr<RigidWorld> rigidPile(long n, RigidPileSetup setup, PileShape shape) {
-    const PileLayout l = pileLayout(n);
+    const PileLayout l = pileLayout(n, shape);
     const double s = setup.scale;
     RigidWorldDef def;
     def.gravity = def.gravity * s;
@@ -161,7 +164,7 @@ std::unique_ptr<RigidWorld> rigidPile(long n, RigidPileSetup setup, PileShape sh
     w->createTerrain(floor, wood);
     w->createTerrain(left, wood);
     w->createTerrain(right, wood);
-    placeBalls(n, l, shape, [&](Vec2 p) {
+    placeBalls(n, l, [&](Vec2 p) {
         BodyDef bd;
         bd.position = p * s;
         w->createCircle(bd, kBallRadius * s, wood);
