@@ -183,6 +183,7 @@ struct ScalingReport {
     double clothMs = 0;                  ///< clothFrameMs(64)
     double clothLoad = NAN;
     double loadAtStart = NAN;            ///< before anything ran
+    std::string machine;                 ///< Machine::describe() of where it ran
     bool underLoad = false;              ///< taken with the load above 1 (--under-load)
 };
 

@@ -1,6 +1,7 @@
 #include "game/cli/bench.h"
 
 #include "game/bench/choose.h"
+#include "game/bench/machine.h"
 #include "game/bench/replay_timing.h"
 
 #include <nlohmann/json.hpp>
@@ -58,8 +59,10 @@ scaling         step cost against N: particles in flight, a particle pile with c
                 a 64x64 cloth frame (8 sub-steps); the slowest seek in every replay of
                 --replays DIR (default tests/replays, if it exists), the rope bridge's
                 cost per tick among them. Every figure has the 1-minute load average
-                beside it. Writing --csv or --png into a docs/ folder is refused while
-                the load average is above 1.
+                beside it, and the run names its machine (processor, logical CPUs,
+                AVX2) on its second line, in --json and in the chart's title: the
+                same code's leads move with the processor. Writing --csv or --png into
+                a docs/ folder is refused while the load average is above 1.
   --replays DIR folder of *.replay.json files to time seeks in
   --under-load  write into docs/ whatever the load; the CSV and chart say so
 choose          "accurate enough, fastest": measures the scene's sweep and prints the
@@ -397,6 +400,7 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
 
     ScalingReport report;
     report.loadAtStart = loadNow();
+    report.machine = game::bench::thisMachine().describe();
     report.underLoad = underLoad;
     // Figures for the documentation come from a quiet machine: the load of other work
     // slows Box2D, the particles and the memory by different factors, so ratios taken
@@ -483,12 +487,14 @@ int runScalingCommand(const Args& args, std::ostream& out, const BenchPlots* plo
     j["csv"] = csv;
     j["png"] = png;
     j["load_at_start"] = jnum(report.loadAtStart);
+    j["machine"] = report.machine;
     j["under_load"] = underLoad;
     j["workloads"] = json::array();
     char line[400];
     if (!asJson) {
         out << "1-minute load average before the run" << loadNote(report.loadAtStart)
             << (underLoad ? "  (taken under load: --under-load)" : "") << "\n";
+        out << "machine: " << report.machine << "\n";
         out << "workload    scaling exponent (1 = linear)   us/step at largest N\n";
     }
     for (const char* name : {"flight", "cloth", "pile", "box2d", "box2d-tuned"}) {

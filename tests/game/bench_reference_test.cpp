@@ -3,6 +3,7 @@
 // at every lane width), moves the bytes it says, the load average is read as /proc/loadavg writes
 // it, and figures for docs/ are refused under load with the message that says why.
 #include "game/bench/flight_reference.h"
+#include "game/bench/machine.h"
 #include "game/bench/scaling.h"
 
 #include <gtest/gtest.h>
@@ -117,6 +118,22 @@ TEST(LoadAverage, IsTheFirstFieldOfProcLoadavg) {
     EXPECT_EQ(parseLoadAverage("6.95 7.01 6.80 9/300 99"), 6.95);
     EXPECT_TRUE(std::isnan(parseLoadAverage("")));
     EXPECT_TRUE(std::isnan(parseLoadAverage("busy")));
+}
+
+TEST(Machine, IsTheFirstModelNameOfProcCpuinfo) {
+    const std::string cpuinfo = "processor\t: 0\nvendor_id\t: GenuineIntel\n"
+                                "model name\t: Intel(R) Xeon(R) Processor @ 2.50GHz  \n"
+                                "processor\t: 1\nmodel name\t: a second one\n";
+    EXPECT_EQ(parseCpuModel(cpuinfo), "Intel(R) Xeon(R) Processor @ 2.50GHz");
+    EXPECT_EQ(parseCpuModel("model name\t:\n"), "");
+    EXPECT_EQ(parseCpuModel("processor\t: 0\n"), "");
+    EXPECT_EQ(parseCpuModel(""), "");
+}
+
+TEST(Machine, SaysWhatItDoesNotKnow) {
+    EXPECT_EQ((Machine{"AMD EPYC 9B14", 2, true}).describe(),
+              "AMD EPYC 9B14, 2 logical CPUs, AVX2 lanes");
+    EXPECT_EQ((Machine{"", 0, false}).describe(), "unknown processor, no AVX2 (one row at a time)");
 }
 
 TEST(LoadAverage, FiguresForDocsAreRefusedAboveOneUnlessMarked) {

@@ -312,6 +312,7 @@ void drawStability(Renderer2D& r, Rect area, const std::vector<game::bench::Stab
 void drawScaling(Renderer2D& r, Rect area, const game::bench::ScalingReport& report) {
     const auto charts = scalingCharts(report);
     std::string title = "Scaling: step cost against the size of the scene";
+    if (!report.machine.empty()) title += " (" + report.machine + ")";
     if (report.underLoad && std::isfinite(report.loadAtStart))
         title += format(" (taken under load %.2f)", report.loadAtStart);
     else if (report.underLoad)
