@@ -83,10 +83,11 @@ sanitize: deps
 
 # make fuzz: libFuzzer on the level, replay, commands and player settings loaders and
 # the network message decoder,
-# FUZZ_SECONDS each. Built with the sanitizer build's flags (-O1 -g1: 4 min 11 s
-# against 4 min 50 s at -O2 -g on 2 cores). What a fuzzer finds (crash-*, leak-*, timeout-*, oom-*) is saved in
-# $(FUZZ_BUILD)/artifacts/LOADER/, never in the source tree; the target fails if any
-# fuzzer did.
+# FUZZ_SECONDS each, built with the sanitizer build's flags (-O1 -g1: 4 min 11 s against
+# 4 min 50 s at -O2 -g on 2 cores). What a fuzzer finds (crash-*, leak-*, timeout-*,
+# oom-*) is saved in $(FUZZ_BUILD)/artifacts/LOADER/ and its corpus grows in
+# $(FUZZ_BUILD)/corpus/LOADER/, never in the source tree (the seed folders are read
+# only); the target fails if any fuzzer did.
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_PACKAGES := clang libclang-rt-14-dev

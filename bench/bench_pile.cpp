@@ -16,11 +16,11 @@
 // `--tuned` builds the Box2D side as Box2D is at its best for this scene (kTunedBox2D:
 // every length x10, no time of impact) instead of as the game builds it.
 //
-// `--heap N --seconds S` instead drops the heap of `artillery bench scaling` (and of
-// tests/physics/pile_test.cpp)
-// (N balls, each row offset by half a spacing) and prints, every simulated second, how
-// many balls sleep, the kinetic energy, the fastest ball and the deepest overlap (in
-// radii): whether a big heap comes to rest, and how far inside itself it rests.
+// `--heap N --seconds S` instead drops the heap of `artillery bench scaling` and of
+// tests/physics/pile_test.cpp (N balls, every other row half a spacing over) and
+// prints, every simulated second, how many balls sleep, the kinetic energy, the fastest
+// ball and the deepest overlap (in radii): whether a big heap comes to rest, and how far
+// inside itself it rests.
 // `--drop N --seconds S` does the same for the bench's own pile of N balls.
 //
 // Usage: bench_pile [--balls N] [--skip S] [--ticks T] [--side particles|rigid|both]
