@@ -87,6 +87,11 @@ clang-deps: deps
 	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing; \
 	fi
 san-configure: clang-deps
+	@if [ -f $(SAN_BUILD)/CMakeCache.txt ] && \
+	    ! grep -q '^CMAKE_CXX_COMPILER:.*clang++' $(SAN_BUILD)/CMakeCache.txt; then \
+	  echo "$(SAN_BUILD) was configured with another compiler: building it again with clang"; \
+	  rm -rf $(SAN_BUILD); \
+	fi
 	CC=clang CXX=clang++ cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DARTILLERY_SANITIZE=ON -DARTILLERY_FUZZ=ON \
 	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$(SAN_FLAGS)" -DCMAKE_C_FLAGS_RELWITHDEBINFO="$(SAN_FLAGS)"
