@@ -201,6 +201,13 @@ class ParticleCollisions {
     /// when a changed particle left what the kept pairs cover (detect runs instead).
     bool detectChanges(const ParticleSet& set, const StaticShapes& shapes, const CollisionDef& def,
                        double h);
+    /// pairs_: the changed particles' kept pairs that overlap, in pair order, each once,
+    /// by marks in keptMarks_ (no strays); false when the sort is the cheaper way.
+    bool markKeptPairs();
+    /// detectChanges from pairs_ on: their candidates, those carried, the order.
+    bool finishLaterPass(const ParticleSet& set, const StaticShapes& shapes,
+                         const CollisionDef& def, double h, PhaseClock::TimePoint t0);
+    std::vector<std::uint64_t> keptMarks_; ///< a bit a kept pair (markKeptPairs)
     void indexCachedPairs();
     /// Proxy i's pairs among all proxies and the shapes, by their exact boxes.
     void pairsOfStray(std::uint32_t i);
@@ -291,6 +298,14 @@ class ParticleCollisions {
     // solver (its contacts reach kSpeculative further); each keeps a settled particle's.
     std::vector<Aabb> boxes_, solverBoxes_;
     bool kindsChanged_ = true; ///< a kind may differ from liveKinds_ (buildProxy)
+    bool kindsRose_ = true;    ///< a kind may pair with more than in liveKinds_
+    /// A proxy of kind `now` may pair with more than it could as `before`: it came back
+    /// (from None), or it moves again (Resting to Moving). pairable() only loses pairs
+    /// otherwise.
+    static bool pairsWithMore(ProxyKind now, ProxyKind before) {
+        return (before == ProxyKind::None && now != ProxyKind::None) ||
+               (before == ProxyKind::Resting && now == ProxyKind::Moving);
+    }
     std::vector<ProxyKind> kinds_;
     std::vector<ProxyPair> pairs_;
     std::vector<NearPair> nearPairs_; ///< the solver's pairs near enough to be contacts

@@ -403,7 +403,7 @@ namespace {
 struct PlayedTick {
     std::uint64_t hash;
     std::vector<ContactEvent> contacts;
-    int pairs, changesOnly;
+    int pairs, changesOnly, sleeping;
 };
 
 void dropShots(World& w, int t) {
@@ -463,7 +463,7 @@ std::vector<PlayedTick> playWith(Set set, int ticks, Build build, Act act) {
         act(w, t);
         w.step();
         const CollisionStats& s = w.collisionStats();
-        played.push_back({w.hash(), w.contacts(), s.pairs, s.changesOnly});
+        played.push_back({w.hash(), w.contacts(), s.pairs, s.changesOnly, s.sleeping});
     }
     return played;
 }
@@ -523,6 +523,29 @@ TEST(Pile, LaterPassesDetectOnlyWhatChangedWithTheFullDetectionsBits) {
         expectTheFullDetectionsBits(
             "rattling box, seed " + std::to_string(seed), 40, 1.0,
             [seed] { return rattlingBox(seed, 40, 0.8, 40.0); }, [](World&, int) {}, false);
+}
+
+// The live pairs (the kept pairs the kinds of now can make) are filtered from the last
+// live pairs while kinds only fall (balls falling asleep), and from the whole cache when
+// one rises (a ball woken or added). Either way they are the pairs a fresh broad phase
+// gives: the heap, shot at as it falls asleep, ends every tick in the same bits when each
+// tick's first detection builds the cache again (the grid's cell size, for which the
+// cache is kept, alternates; the grid finds the same pairs at any cell size).
+TEST(Pile, LivePairsKeptAsKindsFallAreThoseOfAFreshBroadPhase) {
+    auto build = [] { return std::move(droppedBalls(1500, false).world); };
+    const auto kept = playWith([](CollisionDef&) {}, 240, build, dropShots);
+    const auto fresh = playWith([](CollisionDef&) {}, 240, build, [](World& w, int t) {
+        dropShots(w, t);
+        WorldDef d = w.def();
+        d.collision.gridCellSize = t % 2 == 0 ? 0.0 : 0.25;
+        w.setDef(d);
+    });
+    int mostAsleep = 0;
+    for (std::size_t t = 0; t < kept.size(); ++t) {
+        ASSERT_EQ(kept[t].hash, fresh[t].hash) << "tick " << t;
+        mostAsleep = std::max(mostAsleep, kept[t].sleeping);
+    }
+    EXPECT_GT(mostAsleep, 500); // the kinds fell: a third of the heap asleep at once
 }
 
 // A sleeper that a sub-step left as it was (asleep, at rest, untouched by any contact) is
