@@ -71,13 +71,7 @@ bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShape
         }
         for (std::uint32_t k = pairStart_[i]; k < pairStart_[i + 1]; ++k) {
             const ProxyPair p = cachedPairs_[pairsOf_[k]];
-            if (!isLive(p)) continue;
-            if (p.second >= n) {
-                if (boxes_[i].overlapsBranchless(staticIndex_.box(p.second - n)))
-                    pairs_.push_back(p);
-            } else if (overlapping(p.first, p.second)) {
-                pairs_.push_back(p);
-            }
+            if (keptPairMeets(i, p)) pairs_.push_back(p);
         }
         for (const std::uint32_t e : strays_)
             if (e != i && overlapping(i, e))
@@ -98,7 +92,6 @@ bool ParticleCollisions::detectChanges(const ParticleSet& set, const StaticShape
 // pair: with few changed particles among many kept pairs, the sort is the cheaper and
 // this returns false.
 bool ParticleCollisions::markKeptPairs() {
-    const auto n = static_cast<std::uint32_t>(boxes_.size());
     if (cachedPairs_.size() > 256 * changed_.size()) return false;
     keptMarks_.assign((cachedPairs_.size() + 63) / 64, 0);
     std::uint64_t* const marks = keptMarks_.data();
@@ -106,11 +99,7 @@ bool ParticleCollisions::markKeptPairs() {
         if (kinds_[i] == ProxyKind::None) continue;
         for (std::uint32_t k = pairStart_[i]; k < pairStart_[i + 1]; ++k) {
             const std::uint32_t at = pairsOf_[k];
-            const ProxyPair p = cachedPairs_[at];
-            const bool overlap = p.second >= n
-                                     ? boxes_[i].overlapsBranchless(staticIndex_.box(p.second - n))
-                                     : overlapping(p.first, p.second);
-            const std::uint64_t keep = (isLive(p) && overlap) ? 1 : 0;
+            const std::uint64_t keep = keptPairMeets(i, cachedPairs_[at]) ? 1 : 0;
             marks[at / 64] |= keep << (at % 64);
         }
     }
@@ -142,6 +131,13 @@ bool ParticleCollisions::finishLaterPass(const ParticleSet& set, const StaticSha
     ++stats_.changesOnly;
     detectMicros_ += clock_.microsSince(t0);
     return true;
+}
+
+bool ParticleCollisions::keptPairMeets(std::uint32_t i, const ProxyPair& p) const {
+    const auto n = static_cast<std::uint32_t>(boxes_.size());
+    if (!isLive(p)) return false;
+    return p.second >= n ? boxes_[i].overlapsBranchless(staticIndex_.box(p.second - n))
+                         : overlapping(p.first, p.second);
 }
 
 bool ParticleCollisions::overlapping(std::uint32_t i, std::uint32_t j) const {

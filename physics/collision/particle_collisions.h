@@ -211,6 +211,9 @@ class ParticleCollisions {
     void indexCachedPairs();
     /// Proxy i's pairs among all proxies and the shapes, by their exact boxes.
     void pairsOfStray(std::uint32_t i);
+    /// Kept pair p of changed particle i is one of this pass: live, and its exact boxes
+    /// (i's and the other particle's or the shape's) overlap.
+    bool keptPairMeets(std::uint32_t i, const ProxyPair& p) const;
     /// Proxies i and j (particles) may pair, by their kinds and exact boxes.
     bool overlapping(std::uint32_t i, std::uint32_t j) const;
     /// A path changed by a contact of this pass: the particle is active, and not settled
