@@ -14,7 +14,7 @@ PACKAGES := cmake g++ make pkg-config libbox2d-dev libsdl2-dev libimgui-dev \
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps configure build play test bench charts clean sanitize fuzz cli-docs screenshots \
-        clang-deps san-configure
+        clang-deps san-configure fuzz-seconds
 
 all: build
 
@@ -109,7 +109,12 @@ sanitize: san-configure
 # fuzzer did.
 FUZZ_SECONDS ?= 60
 FUZZERS := level replay commands settings message sim_level sim_commands
-fuzz: san-configure
+# libFuzzer reads -max_total_time with atol: text would be 0, which is no limit at all.
+fuzz-seconds:
+	@case "$(FUZZ_SECONDS)" in ''|*[!0-9]*) false;; *) [ "$(FUZZ_SECONDS)" -gt 0 ];; esac || { \
+	  echo "make fuzz: FUZZ_SECONDS must be a whole number of seconds above 0, not '$(FUZZ_SECONDS)'"; \
+	  exit 2; }
+fuzz: fuzz-seconds san-configure
 	cmake --build $(SAN_BUILD) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZERS))
 	@failed=""; \
 	for t in $(FUZZERS); do \
