@@ -60,8 +60,9 @@ scaling         step cost against N: particles in flight, a particle pile with c
                 --replays DIR (default tests/replays, if it exists), the rope bridge's
                 cost per tick among them. Every figure has the 1-minute load average
                 beside it, and the run names its machine (processor, logical CPUs,
-                AVX2) on its second line, in --json and in the chart's title: the
-                same code's leads move with the processor. Writing --csv or --png into
+                AVX2) on its second line, in --json and in the chart's title (with
+                the load before the run): the same code's leads move with the
+                processor. Writing --csv or --png into
                 a docs/ folder is refused while the load average is above 1.
   --replays DIR folder of *.replay.json files to time seeks in
   --under-load  write into docs/ whatever the load; the CSV and chart say so

@@ -205,6 +205,32 @@ TEST(BenchCharts, ScalingInANarrowPanelGivesTheBarsTheLowerLeftAndTheLegendTheLo
     EXPECT_LT(longestRun(tuned, w / 2, w), 60) << "and no bar there";
 }
 
+// Scaling figures move with the machine and its load, so the charts' title says both:
+// after what they show where a line has room, in place of it in the in-game panel; a run
+// marked as taken under load says so instead of the bare load.
+TEST(BenchCharts, ScalingTitleNamesTheMachineAndTheLoad) {
+    game::bench::ScalingReport report;
+    report.machine = "Intel(R) Xeon(R) Processor @ 2.50GHz, 2 logical CPUs, AVX2 lanes";
+    report.loadAtStart = 0.42;
+    EXPECT_EQ(scalingTitle(report, false),
+              "Scaling: step cost against the size of the scene (Intel(R) Xeon(R) Processor @ "
+              "2.50GHz, 2 logical CPUs, AVX2 lanes, load 0.42)");
+    EXPECT_EQ(scalingTitle(report, true),
+              "Scaling on Intel(R) Xeon(R) Processor @ 2.50GHz, 2 logical CPUs, AVX2 lanes, load "
+              "0.42");
+    report.underLoad = true;
+    report.loadAtStart = 1.37;
+    EXPECT_EQ(scalingTitle(report, true), "Scaling on Intel(R) Xeon(R) Processor @ 2.50GHz, 2 "
+                                          "logical CPUs, AVX2 lanes, taken under load 1.37");
+    report.loadAtStart = NAN;
+    report.machine.clear();
+    EXPECT_EQ(scalingTitle(report, false),
+              "Scaling: step cost against the size of the scene (taken under load)");
+    report.underLoad = false;
+    EXPECT_EQ(scalingTitle(report, true), "Scaling: step cost against the size of the scene")
+        << "nothing known, nothing said";
+}
+
 // The in-game charts keep clear of a panel open over their left side (the sandbox's
 // tools): they start a gap right of it and keep their right edge; a panel elsewhere, or
 // one that would leave them under half their width, leaves them as they are.

@@ -309,20 +309,33 @@ void drawStability(Renderer2D& r, Rect area, const std::vector<game::bench::Stab
     drawChartGrid(r, charts, area, 2, legend, "Stability: where each integrator fails");
 }
 
+std::string scalingTitle(const game::bench::ScalingReport& report, bool narrow) {
+    std::string load;
+    if (report.underLoad && std::isfinite(report.loadAtStart))
+        load = format("taken under load %.2f", report.loadAtStart);
+    else if (report.underLoad)
+        load = "taken under load";
+    else if (std::isfinite(report.loadAtStart))
+        load = format("load %.2f", report.loadAtStart);
+    std::string where = report.machine;
+    if (!where.empty() && !load.empty()) where += ", ";
+    where += load;
+    const std::string what = "Scaling: step cost against the size of the scene";
+    if (where.empty()) return what;
+    return narrow ? "Scaling on " + where : what + " (" + where + ")";
+}
+
 void drawScaling(Renderer2D& r, Rect area, const game::bench::ScalingReport& report) {
     const auto charts = scalingCharts(report);
-    std::string title = "Scaling: step cost against the size of the scene";
-    if (!report.machine.empty()) title += " (" + report.machine + ")";
-    if (report.underLoad && std::isfinite(report.loadAtStart))
-        title += format(" (taken under load %.2f)", report.loadAtStart);
-    else if (report.underLoad)
-        title += " (taken under load)";
     // Side by side the three need about kRoomy pixels each: the bars' labels and notes
     // alone take some 330. Narrower (the in-game panel), the two line charts share the
     // top, and the bars share the bottom with the legend, which would cover most of a
-    // line chart that small.
+    // line chart that small; the title then gives its line to the machine and the load
+    // (the line charts' own titles say what they show).
     constexpr double kRoomy = 380.0;
-    if (charts.size() < 3 || area.w >= 3.0 * kRoomy) {
+    const bool narrow = charts.size() >= 3 && area.w < 3.0 * kRoomy;
+    const std::string title = scalingTitle(report, narrow);
+    if (!narrow) {
         drawChartGrid(r, charts, area, 3, {}, title);
         return;
     }

@@ -9,6 +9,7 @@
 #include "game/bench/work_precision.h"
 #include "ui/charts/chart.h"
 
+#include <string>
 #include <vector>
 
 namespace ui::charts {
@@ -34,5 +35,11 @@ void drawWorkPrecision(Renderer2D& r, Rect area,
 void drawStability(Renderer2D& r, Rect area, const std::vector<game::bench::StabilityRow>& rows,
                    const std::vector<game::bench::GrowthCurve>& curves);
 void drawScaling(Renderer2D& r, Rect area, const game::bench::ScalingReport& report);
+
+/// The scaling charts' title, with where they were measured (the machine, and the load
+/// or that they were taken under load), since their figures move with both. In a panel
+/// too narrow for a line of both (`narrow`) it gives its line to where: the line charts'
+/// own titles say what they show.
+std::string scalingTitle(const game::bench::ScalingReport& report, bool narrow);
 
 } // namespace ui::charts

@@ -1,5 +1,6 @@
 #include "ui/charts/charts_panel.h"
 
+#include "game/bench/machine.h"
 #include "ui/charts/bench_charts.h"
 
 #include <imgui.h>
@@ -42,6 +43,10 @@ void measure(ChartsPanelState& s) {
         s.growth = energyGrowthCurves(1e-2, 10.0, 13);
         break;
     case ChartsView::Scaling: {
+        // Where and under what load: the heading says so (bench_charts.h), as the bench's
+        // chart does, for figures that move with both.
+        s.scaling.loadAtStart = loadNow();
+        s.scaling.machine = thisMachine().describe();
         ScalingDef d;
         d.sizes = {1000, 4000, 16000};
         d.steps = 5;

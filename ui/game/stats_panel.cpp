@@ -140,7 +140,8 @@ std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const 
             ImGui::TextDisabled("last %.0f s; particles, springs and Box2D bodies", historySeconds);
         }
         // --- Charts ----------------------------------------------------------------
-        if (ImGui::Button(charts_.open ? "Close charts" : "Charts (work-precision, stability)"))
+        if (ImGui::Button(charts_.open ? "Close charts"
+                                       : "Charts (work-precision, stability, scaling)"))
             charts_.open = !charts_.open;
         if (charts_.open) {
             ImGui::Separator();
