@@ -140,6 +140,8 @@ struct Lanes {
     static Mask bitAndNot(Mask a, Mask b) { return _mm_andnot_si128(a, b); }
     static Mask bitOr(Mask a, Mask b) { return _mm_or_si128(a, b); }
     static bool any(Mask m) { return _mm_movemask_epi8(m) != 0; }
+    static bool all(Mask m) { return _mm_movemask_epi8(m) == 0xffff; }
+    static Mask same(Real a, Real b) { return _mm_castpd_si128(_mm_cmpeq_pd(a, b)); } // a == b
     // A true lane is -1: subtracting the mask counts it.
     static Mask count(Mask counter, Mask m) { return _mm_sub_epi64(counter, m); }
     static int total(Mask c) {
@@ -187,6 +189,10 @@ struct Lanes {
     static Mask bitAndNot(Mask a, Mask b) { return _mm256_andnot_si256(a, b); }
     static Mask bitOr(Mask a, Mask b) { return _mm256_or_si256(a, b); }
     static bool any(Mask m) { return !_mm256_testz_si256(m, m); }
+    static bool all(Mask m) { return _mm256_movemask_pd(_mm256_castsi256_pd(m)) == 0xf; }
+    static Mask same(Real a, Real b) { // a == b
+        return _mm256_castpd_si256(_mm256_cmp_pd(a, b, _CMP_EQ_OQ));
+    }
     static Mask count(Mask counter, Mask m) { return _mm256_sub_epi64(counter, m); }
     static int total(Mask c) {
         alignas(32) long long lane[4];
@@ -214,10 +220,11 @@ ModelCounts sweep(ParticleSet& s, const LocalForceLaw& law, const ModelRule* rul
     if (law.water) lanes = 1; // buoyancy and water drag: one particle at a time
 #if defined(ARTILLERY_FLIGHT_AVX2)
     if (lanes >= 4 && processorHasAvx2())
-        i = avx2::laneSweep<Drag, Scheme>(s, law, rule, g, h, i, counts, single);
+        i = avx2::laneSweep<Drag, Scheme>(s, law, rule, g, h, start, end, i, counts, single);
 #endif
 #if defined(__SSE2__)
-    if (lanes >= 2) i = sse2::laneSweep<Drag, Scheme>(s, law, rule, g, h, i, counts, single);
+    if (lanes >= 2)
+        i = sse2::laneSweep<Drag, Scheme>(s, law, rule, g, h, start, end, i, counts, single);
 #endif
     for (; i < n; ++i)
         single(i);
