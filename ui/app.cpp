@@ -57,7 +57,7 @@ int runApp(int argc, const char* const* argv) {
     for (const auto& v : allVerbs()) {
         if (verb != v.name) continue;
         try {
-            game::cli::Args args(v.name, argc, argv, 2, v.flags);
+            game::cli::Args args(v.name, argc, argv, 2, v.flags, v.usage);
             if (args.flag("help")) {
                 std::cout << v.usage;
                 return game::cli::kOk;

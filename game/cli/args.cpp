@@ -1,15 +1,56 @@
 #include "game/cli/args.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <vector>
 
 namespace game::cli {
 
+namespace {
+
+// The option names a --help text gives: each "--" followed by a lower-case name.
+std::set<std::string> optionNamesIn(std::string_view usage) {
+    std::set<std::string> names;
+    auto isNameChar = [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
+    };
+    for (std::size_t at = usage.find("--"); at != std::string_view::npos;
+         at = usage.find("--", at + 2)) {
+        std::size_t end = at + 2;
+        while (end < usage.size() && isNameChar(usage[end]))
+            ++end;
+        if (end > at + 2 && usage[at + 2] >= 'a' && usage[at + 2] <= 'z')
+            names.emplace(usage.substr(at + 2, end - at - 2));
+    }
+    return names;
+}
+
+// The edits from a to b, each inserting, deleting or replacing one letter or swapping
+// two side by side ("--form" for "--from" is one): the optimal string alignment distance.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+    for (std::size_t i = 0; i <= a.size(); ++i)
+        d[i][0] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        d[0][j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1,
+                                d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[a.size()][b.size()];
+}
+
+} // namespace
+
 Args::Args(std::string verb, int argc, const char* const* argv, int first,
-           std::set<std::string> flags)
-    : verb_(std::move(verb)), flagNames_(std::move(flags)) {
+           std::set<std::string> flags, std::string_view usage)
+    : verb_(std::move(verb)), flagNames_(std::move(flags)), usageNames_(optionNamesIn(usage)) {
     flagNames_.insert("json");
     flagNames_.insert("help");
     for (int i = first; i < argc; ++i) {
@@ -26,6 +67,8 @@ Args::Args(std::string verb, int argc, const char* const* argv, int first,
             name = name.substr(0, eq);
             hasValue = true;
         }
+        if (!usageNames_.empty() && !usageNames_.count(name) && name != "json" && name != "help")
+            fail(unknownOption(name));
         if (flagNames_.count(name)) {
             if (hasValue) fail("--" + name + " takes no value");
             flagsGiven_.insert(name);
@@ -157,13 +200,26 @@ phys::Vec2 Args::requiredVec2(const std::string& name) const {
     return vec2(name, {});
 }
 
+std::string Args::unknownOption(const std::string& name) const {
+    // Near: one edit for every three letters of the name, at least one.
+    const std::string* nearest = nullptr;
+    std::size_t best = std::max<std::size_t>(1, name.size() / 3) + 1;
+    for (const std::string& known : usageNames_) {
+        const std::size_t d = editDistance(name, known);
+        if (d < best) best = d, nearest = &known;
+    }
+    std::string message = "unknown option --" + name;
+    if (nearest) message += " (did you mean --" + *nearest + "?)";
+    return message;
+}
+
 void Args::rejectUnknown() const {
     for (const auto& name : missingValue_)
-        if (!asked_.count(name)) fail("unknown option --" + name);
+        if (!asked_.count(name)) fail(unknownOption(name));
     for (const auto& [name, value] : values_)
-        if (!asked_.count(name)) fail("unknown option --" + name);
+        if (!asked_.count(name)) fail(unknownOption(name));
     for (const auto& name : flagsGiven_)
-        if (!asked_.count(name)) fail("unknown option --" + name);
+        if (!asked_.count(name)) fail(unknownOption(name));
     if (!positionals_.empty() && !asked_.count("<positional>"))
         fail("unexpected argument '" + positionals_.front() + "'");
 }

@@ -10,6 +10,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace game::cli {
@@ -31,9 +32,12 @@ bool isWholeNumber(const std::string& s);
 
 class Args {
   public:
-    /// Parses argv[first..argc). `flags` are options that take no value.
+    /// Parses argv[first..argc). `flags` are options that take no value. With `usage`
+    /// (the verb's --help text), an option it never names is refused at once, before
+    /// the verb runs, with the nearest one it does name as a suggestion: a typo is
+    /// reported as such, not as the option it was meant to be missing.
     Args(std::string verb, int argc, const char* const* argv, int first,
-         std::set<std::string> flags = {});
+         std::set<std::string> flags = {}, std::string_view usage = {});
 
     bool flag(const std::string& name) const;
     bool has(const std::string& name) const { return values_.count(name) != 0 || missingValue_.count(name) != 0; }
@@ -64,6 +68,9 @@ class Args {
     std::set<std::string> flagsGiven_;
     std::set<std::string> missingValue_; ///< options last on the line with no value
     std::set<std::string> flagNames_;
+    std::set<std::string> usageNames_; ///< every --name the verb's --help text gives
+    /// "unknown option --name", with the nearest name of the --help text if one is near.
+    std::string unknownOption(const std::string& name) const;
     std::vector<std::string> positionals_;
     mutable std::set<std::string> asked_;
 };

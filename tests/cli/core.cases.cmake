@@ -20,6 +20,8 @@ cli_test(trajectory_bad_integrator 2 "--integrator expects one of explicit-euler
          "trajectory;--speed;30;--angle;45;--time;2;--integrator;rk5")
 cli_test(trajectory_bad_dt 2 "--dt expects a number in" "trajectory;--speed;30;--angle;45;--time;2;--dt;0")
 cli_test(trajectory_unknown_option 2 "unknown option --sped" "trajectory;--sped;30;--speed;1;--angle;45;--time;2")
+# A typo is reported as one, with the option meant, before a required option it hides.
+cli_test(solve_typo_suggested 2 "unknown option --form .did you mean --from.." "solve;--form;0,0;--to;40,0;--speed;30")
 # spring: energy and analytic solution.
 cli_test(spring_json 0 "\"analytic_position\":.*\"energy_j\":|\"energy_j\":.*\"analytic_position\":"
          "spring;--k;100;--mass;1;--x0;0.1;--integrator;symplectic-euler;--dt;0.001;--time;1;--json")

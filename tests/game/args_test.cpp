@@ -66,6 +66,47 @@ TEST(Args, OutOfRangeAndUnknownOptionsAreRefused) {
               std::string::npos);
 }
 
+// With the verb's --help text, an option it never names is refused as the line is read,
+// before a missing required option could be reported in its place, and the nearest name
+// of the text within one edit for every three letters (a swap of two letters is one) is
+// suggested.
+TEST(Args, OptionsTheHelpNeverNamesAreRefusedAtOnceWithTheNearestSuggested) {
+    const char* usage = "usage: artillery solve --from X,Y --to X,Y --speed V [--planet NAME]\n"
+                        "  --gravity G   m/s^2 (Earth's by default; -- alone is no option)\n";
+    auto read = [&](std::vector<const char*> argv) {
+        argv.insert(argv.begin(), {"artillery", "solve"});
+        return Args("solve", static_cast<int>(argv.size()), argv.data(), 2, {}, usage);
+    };
+    EXPECT_EQ(errorOf([&] {
+                  read({"--form", "0,0", "--to", "4,0"});
+              }),
+              "artillery solve: unknown option --form (did you mean --from?) (see artillery "
+              "solve --help)");
+    EXPECT_EQ(errorOf([&] {
+                  read({"--to", "4,0", "--sped=3"});
+              }),
+              "artillery solve: unknown option --sped (did you mean --speed?) (see artillery "
+              "solve --help)");
+    EXPECT_EQ(errorOf([&] {
+                  read({"--plant", "mars"});
+              }),
+              "artillery solve: unknown option --plant (did you mean --planet?) (see artillery "
+              "solve --help)");
+    // Nothing within reach: no suggestion ("--x" is no typo of "--to").
+    EXPECT_EQ(errorOf([&] { read({"--x"}); }),
+              "artillery solve: unknown option --x (see artillery solve --help)");
+    EXPECT_EQ(errorOf([&] {
+                  read({"--frobnicate", "1"});
+              }),
+              "artillery solve: unknown option --frobnicate (see artillery solve --help)");
+    // What the text names passes to the verb as before, --json and --help always.
+    Args a = read({"--from", "0,0", "--to", "4,0", "--speed", "3", "--gravity", "9.8", "--json"});
+    EXPECT_EQ(a.requiredNumber("gravity", 0, 100, "m/s^2"), 9.8);
+    EXPECT_NO_THROW(read({"--help"}));
+    // Without a text, unknown options wait for rejectUnknown, which suggests nothing.
+    EXPECT_NO_THROW(make({"--form", "0,0"}));
+}
+
 TEST(Args, NumberNotationIsPlainDecimalAndWholeNumbersAreDigits) {
     using game::cli::isDecimal, game::cli::isWholeNumber;
     for (const char* good : {"12", "-3", "+0.5", "1e-3", "2.", ".5", "6.02E23"})

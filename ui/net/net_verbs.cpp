@@ -60,7 +60,7 @@ Exit: 0 the match was played to the end, 1 it was not (desync, abandoned, refuse
 
 const char* const kJoinUsage = R"(usage: artillery join HOST[:P] [--name NAME] [--spectate]
            [--commands FILE | --autoplay] [--record FILE] [--levels DIR] [--timeout S]
-           [--window] [--json]
+           [--wait S] [--window] [--json]
 
 Joins a duel hosted with `artillery host` and plays cannon 1 in a window (with
 --autoplay or --commands without one, unless --window), or watches it with --spectate.
@@ -76,9 +76,11 @@ must have the same content hash; the program version must match too.
   --record FILE     save the match as a replay (a window: network-last.json without it)
   --levels DIR      where to look for the host's level (default levels)
   --timeout S       how long to keep trying to reconnect after a drop (default 60 s)
+  --wait S          how long to wait for the host to answer (default 120 s)
   --window          a window also for --autoplay, --commands or --spectate, as for host
                     (--screenshot, --frames, --close-when-over)
-  --json            as for host (also --limit and the test hooks)
+  --json            as for host; --limit S and the test hooks --tamper-at-tick N,
+                    --drop-at-tick N and --quit-at-tick N as for host too
 Exit: 0 the match was played to the end, 1 it was not, 2 bad input.
 )";
 
