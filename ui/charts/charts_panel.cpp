@@ -33,6 +33,23 @@ bool hasData(const ChartsPanelState& s) {
     return false;
 }
 
+// The scene of the work-precision chart and of the search for the cheapest method.
+void sceneCombo(ChartsPanelState& s) {
+    const auto scenes = accuracyScenes();
+    int scene = 0;
+    for (std::size_t i = 0; i < scenes.size(); ++i)
+        if (scenes[i].id == s.scene) scene = static_cast<int>(i);
+    if (ImGui::BeginCombo("scene", scenes[scene].name)) {
+        for (std::size_t i = 0; i < scenes.size(); ++i)
+            if (ImGui::Selectable(scenes[i].name, static_cast<int>(i) == scene)) {
+                s.scene = scenes[i].id;
+                s.choice.reset();
+                s.choiceSearched = false;
+            }
+        ImGui::EndCombo();
+    }
+}
+
 } // namespace
 
 void measure(ChartsPanelState& s) {
@@ -84,22 +101,14 @@ ChartsPanelRequests chartsControls(ChartsPanelState& s) {
     const char* views[] = {"work-precision", "stability", "scaling"};
     int view = static_cast<int>(s.view);
     if (ImGui::Combo("chart", &view, views, 3)) s.view = static_cast<ChartsView>(view);
-    const auto scenes = accuracyScenes();
-    int scene = 0;
-    for (std::size_t i = 0; i < scenes.size(); ++i)
-        if (scenes[i].id == s.scene) scene = static_cast<int>(i);
-    if (ImGui::BeginCombo("scene", scenes[scene].name)) {
-        for (std::size_t i = 0; i < scenes.size(); ++i)
-            if (ImGui::Selectable(scenes[i].name, static_cast<int>(i) == scene)) {
-                s.scene = scenes[i].id;
-                s.choice.reset();
-                s.choiceSearched = false;
-            }
-        ImGui::EndCombo();
-    }
+    // The stability and scaling charts have no scene: there the scene belongs to the
+    // search below alone, so it sits with it.
+    const bool chartHasScene = s.view == ChartsView::WorkPrecision;
+    if (chartHasScene) sceneCombo(s);
     if (ImGui::Button(hasData(s) ? "Measure again" : "Measure")) measure(s);
     ImGui::Separator();
     ImGui::TextUnformatted("Accurate enough, fastest");
+    if (!chartHasScene) sceneCombo(s);
     float logTol = static_cast<float>(std::log10(s.tolerance));
     if (ImGui::SliderFloat("tolerance", &logTol, -9.0f, 0.0f, "1e%.1f m")) {
         s.tolerance = std::pow(10.0, static_cast<double>(logTol));
@@ -109,8 +118,9 @@ ChartsPanelRequests chartsControls(ChartsPanelState& s) {
     if (s.choice) {
         const auto& c = *s.choice;
         // Wrapped: the controls sit in the Stats panel, about 330 px wide.
-        ImGui::TextWrapped("%s, dt %.3g s (%d sub-steps at 120 Hz)", phys::info(c.integrator).name,
-                           c.dt, c.substepsPerTick(1.0 / 120.0));
+        const int substeps = c.substepsPerTick(1.0 / 120.0);
+        ImGui::TextWrapped("%s, dt %.3g s (%d sub-step%s at 120 Hz)", phys::info(c.integrator).name,
+                           c.dt, substeps, substeps == 1 ? "" : "s");
         ImGui::TextWrapped("measured error %.3g m, %.3g ms CPU per sim s", c.error,
                            1e3 * c.cpuSecondsPerSimSecond);
         req.applyChoice = ImGui::Button("Use it");
