@@ -205,6 +205,7 @@ std::string Args::unknownOption(const std::string& name) const {
     const std::string* nearest = nullptr;
     std::size_t best = std::max<std::size_t>(1, name.size() / 3) + 1;
     for (const std::string& known : usageNames_) {
+        if (known == name) continue; // named by the help, but not for what was asked
         const std::size_t d = editDistance(name, known);
         if (d < best) best = d, nearest = &known;
     }

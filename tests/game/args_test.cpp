@@ -103,6 +103,12 @@ TEST(Args, OptionsTheHelpNeverNamesAreRefusedAtOnceWithTheNearestSuggested) {
     Args a = read({"--from", "0,0", "--to", "4,0", "--speed", "3", "--gravity", "9.8", "--json"});
     EXPECT_EQ(a.requiredNumber("gravity", 0, 100, "m/s^2"), 9.8);
     EXPECT_NO_THROW(read({"--help"}));
+    // Named by the text but never asked for (a sub-command's option given to another):
+    // unknown, and no suggestion of itself.
+    EXPECT_EQ(errorOf([&] {
+                  read({"--gravity", "9.8"}).rejectUnknown();
+              }),
+              "artillery solve: unknown option --gravity (see artillery solve --help)");
     // Without a text, unknown options wait for rejectUnknown, which suggests nothing.
     EXPECT_NO_THROW(make({"--form", "0,0"}));
 }
