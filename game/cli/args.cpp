@@ -206,6 +206,11 @@ std::string Args::unknownOption(const std::string& name) const {
     std::size_t best = std::max<std::size_t>(1, name.size() / 3) + 1;
     for (const std::string& known : usageNames_) {
         if (known == name) continue; // named by the help, but not for what was asked
+        // Lengths apart by `best` or more are that many edits apart at least (and a long
+        // argument costs no table of its length times the name's).
+        const std::size_t apart =
+            name.size() > known.size() ? name.size() - known.size() : known.size() - name.size();
+        if (apart >= best) continue;
         const std::size_t d = editDistance(name, known);
         if (d < best) best = d, nearest = &known;
     }
