@@ -53,6 +53,7 @@ Args::Args(std::string verb, int argc, const char* const* argv, int first,
     : verb_(std::move(verb)), flagNames_(std::move(flags)), usageNames_(optionNamesIn(usage)) {
     flagNames_.insert("json");
     flagNames_.insert("help");
+    if (!usageNames_.empty()) usageNames_.insert({"json", "help"}); // every verb's, named or not
     for (int i = first; i < argc; ++i) {
         std::string a = argv[i];
         if (a.rfind("--", 0) != 0 || a.size() == 2) {
@@ -67,8 +68,7 @@ Args::Args(std::string verb, int argc, const char* const* argv, int first,
             name = name.substr(0, eq);
             hasValue = true;
         }
-        if (!usageNames_.empty() && !usageNames_.count(name) && name != "json" && name != "help")
-            fail(unknownOption(name));
+        if (!usageNames_.empty() && !usageNames_.count(name)) fail(unknownOption(name));
         if (flagNames_.count(name)) {
             if (hasValue) fail("--" + name + " takes no value");
             flagsGiven_.insert(name);
