@@ -9,7 +9,7 @@
 //
 //   bench_effects_frame [LEVEL.json] [--frames N] [--after TICKS]
 #include "bench/options.h"
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/level.h"
 #include "game/match.h"
 #include "ui/game/match_frame.h"

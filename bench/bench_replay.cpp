@@ -4,7 +4,7 @@
 //
 //   bench_replay [LEVEL.json] [--seconds S] [--repeats N]
 #include "bench/options.h"
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/headless.h"
 #include "game/replay.h"
 

@@ -1,6 +1,6 @@
 #include "game/audio/wav.h"
 
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "game/editor/level_editor.h"
 
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/level_write.h"
 
 #include <algorithm>

@@ -1,47 +1,31 @@
 // Reading JSON files with errors that say where and what: every message names the
 // file, the JSON path ($.cannons[0].position) and what was expected. Used by levels,
-// replays, command scripts and settings, so every loader reports errors the same way.
+// replays, command scripts and settings, so every loader reports errors the same way
+// (a LoadError, game/files/text_file.h, which also reads and writes the files).
 //
 // A Node is a view of one JSON value at a path. Objects are read field by field;
 // finish() then refuses any field nobody asked about, so a typo is an error instead
 // of a silently ignored setting.
 #pragma once
 
+#include "game/files/text_file.h"
 #include "physics/vec2.h"
 
 #include <nlohmann/json.hpp>
 
-#include <functional>
 #include <optional>
 #include <set>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace game {
 
-/// One clear message: "FILE: PATH: what was expected (got what)".
-struct LoadError : std::runtime_error {
-    LoadError(const std::string& file, const std::string& path, const std::string& message);
-    std::string file, path, detail;
-};
-
-/// The largest file any loader reads (levels, replays, command scripts, settings), bytes.
-inline constexpr std::size_t kMaxFileBytes = 16u << 20;
 /// How deep arrays and objects may nest in any file; the formats need 5 levels.
 inline constexpr int kMaxJsonDepth = 64;
 
 /// Parses text as JSON; a syntax error, nesting deeper than kMaxJsonDepth and a key given
 /// twice in one object each become a LoadError with line and column.
 nlohmann::json parseJson(const std::string& file, const std::string& text);
-/// Reads a whole regular file of at most kMaxFileBytes; a missing or unreadable file, a
-/// device, a FIFO or a directory, or a larger file is a LoadError before anything is read.
-std::string readFile(const std::string& file);
-/// The text with every byte that is not part of valid UTF-8 (and every control
-/// character but tab) written as \xNN, so a message quoting a file prints cleanly.
-std::string printable(const std::string& text);
-/// Characters (UTF-8 code points) in text; an invalid byte counts as one.
-std::size_t characterCount(const std::string& text);
 
 class Node {
   public:
@@ -93,13 +77,5 @@ class Node {
     std::string path_;
     mutable std::set<std::string> asked_;
 };
-
-/// Writes text to path atomically: a temporary file in the same folder, flushed and
-/// fsync'd, then renamed over the target, so a crash leaves the old file or the new
-/// one, never half of either. Throws std::runtime_error on failure.
-void writeFileAtomically(const std::string& path, const std::string& text);
-
-/// FNV-1a 64 of the bytes, as 16 hex digits (levels' content hash in replays).
-std::string contentHash(const std::string& bytes);
 
 } // namespace game

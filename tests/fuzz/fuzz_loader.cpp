@@ -5,7 +5,7 @@
 // folder, see the Makefile's fuzz target), which then goes into the bad-file corpus of
 // tests/data with the message it must produce.
 #include "game/command.h"
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/level.h"
 #include "game/replay.h"
 #if FUZZ_LOADER == 4

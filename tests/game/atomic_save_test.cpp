@@ -1,6 +1,6 @@
 // Nothing lost: a writer killed in the middle of a save leaves the previous file intact
 // (writeFileAtomically writes a temporary file and renames it over the target).
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // listed outside); bad files are refused naming the file and the JSON path; the unlock
 // rules (level k+1 after one star on level k, a chapter after N stars in the one before).
 #include "game/campaign.h"
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/level.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // "file<TAB>substring of the one message its loader must produce".
 #pragma once
 
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include "game/effects/camera_rig.h"
 #include "game/effects/effects.h"
 #include "game/effects/shot_feedback.h"
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/replay.h"
 
 #include "shots.h"

@@ -3,7 +3,7 @@
 // (pinned content hashes), every candidate of many seeds loads as `check` loads it,
 // practice maps give the solver three stars, duel maps let each side hit the other.
 #include "game/bench/duel_ai.h"
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/generate/level_generator.h"
 #include "game/generate/noise.h"
 #include "game/generate/seeded_random.h"

@@ -3,7 +3,7 @@
 // every shipped level opened and saved unchanged is the same level; an edited level
 // saves, loads with the real loader and plays.
 #include "game/editor/level_editor.h"
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/level_write.h"
 #include "game/session.h"
 

@@ -1,8 +1,8 @@
 // Levels: every shipped level loads; every file of the bad corpus is refused with the
 // message it must produce, naming the file and the JSON path.
-#include "game/files/json_reader.h"
-#include "game/level.h"
 #include "corpus.h"
+#include "game/files/text_file.h"
+#include "game/level.h"
 
 #include <gtest/gtest.h>
 

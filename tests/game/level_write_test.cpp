@@ -1,7 +1,7 @@
 // The level writer: every shipped level, written and loaded again, is the same level
 // field by field; the written file passes the loader `check` uses; writing is a fixed
 // point (the written text, loaded and written again, is the same bytes).
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/level.h"
 #include "game/level_write.h"
 

@@ -1,7 +1,7 @@
 // The progress file: results and lessons read round trip; the best result keeps whether
 // it was assisted; a damaged file is kept aside as FILE.damaged and no progress is used;
 // saving is atomic (no temporary file left, an unwritable folder is reported).
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/progress.h"
 
 #include <gtest/gtest.h>

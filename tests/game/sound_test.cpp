@@ -5,7 +5,7 @@
 #include "game/audio/sound_track.h"
 #include "game/audio/synthesizer.h"
 #include "game/audio/wav.h"
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/replay.h"
 
 #include "shots.h"

@@ -4,7 +4,7 @@
 // vacuum range; counted weapons refused when spent; bad entries named.
 #include "game/ai.h"
 #include "game/ai_weapons.h"
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/match.h"
 #include "game/session.h"
 #include "game/weapon_text.h"

@@ -1,6 +1,6 @@
 // Input -> commands without a window: a drag from the cannon, held keys, a Space charge,
 // projectile keys and the physics panel all become the commands a replay records.
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/level.h"
 #include "game/match.h"
 #include "game/session.h"

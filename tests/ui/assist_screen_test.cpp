@@ -2,7 +2,7 @@
 // the player's settings, the game screen sends `assist` on the player's turn, so the
 // session records it (a replay keeps it) and the match caps its stars; with the launch
 // arc alone it sends nothing.
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "ui/game/game_screen.h"
 #include "ui/platform/gl_context.h"
 

@@ -2,12 +2,12 @@
 // draws the level beside its panel with the handles where the camera maps them, takes
 // mouse presses and keys as the window would send them, refuses to play or save a level
 // that fails the loader, plays the edited level (F5) and comes back to it intact (F4).
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/terrain.h"
+#include "sdl_events.h"
 #include "ui/game/game_screen.h"
 #include "ui/platform/gl_context.h"
 #include "ui/render/screenshot.h"
-#include "sdl_events.h"
 
 #include <SDL.h>
 #include <gtest/gtest.h>

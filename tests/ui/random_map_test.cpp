@@ -1,7 +1,7 @@
 // The level select's Random map: the map is written into the player's maps folder under
 // a name with its mode, seed and difficulty, and is byte for byte what `artillery
 // generate` writes for the same seed; a folder that cannot be written says why.
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/generate/level_generator.h"
 #include "ui/game/random_map.h"
 

@@ -1,7 +1,7 @@
 // The keys and the mouse of a turn at the cannon, as every window that plays one reads
 // them (the game's, the network duel's): synthetic SDL events in, the commands a match
 // takes out, applied to a real match.
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/level.h"
 #include "game/match.h"
 #include "ui/game/turn_controls.h"

@@ -3,7 +3,7 @@
 #include "ui/game/match_view.h"
 #include "ui/game/weapon_look.h"
 
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/level.h"
 #include "game/replay.h"
 #include "ui/platform/imgui_layer.h"

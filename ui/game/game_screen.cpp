@@ -11,7 +11,7 @@
 
 #include "game/editor/level_editor.h"
 #include "game/editor/sandbox_to_level.h"
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/level_write.h"
 #include "ui/game/match_frame.h"
 #include "ui/game/random_map.h"

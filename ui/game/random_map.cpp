@@ -1,6 +1,6 @@
 #include "ui/game/random_map.h"
 
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/generate/level_generator.h"
 
 #include <filesystem>

@@ -1,6 +1,6 @@
 #include "ui/net/net_duel.h"
 
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/replay.h"
 
 #include <filesystem>

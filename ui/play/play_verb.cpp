@@ -2,7 +2,7 @@
 
 #include "ui/net/net_screen.h"
 
-#include "game/files/json_reader.h"
+#include "game/files/text_file.h"
 #include "game/replay.h"
 #include "ui/game/game_screen.h"
 #include "ui/game/player_settings.h"
