@@ -237,7 +237,6 @@ class GameScreen final : public Screen {
     /// start as the match's events are heard, a frame at a time.
     std::unique_ptr<AudioDevice> audio_;
     game::audio::Synthesizer sound_{game::audio::SynthesizerDef{.live = true}};
-    bool padFireHeld_ = false;
 };
 
 } // namespace ui
