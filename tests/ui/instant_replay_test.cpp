@@ -33,7 +33,7 @@ TEST(InstantReplay, TheLastShotIsWatchedAgainAndTheGameWaitsForIt) {
         fs::temp_directory_path() / ("artillery-instant-" + std::to_string(::getpid()));
     fs::remove_all(settings);
     {
-        test_game::HeadlessGame game("05_castle.json", 1280, 720, settings);
+        test_game::HeadlessGame game("05_castle.json", 640, 360, settings);
         ASSERT_NE(game.screen, nullptr);
         ui::GameScreen& screen = *game.screen;
         key(screen, SDLK_z);
