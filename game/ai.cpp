@@ -70,11 +70,15 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
     AimSolution out;
     const double g = -match.world().def().forces.gravity.y;
     int bounces = 0; // contacts a trial shot flies on through
-    auto approach = [&](double angleDeg, double speed) {
+    // Past the budget a trial is a miss, not flown; the chosen path's own flight time is
+    // always measured (`budgeted` false).
+    auto approach = [&](double angleDeg, double speed, bool budgeted = true) {
+        if (budgeted && out.trialTicks >= kMaxTrialTicks) return Approach{};
         ++out.trials;
-        return closestApproach(
-            match.previewTrajectory(angleDeg, speed, 20.0, target.x, projectile, bounces), target,
-            match.world().def().tickSeconds);
+        const std::vector<Vec2> path =
+            match.previewTrajectory(angleDeg, speed, 20.0, target.x, projectile, bounces);
+        out.trialTicks += static_cast<long>(path.size());
+        return closestApproach(path, target, match.world().def().tickSeconds);
     };
     auto flown = [&](double angleDeg, double speed) { return approach(angleDeg, speed).miss; };
     if (match.ballisticOnly()) {
@@ -177,7 +181,8 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
     // to bank off, water to skip on).
     if (!(out.missM < kOnTarget)) trialSearch(2);
     bounces = found;
-    if (std::isfinite(out.missM)) out.flightSeconds = approach(out.angleDeg, out.speedMps).seconds;
+    if (std::isfinite(out.missM))
+        out.flightSeconds = approach(out.angleDeg, out.speedMps, false).seconds;
     return out;
 }
 

@@ -34,8 +34,17 @@ struct AimSolution {
     double missM = INFINITY; ///< closest approach of the chosen path to the target (0 = exact)
     bool exact = false;      ///< from the closed-form firing solution
     int trials = 0;          ///< trial shots simulated
+    long trialTicks = 0; ///< ticks of flight they simulated: kMaxTrialTicks and two trials at most
     double flightSeconds = 0.0; ///< from the muzzle to the closest approach, s
 };
+
+/// Ticks of trial flight one aim may simulate. The computer plans within one tick of
+/// play, so this bounds how long that tick takes: the most any shipped level's aim needs
+/// is 435,421 (09_tunnelling, 0.23 s in Release), and a level where no path comes
+/// near (a 20 km world without gravity, found by the level fuzzer) needed 1.7 million.
+/// Past it a trial counts as a miss and is not flown, so the search ends with the best
+/// aim found so far.
+inline constexpr long kMaxTrialTicks = 500'000;
 
 /// Best aim from the current cannon at `target`, without error. Exact when the match is
 /// ballistic-only; otherwise trial shots, of `projectile` (an index into the cannon's

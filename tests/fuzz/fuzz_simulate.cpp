@@ -28,8 +28,9 @@ namespace {
 
 constexpr std::uint64_t kTicks = 300;
 // s of wall time for one tick in the sanitized fuzz build (about ten times slower than
-// Release): the computer plans its shot within one tick, which in a 20 km world with no
-// gravity takes ~0.6 s in Release.
+// Release): the computer plans its shot within one tick, at most kMaxTrialTicks of trial
+// flight (game/ai.h: 0.2-0.3 s in Release). Before that bound, a 20 km world with no
+// gravity took 1.5 s in Release and 10.9 s here.
 constexpr double kTickBudget = 10.0;
 // s of wall time for the whole input, under libFuzzer's -timeout of 10 s (Makefile).
 constexpr double kInputBudget = 4.0;

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 using namespace game;
@@ -267,6 +268,28 @@ TEST(ComputerPlayer, TrialShotsFindTheTargetWithoutError) {
     const AimSolution aim = aimAt(m, m.cannons()[1].def.position);
     EXPECT_FALSE(aim.exact);
     EXPECT_LT(aim.missM, 1.0) << "after " << aim.trials << " trial shots";
+}
+
+// A level where no path comes near the target (a 20 km world without gravity, the target
+// at the far end, as the level fuzzer made one): every trial flies its full 20 s, and the
+// whole search would simulate 1.7 million ticks in the one tick the computer plans in.
+// It stops at the budget with the best aim it has, and the shot is fired.
+TEST(ComputerPlayer, StopsTrialShotsAtTheirBudgetWhereNoPathComesNear) {
+    const Level far = parseLevel("far.json", R"({"format": 1, "name": "far", "mode": "sandbox",
+        "world": {"min": [0, 0], "max": [20000, 10000]},
+        "physics": {"gravity": 0, "drag": false, "air_density": 0, "wind": -100},
+        "terrain": {"destructible": false, "points": [[0, 0], [20000, 0]]},
+        "cannons": [{"player": "1", "position": [20000, 0], "max_speed_mps": 2000,
+                     "speed_mps": 0, "projectiles": ["golf-ball"]}],
+        "targets": [{"position": [0, 0], "radius": 0.05}]})");
+    Match m(far);
+    const AimSolution aim = aimAt(m, m.targets()[0].position);
+    EXPECT_GE(aim.trialTicks, kMaxTrialTicks);
+    EXPECT_LE(aim.trialTicks, kMaxTrialTicks + 3 * 2400) << "past it, two trials at most";
+    EXPECT_TRUE(std::isfinite(aim.missM)) << "the best aim found before the budget";
+    m.apply(cmd(CommandKind::Aim, aim.angleDeg));
+    m.apply(cmd(CommandKind::Power, aim.speedMps));
+    EXPECT_EQ(m.apply(cmd(CommandKind::Fire)), "");
 }
 
 // The castle falls to a heavy shot and to no light one. Both shots take the same
