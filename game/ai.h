@@ -40,7 +40,7 @@ struct AimSolution {
 
 /// Ticks of trial flight one aim may simulate. The computer plans within one tick of
 /// play, so this bounds how long that tick takes: the most any shipped level's aim needs
-/// is 435,421 (09_tunnelling, 0.23 s in Release), and a level where no path comes
+/// is 435,421 (09_tunnelling, 0.22 s in Release), and a level where no path comes
 /// near (a 20 km world without gravity, found by the level fuzzer) needed 1.7 million.
 /// Past it a trial counts as a miss and is not flown, so the search ends with the best
 /// aim found so far.
