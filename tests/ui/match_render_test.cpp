@@ -193,4 +193,55 @@ TEST(MatchRender, CannonsAndTargetsAreWhereTheCameraMapsThem) {
         << "no cannon carriage where the camera maps the cannon";
 }
 
+// The launch arc ends at half a second or at the least length on screen, whichever
+// comes later: a straight path at 12 m/s, 0.1 m a tick of 1/120 s.
+TEST(LaunchArc, EndsAtHalfASecondOrTheLeastLengthOnScreenWhicheverComesLater) {
+    const double tick = 1.0 / 120.0;
+    std::vector<Vec2> path;
+    for (int i = 0; i <= 480; ++i)
+        path.push_back({0.1 * i, 0.0});
+    // 100 px a metre: 160 px is 1.6 m, 0.13 s in; the half second (tick 60) ends it.
+    EXPECT_EQ(ui::launchArcPoints(path, tick, 0.01), 61u);
+    // 0.049 m a pixel: 160 px is 7.84 m, passed at tick 79 (7.9 m), past the half second.
+    EXPECT_EQ(ui::launchArcPoints(path, tick, 0.049), 80u);
+    // 0.5 m a pixel: 160 px is 80 m, more than the path's 48 m: all of it.
+    EXPECT_EQ(ui::launchArcPoints(path, tick, 0.5), path.size());
+}
+
+// On a map seen whole, the launch arc is drawn well clear of the cannon: on the crater
+// duel (640 m between the cannons), half a second of the opening aim is about 25 px of
+// a 1280 px window, hidden under the cannon's ring, so the arc runs on to 160 px of path.
+// It stays a launch arc: it ends far short of the other cannon.
+TEST(MatchRender, LaunchArcReachesClearOfTheCannonOnAMapSeenWhole) {
+    Headless h(1280, 720);
+    ASSERT_TRUE(h.context) << "no headless GL context (OSMesa or EGL)";
+    const game::Match match(game::loadLevel(sourceDir() + "/levels/34_crater_duel.json"));
+    ui::MatchView view;
+    ui::MatchViewOptions o;
+    o.hud = false;
+    o.trajectoryPreview = false;
+    ui::Camera camera;
+    const ui::Image without = h.draw(match, view, o, &camera);
+    o.trajectoryPreview = true;
+    const ui::Image with = h.draw(match, view, o);
+    const Vec2 muzzle = camera.toPixel(match.muzzle(match.cannon().angleDeg));
+    double farthest = 0.0;
+    for (int y = 0; y < with.height; ++y)
+        for (int x = 0; x < with.width; ++x) {
+            const std::uint8_t* a = with.pixel(x, y);
+            const std::uint8_t* b = without.pixel(x, y);
+            int worst = 0;
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::abs(a[c] - b[c]));
+            if (worst > 24) farthest = std::max(farthest, std::hypot(x - muzzle.x, y - muzzle.y));
+        }
+    const double metresPerPixel = camera.metres(1.0);
+    EXPECT_LT(0.5 * match.cannon().speedMps / metresPerPixel, 40.0)
+        << "the half second alone should be short on this map, or the test shows nothing";
+    EXPECT_GT(farthest, 130.0) << "the arc's dots end " << farthest << " px from the muzzle";
+    const Vec2 other = camera.toPixel(match.cannons()[1].def.position);
+    EXPECT_LT(farthest, 0.5 * std::hypot(other.x - muzzle.x, other.y - muzzle.y))
+        << "the launch arc should not run most of the way to the other cannon";
+}
+
 } // namespace

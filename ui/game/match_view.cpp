@@ -709,26 +709,43 @@ void MatchView::drawTrails(Renderer2D& r, const Match& m) {
     }
 }
 
+std::size_t launchArcPoints(const std::vector<Vec2>& path, double tickSeconds,
+                            double metresPerPixel) {
+    const double leastLength = kPreviewArcPixels * metresPerPixel;
+    double run = 0.0;
+    for (std::size_t i = 1; i < path.size(); ++i) {
+        run += length(path[i] - path[i - 1]);
+        if (static_cast<double>(i) * tickSeconds >= kPreviewArcSeconds && run >= leastLength)
+            return i + 1;
+    }
+    return path.size();
+}
+
 void MatchView::drawPreview(Renderer2D& r, const Match& m, const PendingAim& aim, bool full) {
     const phys::WorldDef& d = m.world().def();
     const AimKey key{aim.angleDeg, aim.speedMps, m.wind(), d.forces.gravity.y, d.tickSeconds,
                      m.currentPlayer(), m.shotsFired(), static_cast<int>(d.integrator),
                      static_cast<int>(m.cannon().projectile), static_cast<int>(d.forces.drag)};
     if (!(key == previewKey_) || full != previewFull_) {
-        // The launch arc alone unless the full path is asked for (an assist).
+        // The launch arc alone unless the full path is asked for (an assist). Its length
+        // on screen follows the zoom, so the path is kept long enough for any zoom and
+        // cut where it is drawn.
         preview_ = full ? m.previewTrajectory(aim.angleDeg, aim.speedMps)
-                        : m.previewTrajectory(aim.angleDeg, aim.speedMps, kPreviewArcSeconds);
+                        : m.previewTrajectory(aim.angleDeg, aim.speedMps, kPreviewArcMostSeconds);
         previewKey_ = key;
         previewFull_ = full;
     }
+    const std::size_t shown =
+        full ? preview_.size() : launchArcPoints(preview_, d.tickSeconds, r.camera().metres(1.0));
     // Dots every ~6 px of path, fading with distance, so it reads as a guide not a line.
     double run = 0.0, next = 0.0;
     const double spacing = r.camera().metres(9.0);
-    for (std::size_t i = 1; i < preview_.size(); ++i) {
+    for (std::size_t i = 1; i < shown; ++i) {
         run += length(preview_[i] - preview_[i - 1]);
         if (run < next) continue;
         next = run + spacing;
-        const float fade = std::max(0.25f, 1.0f - static_cast<float>(i) / static_cast<float>(preview_.size()));
+        const float fade =
+            std::max(0.25f, 1.0f - static_cast<float>(i) / static_cast<float>(shown));
         r.point(preview_[i], 4.0f, kPreview.withAlpha(0.85f * fade));
     }
     if (!preview_.empty() && full) r.strokeCircle(preview_.back(), r.camera().metres(7.0), kPreview, 2.0f);

@@ -21,6 +21,7 @@
 #include "ui/render/world_view.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -61,8 +62,21 @@ struct MatchViewOptions {
     std::string notice;
 };
 
-/// How much of the path the preview shows when it is not the full one (s of flight).
+/// How much of the path the preview shows when it is not the full one, the launch arc:
+/// its first kPreviewArcSeconds of flight, or its first kPreviewArcPixels on screen
+/// where the half second is shorter. A map seen whole can be 640 m across 1,280 px, where
+/// half a second of a 32 m/s shot is 32 px of screen, most of it under the cannon's
+/// ring: a launch arc no one sees. Either way the arc ends at the first contact, and it
+/// is computed for at most kPreviewArcMostSeconds.
 inline constexpr double kPreviewArcSeconds = 0.5;
+inline constexpr double kPreviewArcPixels = 160.0;
+inline constexpr double kPreviewArcMostSeconds = 4.0;
+
+/// How many points of `path` (its start, then one a tick of tickSeconds) the launch arc
+/// shows where a pixel is metresPerPixel: up to the first point at least
+/// kPreviewArcSeconds into the flight and kPreviewArcPixels along the path, both.
+std::size_t launchArcPoints(const std::vector<phys::Vec2>& path, double tickSeconds,
+                            double metresPerPixel);
 
 /// Where the panels beside the aim readout at the bottom left start, in screen pixels:
 /// right of it, whatever the HUD's scale (the readout ends at 330 design pixels).
