@@ -102,4 +102,22 @@ TEST(TargetInset, InADuelFramesTheOtherCannon) {
     EXPECT_FALSE(mine.x >= box->first.x && mine.x <= box->second.x);
 }
 
+// The other cannon is framed standing on its ground: on the castle duel it stands on a
+// pedestal 4 m above it, which a box of the cannon alone (and its margin) left out, so the
+// close-up showed a cannon on a column in the sky.
+TEST(TargetInset, InADuelFramesTheGroundTheOtherCannonStandsOn) {
+    const game::Match m(game::loadLevel(sourceDir() + "/levels/37_castle_duel.json"));
+    const auto box = ui::aimedAtBox(m);
+    ASSERT_TRUE(box);
+    const Vec2 other = m.cannons()[1].def.position;
+    ASSERT_NE(m.cannons()[1].def.player, m.cannon().def.player);
+    const double ground = m.terrain().heightAt(other.x);
+    ASSERT_GT(other.y - ground, 2.0 * game::kCannonRadius) << "the cannon stands on a pedestal";
+    EXPECT_LE(box->first.y, ground);
+    const auto inset = ui::targetInset(m, ui::levelCamera(m, 1280, 720));
+    ASSERT_TRUE(inset);
+    EXPECT_TRUE(inside(inset->camera, {other.x, ground}));
+    EXPECT_TRUE(inside(inset->camera, other));
+}
+
 } // namespace

@@ -48,8 +48,12 @@ std::optional<std::pair<Vec2, Vec2>> aimedAtBox(const game::Match& m) {
     for (std::size_t i = 0; i < m.cannons().size(); ++i) {
         const game::CannonState& c = m.cannons()[i];
         const bool opponent = c.def.player != m.cannon().def.player;
-        if (m.level().mode == game::Mode::Duel && opponent && c.hitPoints > 0)
+        if (m.level().mode == game::Mode::Duel && opponent && c.hitPoints > 0) {
             box.add(c.def.position, game::kCannonRadius);
+            // With the ground it stands on (and its pedestal, where it stands above it): a
+            // cannon framed alone floats in the sky, and where the shell must land is not shown.
+            box.add({c.def.position.x, m.terrain().heightAt(c.def.position.x)});
+        }
     }
     if (box.empty()) return std::nullopt;
     // The structure the targets stand in reads as one thing: take in every block that
