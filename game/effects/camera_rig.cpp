@@ -25,6 +25,11 @@ void CameraRig::zoomBy(double factor) {
     zoom_ *= factor;
 }
 
+void CameraRig::setCoveredBottom(double fraction) {
+    // At most half: what is left must still hold a shot worth following.
+    coveredBottom_ = std::isfinite(fraction) ? std::clamp(fraction, 0.0, 0.5) : 0.0;
+}
+
 void CameraRig::approach(Vec2 target, double zoom, double tau, double dt) {
     const double k = 1.0 - std::exp(-dt / tau);
     aim_ = target;
@@ -58,14 +63,15 @@ void CameraRig::tick(const Match& m) {
             hi = {std::max(hi.x, t.where.x + t.reach), std::max(hi.y, t.where.y + t.reach)};
         }
         const double margin = def_.followMarginPx;
+        const double openPx = viewHeightPx_ * (1.0 - coveredBottom_);
         const double fit = std::min((viewWidthPx_ - 2.0 * margin) / std::max(1e-6, hi.x - lo.x),
-                                    (viewHeightPx_ - 2.0 * margin) / std::max(1e-6, hi.y - lo.y));
+                                    (openPx - 2.0 * margin) / std::max(1e-6, hi.y - lo.y));
         const double zoom = std::clamp(fit, home, home * def_.impactZoom);
-        // The lowest of them a quarter of the way up the picture (the ground low, as at
-        // home), unless the shell needs the view higher to stay in it.
-        const double visible = viewHeightPx_ / zoom, m = margin / zoom;
+        // The lowest of them a quarter of the way up the open picture (the ground low, as
+        // at home), unless the shell needs the view higher to stay in it.
+        const double visible = openPx / zoom, m = margin / zoom;
         const double y = std::max(lo.y + 0.25 * visible, hi.y + m - 0.5 * visible);
-        approach({0.5 * (lo.x + hi.x), y}, zoom, def_.followSeconds, dt);
+        approach({0.5 * (lo.x + hi.x), y - openCentreAbove(zoom)}, zoom, def_.followSeconds, dt);
         return;
     }
     // The shot's end from the match's events (not from having watched it fall: a viewer
@@ -85,10 +91,11 @@ void CameraRig::tick(const Match& m) {
     shellSeen_ = false;
     if (phase_ == Phase::Following) phase_ = Phase::Returning; // gone without a shot's end
     if (phase_ == Phase::Holding) {
-        // The impact low in the picture, so what it threw up is in view.
+        // The impact low in the open picture, so what it threw up is in view.
         const double zoom = home * def_.impactZoom;
-        const double visibleHeight = viewHeightPx_ / zoom; // m
-        approach(lastShell_ + Vec2{0.0, 0.15 * visibleHeight}, zoom, def_.followSeconds, dt);
+        const double visibleHeight = viewHeightPx_ * (1.0 - coveredBottom_) / zoom; // m
+        approach(lastShell_ + Vec2{0.0, 0.15 * visibleHeight - openCentreAbove(zoom)}, zoom,
+                 def_.followSeconds, dt);
         if (static_cast<double>(m.tick() - heldShot_) * tick >= def_.holdSeconds)
             phase_ = Phase::Returning;
     } else if (phase_ == Phase::Returning || phase_ == Phase::Home) {

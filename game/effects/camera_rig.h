@@ -42,6 +42,10 @@ class CameraRig {
     void tick(const Match& match);
     /// The player's wheel: multiplies every zoom from now on (home's too).
     void zoomBy(double factor);
+    /// The lowest `fraction` of the view is covered (by the window's panels along its
+    /// bottom): the shell, the targets and the impact are framed in the view above it.
+    /// Home is the level's framing, which keeps its own soil band under them.
+    void setCoveredBottom(double fraction);
 
     phys::Vec2 center() const { return center_; }
     double pixelsPerMetre() const { return zoom_; }
@@ -51,6 +55,11 @@ class CameraRig {
 
   private:
     void approach(phys::Vec2 target, double zoom, double tau, double dt);
+    /// How far the middle of the open picture (above the covered bottom) lies above the
+    /// view's centre at `zoom`, m.
+    double openCentreAbove(double zoom) const {
+        return 0.5 * coveredBottom_ * viewHeightPx_ / zoom;
+    }
 
     CameraRigDef def_;
     Phase phase_ = Phase::Home;
@@ -61,6 +70,7 @@ class CameraRig {
     std::uint64_t lastTick_ = 0;
     bool started_ = false;
     int viewWidthPx_ = 1280, viewHeightPx_ = 720;
+    double coveredBottom_ = 0.0; ///< fraction of the view's height
     phys::Vec2 lastShell_;
 };
 

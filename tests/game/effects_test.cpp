@@ -338,6 +338,65 @@ TEST(CameraRig, ConvergesToTheShellAndReturnsHome) {
     EXPECT_NEAR(rig.pixelsPerMetre(), 5.0, 1e-5);
 }
 
+// With the bottom of the view covered by panels (the Match panel as it opens covers the
+// lowest 37 % at 1280x720), the shell and the impact are framed in the open part above:
+// the shell stays in it while followed, and the impact is held low in it, 15 % of the
+// open height below its middle.
+TEST(CameraRig, FramesTheShotAboveTheCoveredBottom) {
+    Level l = level("01_earth_basics.json");
+    l.physics.windMin = l.physics.windMax = 0.0;
+    Match m(l);
+    CameraRig rig;
+    const int W = 1280, H = 720;
+    const double covered = 0.37;
+    rig.setHome({120.0, 40.0}, 5.0, W, H);
+    rig.setCoveredBottom(covered);
+    shoot(m, 40.0, 32.0);
+    // Height above the covered band, px (negative: under the panels).
+    auto aboveBand = [&](phys::Vec2 p) {
+        const double bottom = rig.center().y - 0.5 * H / rig.pixelsPerMetre();
+        return (p.y - bottom) * rig.pixelsPerMetre() - covered * H;
+    };
+    int followed = 0;
+    double lowest = INFINITY;
+    while (m.shell()) {
+        m.step();
+        rig.tick(m);
+        if (!m.shell() || ++followed < 60) continue; // half a second to catch up from home
+        lowest = std::min(lowest, aboveBand(m.world().particles.position(*m.shell())));
+    }
+    ASSERT_GT(followed, 120);
+    EXPECT_GT(lowest, 0.0) << "the shell went under the covered band";
+    phys::Vec2 burst;
+    for (const GameEvent& e : m.events())
+        if (e.kind == EventKind::Burst) burst = e.where;
+    ASSERT_GT(burst.x, 0.0) << "the cannonball burst";
+    while (rig.phase() == CameraRig::Phase::Holding) {
+        m.step();
+        rig.tick(m);
+    }
+    const double open = (1.0 - covered) * H;
+    EXPECT_NEAR(aboveBand(burst), 0.5 * open - 0.15 * open, 0.05 * H);
+
+    // Nothing covered: the framing of ConvergesToTheShellAndReturnsHome, bit for bit.
+    Match a(l), b(l);
+    CameraRig plain, uncovered;
+    plain.setHome({120.0, 40.0}, 5.0, W, H);
+    uncovered.setHome({120.0, 40.0}, 5.0, W, H);
+    uncovered.setCoveredBottom(0.0);
+    shoot(a, 40.0, 32.0);
+    shoot(b, 40.0, 32.0);
+    for (int n = 0; n < 600; ++n) {
+        a.step();
+        b.step();
+        plain.tick(a);
+        uncovered.tick(b);
+        ASSERT_EQ(plain.center().x, uncovered.center().x);
+        ASSERT_EQ(plain.center().y, uncovered.center().y);
+        ASSERT_EQ(plain.pixelsPerMetre(), uncovered.pixelsPerMetre());
+    }
+}
+
 TEST(CameraRig, TheWheelZoomsHomeToo) {
     Match m(level("01_earth_basics.json"));
     CameraRig rig;

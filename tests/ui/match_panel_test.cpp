@@ -3,6 +3,8 @@
 // practice level must not cut a duel's rewind slider off, nor push the panel off the
 // bottom of the screen.
 #include "headless_game.h"
+#include "ui/game/match_view.h"
+#include "ui/render/pixel_rect.h"
 
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -55,5 +57,29 @@ TEST(MatchPanel, TheTopRightPanelsOpenUnderTheWindGaugeOnANarrowScreen) {
     EXPECT_GE(top(800, 600, "Stats"), 42.5f + 34.0f);
     EXPECT_EQ(top(1280, 720, "Physics"), 10.0f);
     EXPECT_EQ(top(1280, 720, "Stats"), 44.0f);
+    fs::remove_all(settings);
+}
+
+// The follow camera keeps the shot above the panels along the bottom: the Match panel as
+// it opens (its top edge) and the aim readout (118 design pixels); moved up off the
+// bottom, the Match panel is left out and the readout alone counts.
+TEST(MatchPanel, TheCoveredBottomIsTheMatchPanelsTopWhereItOpens) {
+    const fs::path settings =
+        fs::temp_directory_path() / ("artillery-match-covered-" + std::to_string(::getpid()));
+    fs::remove_all(settings);
+    {
+        test_game::HeadlessGame duel("36_bridge_duel.json", 1280, 720, settings);
+        ASSERT_NE(duel.screen, nullptr);
+        const ImGuiWindow* w = ImGui::FindWindowByName("Match");
+        ASSERT_NE(w, nullptr);
+        const ui::PixelRect rect{w->Pos.x, w->Pos.y, w->Pos.x + w->Size.x, w->Pos.y + w->Size.y};
+        const double covered = ui::coveredBottom(rect, 1280.0, 720.0);
+        EXPECT_DOUBLE_EQ(covered, (720.0 - w->Pos.y) / 720.0);
+        EXPECT_GT(covered, 118.0 / 720.0) << "the Match panel stands taller than the readout";
+        const ui::PixelRect movedUp{rect.x0, 100.0, rect.x1, 100.0 + (rect.y1 - rect.y0)};
+        EXPECT_DOUBLE_EQ(ui::coveredBottom(movedUp, 1280.0, 720.0), 118.0 / 720.0);
+        // At 4K the readout scales with the HUD: the same fraction.
+        EXPECT_DOUBLE_EQ(ui::coveredBottom({}, 3840.0, 2160.0), 118.0 / 720.0);
+    }
     fs::remove_all(settings);
 }

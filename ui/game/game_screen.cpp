@@ -697,6 +697,8 @@ void GameScreen::drawPanels() {
         game::Match& m = session_->match();
         const MatchPanelRequests req = matchPanel(m, humanTurn(), settings_, settings_.difficulty,
                                                   hotseatInUse(), rewind_, branchNote_);
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        rig_.setCoveredBottom(coveredBottom(req.rect, display.x, display.y));
         if (req.projectile)
             if (auto c = AimInput::select(m.cannon(), *req.projectile)) submit(*c);
         if (req.fire && humanTurn()) submit(aim_.fire(m.cannon()));
@@ -704,7 +706,6 @@ void GameScreen::drawPanels() {
         submit(sandboxTools_.panel(m));
         sceneToEditor = sandboxTools_.takeSaveAsLevel();
         if (playtest_) {
-            const ImVec2 display = ImGui::GetIO().DisplaySize;
             // Under the wind gauge at the top centre.
             const auto underGauge = static_cast<float>(76.0 * hudScale(display.x, display.y));
             ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, underGauge), ImGuiCond_Always,

@@ -596,6 +596,13 @@ void drawHud(Renderer2D& r, const Match& m, const MatchViewOptions& o, const Pen
 
 } // namespace
 
+double coveredBottom(const PixelRect& matchPanel, double width, double height) {
+    if (!(height > 0.0)) return 0.0;
+    double top = height - 118.0 * hudScale(width, height); // the aim readout's
+    if (matchPanel.y1 >= 0.9 * height) top = std::min(top, matchPanel.y0);
+    return std::clamp((height - top) / height, 0.0, 1.0);
+}
+
 double cannonDrawScale(const Camera& camera) {
     return std::max(1.0, 24.0 / (1.5 * camera.pixelsPerMetre));
 }

@@ -17,6 +17,7 @@
 #include "game/match.h"
 #include "ui/render/camera.h"
 #include "ui/render/design_canvas.h"
+#include "ui/render/pixel_rect.h"
 #include "ui/render/renderer2d.h"
 #include "ui/render/world_view.h"
 
@@ -83,6 +84,11 @@ std::size_t launchArcPoints(const std::vector<phys::Vec2>& path, double tickSeco
 inline float besideAimReadout(double width, double height) {
     return static_cast<float>(342.0 * hudScale(width, height));
 }
+/// How much of the screen's height, from the bottom, the panels along it cover (a
+/// fraction, for the follow camera to frame the shot above it): the aim readout, 118
+/// design pixels tall, and the Match panel (`matchPanel`, in the same pixels as width and
+/// height) while it stands on the bottom, as it opens; moved up or folded, it is left out.
+double coveredBottom(const PixelRect& matchPanel, double width, double height);
 /// The HUD's margin to the screen's edges (12 design pixels), which the panels beside it
 /// keep too.
 inline float hudMargin(double width, double height) {
