@@ -20,6 +20,18 @@ void CameraRig::setHome(Vec2 center, double pixelsPerMetre, int viewWidthPx, int
     phase_ = Phase::Home;
 }
 
+void CameraRig::moveHome(Vec2 center, double pixelsPerMetre, bool jump) {
+    homeCenter_ = center;
+    homeZoom_ = pixelsPerMetre;
+    if (phase_ != Phase::Home) return; // it goes to the new home once the shot is over
+    if (jump) {
+        center_ = aim_ = center;
+        zoom_ = pixelsPerMetre * userZoom_;
+    } else {
+        phase_ = Phase::Returning;
+    }
+}
+
 void CameraRig::zoomBy(double factor) {
     userZoom_ *= factor;
     zoom_ *= factor;

@@ -40,6 +40,9 @@ class CameraRig {
     /// After each tick of `match`, or once a frame: it moves by the ticks since the last
     /// call.
     void tick(const Match& match);
+    /// Moves home to a new framing (the window's panels changed): the view glides there
+    /// as it returns, or jumps with `jump`. The player's wheel zoom is kept.
+    void moveHome(phys::Vec2 center, double pixelsPerMetre, bool jump);
     /// The player's wheel: multiplies every zoom from now on (home's too).
     void zoomBy(double factor);
     /// The lowest `fraction` of the view is covered (by the window's panels along its

@@ -356,9 +356,23 @@ bool GameScreen::editorEvent(const SDL_Event& e) {
 
 // ---- camera ---------------------------------------------------------------------------
 void GameScreen::frameLevel(const game::Match& m) {
-    camera_ = levelCamera(m, context_.width(), context_.height());
+    camera_ = levelCamera(m, context_.width(), context_.height(), coveredBottom_);
     rig_.setHome(camera_.center, camera_.pixelsPerMetre, camera_.width, camera_.height);
     rig_.tick(m); // from this tick on
+    homeJumpFrames_ = 3;
+}
+
+void GameScreen::keepClearOfPanels(const game::Match& m, double covered) {
+    rig_.setCoveredBottom(covered);
+    // A line more or less in the Match panel (a hint's, a duel's) moves home; a pixel does not.
+    if (std::abs(covered - coveredBottom_) < 0.005) return;
+    coveredBottom_ = covered;
+    const Camera home = levelCamera(m, context_.width(), context_.height(), coveredBottom_);
+    rig_.moveHome(home.center, home.pixelsPerMetre, homeJumpFrames_ > 0);
+    if (following() && rig_.phase() == game::CameraRig::Phase::Home) {
+        camera_.center = rig_.center();
+        camera_.pixelsPerMetre = rig_.pixelsPerMetre();
+    }
 }
 
 bool GameScreen::following() const { return !editing_ && settings_.cameraFollow && !cameraMoved_; }
@@ -698,7 +712,8 @@ void GameScreen::drawPanels() {
         const MatchPanelRequests req = matchPanel(m, humanTurn(), settings_, settings_.difficulty,
                                                   hotseatInUse(), rewind_, branchNote_);
         const ImVec2 display = ImGui::GetIO().DisplaySize;
-        rig_.setCoveredBottom(coveredBottom(req.rect, display.x, display.y));
+        keepClearOfPanels(m, coveredBottom(req.rect, display.x, display.y));
+        homeJumpFrames_ = std::max(0, homeJumpFrames_ - 1);
         if (req.projectile)
             if (auto c = AimInput::select(m.cannon(), *req.projectile)) submit(*c);
         if (req.fire && humanTurn()) submit(aim_.fire(m.cannon()));

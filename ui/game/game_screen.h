@@ -96,6 +96,8 @@ class GameScreen final : public Screen {
     std::string banner() const;
     /// The match being played, if any (null on the level select screen or in a replay).
     const game::Session* session() const { return session_.get(); }
+    /// The view of the match on screen now (before a blast's shake).
+    const Camera& camera() const { return camera_; }
     /// The refused command the HUD shows now ("spawn: ..."), "" for none.
     std::string notice() const { return noticeSeconds_ > 0.0 ? notice_ : std::string(); }
     /// The replay being watched, if any.
@@ -142,6 +144,9 @@ class GameScreen final : public Screen {
     void cameraEvent(const SDL_Event& e);
     /// The level's framing, and the camera rig's home.
     void frameLevel(const game::Match& m);
+    /// The panels along the bottom now cover `covered` of the height: the follow camera
+    /// frames shots above it, and home moves so nothing to aim at stands under them.
+    void keepClearOfPanels(const game::Match& m, double covered);
     /// The camera follows the shell (the setting is on and the player has not panned).
     bool following() const;
     void followShot(const game::Match& m);
@@ -216,6 +221,12 @@ class GameScreen final : public Screen {
     StatsPanel statsPanel_; ///< Compare, energy and momentum, Charts
     Camera camera_;
     game::CameraRig rig_; ///< follows the shell, frames the impact, returns
+    /// How much of the bottom the panels there covered when the level was last framed (a
+    /// fraction of the height), and for how many more frames home jumps to a new framing
+    /// rather than gliding: ImGui sizes a panel over its first two frames, and a level that
+    /// just opened should not be seen moving into place.
+    double coveredBottom_ = 0.0;
+    int homeJumpFrames_ = 3;
     bool cameraMoved_ = false;
     bool panning_ = false;
     bool resultRecorded_ = false;

@@ -617,7 +617,7 @@ std::string defaultPlayerName(const std::string& player) {
 }
 
 // ---- camera -------------------------------------------------------------------------------
-Camera levelCamera(const Match& m, int width, int height) {
+Camera levelCamera(const Match& m, int width, int height, double coveredBottom) {
     const game::Level& l = m.level();
     double ground = INFINITY, top = -INFINITY;
     for (const Vec2 p : m.terrain().points()) ground = std::min(ground, p.y), top = std::max(top, p.y);
@@ -645,15 +645,19 @@ Camera levelCamera(const Match& m, int width, int height) {
     // The whole width of the level, with a band of soil under the lowest ground (the
     // bottom HUD sits on it) and the sky above for the arcs. When the things to see are
     // taller than the width allows, the height decides and the view is centred on x.
+    // The soil is at least as deep as the panels along the bottom reach, and 3 % more
+    // for the bases of what stands on the lowest ground.
+    const double soilFraction =
+        std::isfinite(coveredBottom) ? std::max(0.22, std::min(coveredBottom, 0.5) + 0.03) : 0.22;
     double visibleHeight = (xMax - xMin) * aspect;
-    const double soil = 0.22 * visibleHeight;
+    const double soil = soilFraction * visibleHeight;
     const double needed = (top - ground) * 1.35 + soil;
     if (needed > visibleHeight) visibleHeight = needed;
     Camera cam;
     cam.width = width;
     cam.height = height;
     cam.pixelsPerMetre = height / visibleHeight;
-    const double bottom = ground - 0.22 * visibleHeight;
+    const double bottom = ground - soilFraction * visibleHeight;
     cam.center = {0.5 * (xMin + xMax), bottom + 0.5 * visibleHeight};
     // A view wider than the things to see (the height decided) slides inside the level's
     // bounds where they are wide enough: what lies outside them cannot be reached (a

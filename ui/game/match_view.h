@@ -124,8 +124,11 @@ phys::Color targetWhite();
 std::string defaultPlayerName(const std::string& player);
 
 /// A camera that shows the level: its whole width, the ground near the bottom, and
-/// every cannon, target and block inside.
-Camera levelCamera(const game::Match& match, int width, int height);
+/// every cannon, target and block inside. Under the lowest ground lies a band of soil,
+/// 22 % of the height, or deeper where the window's panels cover more of the bottom
+/// (`coveredBottom`, a fraction of the height: see coveredBottom()), so that nothing to
+/// aim at or fire from stands under them.
+Camera levelCamera(const game::Match& match, int width, int height, double coveredBottom = 0.0);
 
 class MatchView {
   public:
