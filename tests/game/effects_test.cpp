@@ -276,6 +276,26 @@ TEST(ShotFeedback, ALongShotSaysLong) {
     EXPECT_GT(n.where.x, 210.0);
 }
 
+namespace {
+
+/// Where the last shell burst (x = 0 before any did).
+phys::Vec2 lastBurst(const Match& m) {
+    phys::Vec2 burst;
+    for (const GameEvent& e : m.events())
+        if (e.kind == EventKind::Burst) burst = e.where;
+    return burst;
+}
+
+/// Plays on while the camera holds on the impact.
+void holdOnTheImpact(Match& m, CameraRig& rig) {
+    while (rig.phase() == CameraRig::Phase::Holding) {
+        m.step();
+        rig.tick(m);
+    }
+}
+
+} // namespace
+
 // The camera keeps the shell in view while it flies and closes in on it as it nears the
 // targets, holds on the impact, then goes home along
 // c(n) = home + (c0 - home) exp(-n dt / tau).
@@ -305,14 +325,9 @@ TEST(CameraRig, ConvergesToTheShellAndReturnsHome) {
     ASSERT_GT(followed, 120);
     EXPECT_GT(rig.pixelsPerMetre(), 5.0 * 1.3) << "closed in on the shell near the first target";
     EXPECT_EQ(rig.phase(), CameraRig::Phase::Holding);
-    phys::Vec2 burst;
-    for (const GameEvent& e : m.events())
-        if (e.kind == EventKind::Burst) burst = e.where;
+    const phys::Vec2 burst = lastBurst(m);
     ASSERT_GT(burst.x, 0.0) << "the cannonball burst";
-    while (rig.phase() == CameraRig::Phase::Holding) {
-        m.step();
-        rig.tick(m);
-    }
+    holdOnTheImpact(m, rig);
     // The impact framed low in the picture: the view's centre 15 % of its height above it.
     const double above = 0.15 * H / rig.pixelsPerMetre();
     EXPECT_NEAR(rig.center().x, burst.x, 0.05 * W / rig.pixelsPerMetre());
@@ -367,14 +382,9 @@ TEST(CameraRig, FramesTheShotAboveTheCoveredBottom) {
     }
     ASSERT_GT(followed, 120);
     EXPECT_GT(lowest, 0.0) << "the shell went under the covered band";
-    phys::Vec2 burst;
-    for (const GameEvent& e : m.events())
-        if (e.kind == EventKind::Burst) burst = e.where;
+    const phys::Vec2 burst = lastBurst(m);
     ASSERT_GT(burst.x, 0.0) << "the cannonball burst";
-    while (rig.phase() == CameraRig::Phase::Holding) {
-        m.step();
-        rig.tick(m);
-    }
+    holdOnTheImpact(m, rig);
     const double open = (1.0 - covered) * H;
     EXPECT_NEAR(aboveBand(burst), 0.5 * open - 0.15 * open, 0.05 * H);
 
