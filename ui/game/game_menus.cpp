@@ -459,10 +459,13 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
         ImGui::SetTooltip("Drag back and let go: the match returns to that moment and you play on "
                           "from there (a new branch). Backspace: 1 s back.");
     ImGui::PopItemWidth();
-    // Once a shot has landed: see it again, from half a second before it left.
-    if (m.shotsFired() > 0 && !m.shell() &&
-        ImGui::Button("Watch the last shot again (Z)", ImVec2(panelPx(226), 0)))
+    // Once a shot has landed: see it again, from half a second before it left. Shown
+    // from the start, greyed until then, so the panel keeps its height (and home, which
+    // keeps clear of it, its place) through the first shot.
+    ImGui::BeginDisabled(m.shotsFired() == 0 || m.shell().has_value());
+    if (ImGui::Button("Watch the last shot again (Z)", ImVec2(panelPx(226), 0)))
         req.watchLastShot = true;
+    ImGui::EndDisabled();
     if (!branch.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, kGoldText);
         ImGui::TextWrapped("%s", branch.c_str());
