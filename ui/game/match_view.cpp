@@ -596,6 +596,26 @@ void drawHud(Renderer2D& r, const Match& m, const MatchViewOptions& o, const Pen
 
 } // namespace
 
+namespace {
+
+/// The lowest point of what the player aims at or fires from (cannons, targets, blocks,
+/// blobs), m; infinity where there is none.
+double lowestThingStanding(const Match& m) {
+    const game::Level& l = m.level();
+    double lowest = INFINITY;
+    for (const auto& c : m.cannons())
+        lowest = std::min(lowest, c.def.position.y - game::kCannonRadius);
+    for (const auto& t : m.targets())
+        lowest = std::min(lowest, t.position.y - t.def.radius);
+    for (const auto& b : l.blocks)
+        lowest = std::min(lowest, b.position.y - 0.5 * b.size.y);
+    for (const auto& b : l.blobs)
+        lowest = std::min(lowest, b.center.y - b.radius);
+    return lowest;
+}
+
+} // namespace
+
 double coveredBottom(const PixelRect& matchPanel, double width, double height) {
     if (!(height > 0.0)) return 0.0;
     double top = height - 118.0 * hudScale(width, height); // the aim readout's
@@ -645,14 +665,24 @@ Camera levelCamera(const Match& m, int width, int height, double coveredBottom) 
     // The whole width of the level, with a band of soil under the lowest ground (the
     // bottom HUD sits on it) and the sky above for the arcs. When the things to see are
     // taller than the width allows, the height decides and the view is centred on x.
-    // The soil is at least as deep as the panels along the bottom reach, and 3 % more
-    // for the bases of what stands on the lowest ground.
-    const double soilFraction =
-        std::isfinite(coveredBottom) ? std::max(0.22, std::min(coveredBottom, 0.5) + 0.03) : 0.22;
-    double visibleHeight = (xMax - xMin) * aspect;
-    const double soil = soilFraction * visibleHeight;
-    const double needed = (top - ground) * 1.35 + soil;
-    if (needed > visibleHeight) visibleHeight = needed;
+    // The soil is deeper where the panels along the bottom reach higher: what stands
+    // lowest (a cannon, a target, a block, a blob: not a pit's floor) is 3 % of the
+    // height above them.
+    const double lowest = lowestThingStanding(m);
+    const double clear = std::isfinite(coveredBottom) ? std::min(coveredBottom, 0.5) + 0.03 : 0.0;
+    auto soilFor = [&](double visible) {
+        const double standing = std::isfinite(lowest) ? std::max(0.0, lowest - ground) : 0.0;
+        return std::max(0.22, clear - standing / visible);
+    };
+    const double widthHeight = (xMax - xMin) * aspect;
+    double visibleHeight = widthHeight, soilFraction = 0.22;
+    for (int pass = 0; pass < 2; ++pass) { // the soil sets the height, which sets the soil
+        soilFraction = std::max(soilFraction, soilFor(visibleHeight));
+        // Room for the things to see above the soil, whatever its depth.
+        const double needed = std::max((top - ground) * 1.35 + soilFraction * widthHeight,
+                                       (top - ground) / (1.0 - soilFraction));
+        visibleHeight = std::max(widthHeight, needed);
+    }
     Camera cam;
     cam.width = width;
     cam.height = height;

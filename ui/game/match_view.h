@@ -125,7 +125,7 @@ std::string defaultPlayerName(const std::string& player);
 
 /// A camera that shows the level: its whole width, the ground near the bottom, and
 /// every cannon, target and block inside. Under the lowest ground lies a band of soil,
-/// 22 % of the height, or deeper where the window's panels cover more of the bottom
+/// 22 % of the height, or deeper where the window's panels cover the bottom higher
 /// (`coveredBottom`, a fraction of the height: see coveredBottom()), so that nothing to
 /// aim at or fire from stands under them.
 Camera levelCamera(const game::Match& match, int width, int height, double coveredBottom = 0.0);
