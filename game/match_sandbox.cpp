@@ -28,26 +28,33 @@ bool insideBox(Vec2 local, Vec2 size) {
     return std::abs(local.x) <= 0.5 * size.x + 0.05 && std::abs(local.y) <= 0.5 * size.y + 0.05;
 }
 
+/// `p`, or where it lies under the ground, straight above it at `clearance` over the
+/// ground's surface. The ground is a surface, not a solid: a body made under it falls
+/// away under the world, so a click on the ground puts what it spawns on the ground.
+Vec2 onOrAboveGround(const Heightfield& ground, Vec2 p, double clearance) {
+    return {p.x, std::max(p.y, ground.heightAt(p.x) + clearance)};
+}
+
 } // namespace
 
 std::string Match::spawn(const Command& cmd) {
-    const Vec2 at = cmd.at;
     auto inside = [&](Vec2 p) {
         return p.x >= level_.worldMin.x && p.x <= level_.worldMax.x && p.y >= level_.worldMin.y &&
                p.y <= level_.worldMax.y;
     };
-    if (!inside(at)) return "spawn point is outside the world";
+    if (!inside(cmd.at)) return "spawn point is outside the world";
     if (world_.particles.count() >= kMaxSandboxParticles)
         return "the sandbox is full (" + std::to_string(kMaxSandboxParticles) + " particles)";
     const double size = cmd.number;
     const std::string& what = cmd.text;
+    Vec2 at = onOrAboveGround(terrain_, cmd.at, 0.0);
 
     if (what == "block") {
         if (blocks_.size() >= kMaxSandboxBlocks)
             return "the sandbox is full (" + std::to_string(kMaxSandboxBlocks) + " blocks)";
         Block b;
-        b.position = at;
         b.size = Vec2{1.0, 1.0} * (size > 0.0 ? size : 1.0);
+        b.position = onOrAboveGround(terrain_, at, 0.5 * b.size.y);
         addBlock(b);
     } else if (what == "rope" || what == "spring") {
         if (!inside(cmd.to)) return "the other end is outside the world";
@@ -55,7 +62,7 @@ std::string Match::spawn(const Command& cmd) {
             // Pinned at `at`, free at `to`, or tied to a block that `to` lies in.
             Rope r;
             r.from = at;
-            r.to = cmd.to;
+            r.to = onOrAboveGround(terrain_, cmd.to, 0.0);
             r.segments = std::clamp(static_cast<int>(std::lround(length(r.to - r.from) / 0.5)), 2, 100);
             r.pinTo = false;
             r.massPerSegment = 2.0; // a 600 kg block stays within 1000 times a link's mass
@@ -67,26 +74,32 @@ std::string Match::spawn(const Command& cmd) {
         } else {
             // A tennis ball hanging on a spring from the anchor at `at` (period ~1 s).
             const ProjectilePreset ball = projectileFromName("tennis-ball").value();
-            ParticleDef pd = particleDef(ball, cmd.to, {});
+            const Vec2 hung = onOrAboveGround(terrain_, cmd.to, 0.5 * ball.diameter);
+            ParticleDef pd = particleDef(ball, hung, {});
             pd.material = projectileMaterial(world_.materials, ball);
             const ParticleId id = world_.particles.add(pd);
             Spring s;
             s.a = id;
             s.anchor = at;
-            s.restLength = length(cmd.to - at);
+            s.restLength = length(hung - at);
             const double m = 1.0 / world_.particles.invMass[id];
             s.stiffness = m * 6.0 * 6.0;
             s.damping = 2.0 * 0.02 * m * 6.0;
             world_.springs.push_back(s);
         }
     } else if (what == "cloth") {
-        addCloth(at, size > 0.0 ? size : 4.0);
+        // Hung from its top row at `at`: its bottom row over the ground at both ends.
+        const double side = size > 0.0 ? size : 4.0;
+        const double under = std::max(terrain_.heightAt(at.x), terrain_.heightAt(at.x + side));
+        at.y = std::max(at.y, under + side + 0.1);
+        addCloth(at, side);
     } else if (what == "blob") {
         Blob b;
-        b.center = at;
         b.radius = size > 0.0 ? 0.5 * size : 1.0;
+        b.center = onOrAboveGround(terrain_, at, b.radius + 0.1);
         addBlob(b);
     } else if (const auto preset = projectileFromName(what)) {
+        at = onOrAboveGround(terrain_, at, 0.5 * preset->diameter);
         ParticleDef pd = particleDef(*preset, at, {});
         pd.material = projectileMaterial(world_.materials, *preset);
         world_.particles.add(pd);

@@ -153,3 +153,26 @@ TEST(Sandbox, NoShotBudget) {
     }
     EXPECT_FALSE(m.over());
 }
+
+// A click on the ground puts what it spawns on the ground: the ground is a surface, and
+// a block or a ball made under it fell away under the world. Each settles where it was
+// put, resting on the flat ground at y = 0.
+TEST(Sandbox, WhatIsSpawnedUnderTheGroundStandsOnIt) {
+    Match m(flatLevel("sandbox"));
+    ASSERT_EQ(m.apply(at(CommandKind::Spawn, {0, -2}, "block")), "");
+    ASSERT_EQ(m.apply(at(CommandKind::Spawn, {10, -0.5}, "steel-ball")), "");
+    ASSERT_EQ(m.blocks().size(), 1u);
+    run(m, 2.0);
+    const phys::RigidBodyState block = m.rigid().state(m.blocks()[0].body);
+    EXPECT_NEAR(block.position.x, 0.0, 1e-3);
+    EXPECT_NEAR(block.position.y, 0.5, 0.02) << "a 1 m block resting on the ground";
+    const phys::ParticleSet& ps = m.world().particles;
+    bool ballFound = false;
+    for (std::size_t i = 0; i < ps.slots(); ++i)
+        if (ps.flags[i] & phys::kAlive) {
+            ballFound = true;
+            EXPECT_NEAR(ps.px[i], 10.0, 1e-3);
+            EXPECT_NEAR(ps.py[i], ps.radius[i], 0.01) << "the ball resting on the ground";
+        }
+    EXPECT_TRUE(ballFound);
+}
