@@ -363,12 +363,14 @@ void GameScreen::frameLevel(const game::Match& m) {
 }
 
 void GameScreen::keepClearOfPanels(const game::Match& m, double covered) {
+    const bool mayJump = homeJumpFrames_ > 0;
+    homeJumpFrames_ = std::max(0, homeJumpFrames_ - 1); // called once a frame
     rig_.setCoveredBottom(covered);
-    // A line more or less in the Match panel (a hint's, a duel's) moves home; a pixel does not.
+    // A line more or less in the panel (a hint's, a duel's) moves home; a pixel does not.
     if (std::abs(covered - coveredBottom_) < 0.005) return;
     coveredBottom_ = covered;
     const Camera home = levelCamera(m, context_.width(), context_.height(), coveredBottom_);
-    rig_.moveHome(home.center, home.pixelsPerMetre, homeJumpFrames_ > 0);
+    rig_.moveHome(home.center, home.pixelsPerMetre, mayJump);
     if (following() && rig_.phase() == game::CameraRig::Phase::Home) {
         camera_.center = rig_.center();
         camera_.pixelsPerMetre = rig_.pixelsPerMetre();
@@ -697,6 +699,8 @@ void GameScreen::drawPanels() {
     if (helpOpen_) helpOverlay(helpOpen_);
     if (viewer_ && overlay_ == Overlay::None) {
         const ReplayRequests req = viewer_->panel();
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        keepClearOfPanels(viewer_->match(), coveredBottom(req.rect, display.x, display.y));
         if (req.takeOver)
             takeOverReplay();
         else if (req.close)
@@ -713,7 +717,6 @@ void GameScreen::drawPanels() {
                                                   hotseatInUse(), rewind_, branchNote_);
         const ImVec2 display = ImGui::GetIO().DisplaySize;
         keepClearOfPanels(m, coveredBottom(req.rect, display.x, display.y));
-        homeJumpFrames_ = std::max(0, homeJumpFrames_ - 1);
         if (req.projectile)
             if (auto c = AimInput::select(m.cannon(), *req.projectile)) submit(*c);
         if (req.fire && humanTurn()) submit(aim_.fire(m.cannon()));

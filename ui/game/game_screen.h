@@ -144,8 +144,9 @@ class GameScreen final : public Screen {
     void cameraEvent(const SDL_Event& e);
     /// The level's framing, and the camera rig's home.
     void frameLevel(const game::Match& m);
-    /// The panels along the bottom now cover `covered` of the height: the follow camera
-    /// frames shots above it, and home moves so nothing to aim at stands under them.
+    /// The panel along the bottom (the Match panel, or the replay viewer's) now covers
+    /// `covered` of the height: the follow camera frames shots above it, and home moves
+    /// so nothing to aim at stands under it. Called once a frame while one is drawn.
     void keepClearOfPanels(const game::Match& m, double covered);
     /// The camera follows the shell (the setting is on and the player has not panned).
     bool following() const;
