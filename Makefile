@@ -60,9 +60,9 @@ cli-docs: build
 
 # The README's pictures, drawn by the game's own headless renderer.
 screenshots: build
-	./$(BUILD)/artillery play levels/05_castle.json --headless --frames 2 --no-panel --screenshot docs/game.png
+	./$(BUILD)/artillery play levels/05_castle.json --headless --frames 4 --no-panel --screenshot docs/game.png
 	./$(BUILD)/artillery play --replay tests/replays/05_castle.replay.json --headless --no-panel \
-	  --warmup 1.5 --frames 2 --ghosts --forces --contacts --models --screenshot docs/debug_view.png
+	  --warmup 1.5 --frames 4 --ghosts --forces --contacts --models --screenshot docs/debug_view.png
 
 clean:
 	rm -rf $(BUILD)
