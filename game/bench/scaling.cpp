@@ -343,6 +343,27 @@ double loadNow() {
     return parseLoadAverage(std::string(text, got));
 }
 
+double spreadOfRuns(const std::vector<double>& runMs) {
+    if (runMs.size() < 2) return 0.0;
+    const auto [fastest, slowest] = std::minmax_element(runMs.begin(), runMs.end());
+    return *fastest > 0.0 ? *slowest / *fastest - 1.0 : 0.0;
+}
+
+double PileComparison::widestSpread() const {
+    return std::max(spreadOfRuns(particleRunMs), spreadOfRuns(tunedRigidRunMs));
+}
+
+std::string busyHostRefusal(double spread, bool intoDocs, bool underLoad) {
+    if (!intoDocs || underLoad || !(spread > kBusyHostSpread)) return {};
+    char why[200];
+    std::snprintf(why, sizeof why,
+                  "a pile's runs spread by %.1f %% (more than %.0f %%): the host was busy, "
+                  "whatever its load average said",
+                  100.0 * spread, 100.0 * kBusyHostSpread);
+    return std::string("refusing to write figures into docs/: ") + why +
+           "; run again on a quiet host, or pass --under-load to mark them as taken under load";
+}
+
 std::string docsFiguresRefusal(double load, bool intoDocs, bool underLoad) {
     if (!intoDocs || underLoad || load <= 1.0) return {};
     char why[120];

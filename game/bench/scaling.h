@@ -118,6 +118,9 @@ struct PileComparison {
     double tunedRigidMs = 0;
     std::vector<double> tunedRigidWindowMs;
     double speedupOverTuned() const { return particleMs > 0 ? tunedRigidMs / particleMs : 0; }
+    /// The widest spread of the runs (spreadOfRuns) of the particles and the tuned Box2D,
+    /// the two sides the 10x is judged by.
+    double widestSpread() const;
     /// The timed span, ticks counted from 1 at the drop.
     int firstTick() const { return kPileSettleTicks + 1; }
     int lastTick() const {
@@ -147,6 +150,19 @@ double parseLoadAverage(const std::string& text);
 /// the documentation need a quiet machine (1-minute load `load` at most 1; NAN: the
 /// load cannot be read), unless `underLoad` (--under-load) marks them as taken under load.
 std::string docsFiguresRefusal(double load, bool intoDocs, bool underLoad);
+
+/// How far the slowest of a side's runs lies above its fastest: slowest / fastest - 1
+/// (0 for fewer than two runs). Every run steps the same bits, so on a quiet host they
+/// take the same time within a few percent.
+double spreadOfRuns(const std::vector<double>& runMs);
+/// Runs that spread wider than this were timed on a busy host, whatever the load average
+/// says (docs/performance.md, "A slow host at a low load"): on the development machine
+/// the piles' quiet runs spread by 0-8 %, those in the host's slow spells by 15-70 %, and
+/// the slow spells slow Box2D more than the particles, so a lead taken in one is inflated.
+inline constexpr double kBusyHostSpread = 0.12;
+/// The same refusal after the run, for runs spread wider than kBusyHostSpread (`spread`),
+/// "" when they are not, or the figures do not go into docs/, or are marked --under-load.
+std::string busyHostRefusal(double spread, bool intoDocs, bool underLoad);
 
 /// Particles in flight (gravity, quadratic drag relative to a wind) under one integrator,
 /// side by side in one process with the reference kernel of that integrator's arithmetic
