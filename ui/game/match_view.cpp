@@ -616,10 +616,10 @@ double lowestThingStanding(const Match& m) {
 
 } // namespace
 
-double coveredBottom(const PixelRect& matchPanel, double width, double height) {
+double coveredBottom(const PixelRect& panel, double width, double height) {
     if (!(height > 0.0)) return 0.0;
     double top = height - 118.0 * hudScale(width, height); // the aim readout's
-    if (matchPanel.y1 >= 0.9 * height) top = std::min(top, matchPanel.y0);
+    if (panel.y1 >= 0.9 * height) top = std::min(top, panel.y0);
     return std::clamp((height - top) / height, 0.0, 1.0);
 }
 
