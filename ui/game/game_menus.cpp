@@ -471,8 +471,6 @@ MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettin
         ImGui::TextWrapped("%s", branch.c_str());
         ImGui::PopStyleColor();
     }
-    const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-    req.rect = {at.x, at.y, at.x + size.x, at.y + size.y};
     ImGui::End();
     return req;
 }

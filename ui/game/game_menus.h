@@ -8,7 +8,6 @@
 #include "game/progress.h"
 #include "ui/game/player_settings.h"
 #include "ui/play/physics_panel.h"
-#include "ui/render/pixel_rect.h"
 
 #include <cstdint>
 #include <optional>
@@ -114,7 +113,6 @@ struct MatchPanelRequests {
     bool settingsChanged = false;
     std::optional<std::uint64_t> rewindTo; ///< go back to this tick and play on (a branch)
     bool watchLastShot = false;            ///< the last shot again (GameScreen::watchLastShot)
-    PixelRect rect;                        ///< where the panel is this frame (ImGui's pixels)
 };
 
 /// The match panel's rewind slider: the moment it points at while it is dragged.

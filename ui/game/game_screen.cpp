@@ -362,7 +362,9 @@ void GameScreen::frameLevel(const game::Match& m) {
     homeJumpFrames_ = 3;
 }
 
-void GameScreen::keepClearOfPanels(const game::Match& m, double covered) {
+void GameScreen::keepClearOfPanels(const game::Match& m, const std::optional<PixelRect>& panel) {
+    const double covered =
+        coveredBottom(panel.value_or(PixelRect{}), context_.width(), context_.height());
     const bool mayJump = homeJumpFrames_ > 0;
     homeJumpFrames_ = std::max(0, homeJumpFrames_ - 1); // called once a frame
     rig_.setCoveredBottom(covered);
@@ -699,8 +701,7 @@ void GameScreen::drawPanels() {
     if (helpOpen_) helpOverlay(helpOpen_);
     if (viewer_ && overlay_ == Overlay::None) {
         const ReplayRequests req = viewer_->panel();
-        const ImVec2 display = ImGui::GetIO().DisplaySize;
-        keepClearOfPanels(viewer_->match(), coveredBottom(req.rect, display.x, display.y));
+        keepClearOfPanels(viewer_->match(), openWindowRect("Replay"));
         if (req.takeOver)
             takeOverReplay();
         else if (req.close)
@@ -715,8 +716,7 @@ void GameScreen::drawPanels() {
         game::Match& m = session_->match();
         const MatchPanelRequests req = matchPanel(m, humanTurn(), settings_, settings_.difficulty,
                                                   hotseatInUse(), rewind_, branchNote_);
-        const ImVec2 display = ImGui::GetIO().DisplaySize;
-        keepClearOfPanels(m, coveredBottom(req.rect, display.x, display.y));
+        keepClearOfPanels(m, openWindowRect("Match"));
         if (req.projectile)
             if (auto c = AimInput::select(m.cannon(), *req.projectile)) submit(*c);
         if (req.fire && humanTurn()) submit(aim_.fire(m.cannon()));
@@ -724,6 +724,7 @@ void GameScreen::drawPanels() {
         submit(sandboxTools_.panel(m));
         sceneToEditor = sandboxTools_.takeSaveAsLevel();
         if (playtest_) {
+            const ImVec2 display = ImGui::GetIO().DisplaySize;
             // Under the wind gauge at the top centre.
             const auto underGauge = static_cast<float>(76.0 * hudScale(display.x, display.y));
             ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, underGauge), ImGuiCond_Always,

@@ -15,6 +15,7 @@
 //   GameScreen      frame(), handleEvent(); level select, playing, watching, overlays
 #pragma once
 
+#include "game/audio/synthesizer.h"
 #include "game/effects/camera_rig.h"
 #include "game/level.h"
 #include "game/progress.h"
@@ -30,12 +31,12 @@
 #include "ui/game/replay_view.h"
 #include "ui/game/sandbox_tools.h"
 #include "ui/game/stats_panel.h"
-#include "game/audio/synthesizer.h"
 #include "ui/platform/audio_device.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
 #include "ui/play/physics_panel.h"
 #include "ui/play/screen.h"
+#include "ui/render/pixel_rect.h"
 #include "ui/render/render_target.h"
 #include "ui/render/renderer2d.h"
 #include "ui/render/screenshot.h"
@@ -144,10 +145,11 @@ class GameScreen final : public Screen {
     void cameraEvent(const SDL_Event& e);
     /// The level's framing, and the camera rig's home.
     void frameLevel(const game::Match& m);
-    /// The panel along the bottom (the Match panel, or the replay viewer's) now covers
-    /// `covered` of the height: the follow camera frames shots above it, and home moves
-    /// so nothing to aim at stands under it. Called once a frame while one is drawn.
-    void keepClearOfPanels(const game::Match& m, double covered);
+    /// The panel along the bottom (the Match panel, or the replay viewer's: where it was
+    /// drawn open, openWindowRect) covers part of the screen: the follow camera frames
+    /// shots above it, and home moves so nothing to aim at stands under it. Called once a
+    /// frame while one is drawn.
+    void keepClearOfPanels(const game::Match& m, const std::optional<PixelRect>& panel);
     /// The camera follows the shell (the setting is on and the player has not panned).
     bool following() const;
     void followShot(const game::Match& m);

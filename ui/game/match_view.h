@@ -87,8 +87,8 @@ inline float besideAimReadout(double width, double height) {
 /// How much of the screen's height, from the bottom, the panels along it cover (a
 /// fraction, for the follow camera to frame the shot above it): the aim readout, 118
 /// design pixels tall, and `panel` (the Match panel, or the replay viewer's, in the same
-/// pixels as width and height) while it stands on the bottom, as it opens; moved up or
-/// folded, it is left out.
+/// pixels as width and height) while it stands on the bottom, as it opens; moved up, it
+/// is left out (folded, the caller passes an empty rect).
 double coveredBottom(const PixelRect& panel, double width, double height);
 /// The HUD's margin to the screen's edges (12 design pixels), which the panels beside it
 /// keep too.

@@ -243,8 +243,6 @@ ReplayRequests ReplayViewer::panel() {
     // edge); the export's state takes their place (the panel keeps its height).
     if (!videoLine())
         ImGui::TextColored(kDimText, "Space play/pause  . step  [ ] speed  PgUp/PgDn shots");
-    const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-    req.rect = {at.x, at.y, at.x + size.x, at.y + size.y};
     ImGui::End();
     return req;
 }

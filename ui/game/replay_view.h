@@ -15,7 +15,6 @@
 #include "physics/clock.h"
 #include "ui/game/match_view.h"
 #include "ui/game/tick_budget.h"
-#include "ui/render/pixel_rect.h"
 #include "ui/video/video_export.h"
 
 #include <SDL_keyboard.h>
@@ -32,7 +31,6 @@ struct ReplayRequests {
     bool close = false;    ///< back to the list of replays
     bool exportVideo = false; ///< write the replay as a video (exportVideo())
     bool backToGame = false;  ///< an instant replay: back to the live game (makeInstant())
-    PixelRect rect;           ///< where the panel is this frame (ImGui's pixels)
 };
 
 /// Replay speeds the [ and ] keys step through (simulated seconds per wall second).
