@@ -4,44 +4,42 @@
 // so the window drives the match exactly as a script or a replay does; wall time only
 // feeds the clock and shapes gestures (charging), never the simulation.
 //
-// Replays: the screen also watches a recorded game (ReplayViewer, from
-// `--replay FILE` or the Replays list), drawn on the same path as live play, and turns
-// it into a live game at any moment ("take over": a new replay branches from there).
-// A live game rewinds the same way (Session::rewindTo): back to any earlier tick, and
-// play goes on from there as a branch.
+// The screen is a set of controllers over what is on it, each owning its own state:
+//   LivePlay        the match played: session, clock, aim, time controls (live_play.h)
+//   ReplayControl   a replay watched, the last shot again, taking over (replay_control.h)
+//   MenuFlow        level select, lesson, replays list, pause menu, help (menu_flow.h)
+//   EditorFlow      the level editor and its playtest (editor_flow.h)
+//   CameraControl   framing, following the shell, zoom and pan (camera_control.h)
+//   PlayerFiles     settings, progress, layout, the replays and maps folders (player_files.h)
+//   GameSound       the synthesizer and the sound card (game_sound.h)
+//   key bindings    what each key does, as a table (key_bindings.h)
+// The screen moves between them (open a level, a replay, the editor) and draws a frame.
 //
 // Section index
 //   GameScreenDef   what to open and how
-//   GameScreen      frame(), handleEvent(); level select, playing, watching, overlays
+//   GameScreen      frame(), handleEvent(); what the tests look at
 #pragma once
 
-#include "game/audio/synthesizer.h"
-#include "game/effects/camera_rig.h"
 #include "game/level.h"
-#include "game/progress.h"
-#include "game/session.h"
-#include "physics/clock.h"
-#include "ui/game/aim_input.h"
-#include "ui/game/campaign_view.h"
-#include "ui/game/editor_screen.h"
-#include "ui/game/game_menus.h"
+#include "ui/game/camera_control.h"
+#include "ui/game/editor_flow.h"
+#include "ui/game/game_sound.h"
+#include "ui/game/key_bindings.h"
+#include "ui/game/live_play.h"
 #include "ui/game/match_view.h"
+#include "ui/game/menu_flow.h"
 #include "ui/game/pad_input.h"
-#include "ui/game/player_settings.h"
-#include "ui/game/replay_view.h"
+#include "ui/game/player_files.h"
+#include "ui/game/replay_control.h"
 #include "ui/game/sandbox_tools.h"
 #include "ui/game/stats_panel.h"
-#include "ui/platform/audio_device.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
 #include "ui/play/physics_panel.h"
 #include "ui/play/screen.h"
-#include "ui/render/pixel_rect.h"
 #include "ui/render/render_target.h"
 #include "ui/render/renderer2d.h"
-#include "ui/render/screenshot.h"
 
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -96,85 +94,65 @@ class GameScreen final : public Screen {
     /// replay's), "" for none.
     std::string banner() const;
     /// The match being played, if any (null on the level select screen or in a replay).
-    const game::Session* session() const { return session_.get(); }
+    const game::Session* session() const { return play_.sessionOrNull(); }
     /// The view of the match on screen now (before a blast's shake).
-    const Camera& camera() const { return camera_; }
+    const Camera& camera() const { return camera_.camera(); }
     /// The refused command the HUD shows now ("spawn: ..."), "" for none.
-    std::string notice() const { return noticeSeconds_ > 0.0 ? notice_ : std::string(); }
+    std::string notice() const { return play_.notice(); }
     /// The replay being watched, if any.
-    const ReplayViewer* replayViewer() const { return viewer_.get(); }
+    const ReplayViewer* replayViewer() const { return replays_.viewer(); }
     /// The level editor, while it is on screen (null otherwise).
-    LevelEditorView* levelEditor() { return editing_ ? editor_.get() : nullptr; }
+    LevelEditorView* levelEditor() { return editor_.onScreen(); }
     /// The match being played is the editor's level (a playtest: the editor waits).
-    bool playtest() const { return playtest_; }
+    bool playtest() const { return editor_.playtest(); }
 
   private:
+    // Moving between what is on screen.
     void openLevel(const std::string& file);
-    // The level editor (ui/game/editor_screen.*): open it, play its level, come back.
+    void restart();
+    void openReplay(const std::string& file);
+    void watchLastShot();
+    void backToLive();
+    void takeOverReplay();
+    void rewindLive(std::uint64_t tick);
     void openEditor(game::Level level);
     void playEditedLevel();
     void backToEditor();
-    bool editorEvent(const SDL_Event& e);
-    void editorPanels();
-    /// Where Save As and the playtest write levels: the player's maps folder.
-    std::string mapsFolder() const;
-    void restart();
-    /// Plays `session` from its current tick (a new match, or a replay taken over).
-    void playSession(std::unique_ptr<game::Session> session);
-    game::SessionOptions liveOptions(const std::string& recordFile) const;
-    bool hotseatInUse() const;
-    /// Where the game records replays ("" in check runs and headless: nowhere).
-    std::string replaysFolder() const;
-    std::string recordFileFor(const std::string& name) const;
     /// The match on screen: the one played or the one watched (null on the menus alone).
     const game::Match* shownMatch() const;
-    // Replays and rewinding.
-    void openReplay(const std::string& file);
-    void showReplays();
-    void takeOverReplay();
-    void rewindLive(std::uint64_t tick);
-    /// The live game's last shot again (Z): its recording so far, watched from half a
-    /// second before the shot, while the game waits; at the end (or Z, Esc) play goes on
-    /// where it stood. Take over (T) plays on from the moment watched instead, as a branch.
-    void watchLastShot();
-    void backToLive();
-    /// Watching the live game's last shot (the game waits behind it).
-    bool instantReplay() const { return viewer_ && viewer_->instant() && session_; }
-    bool replayKey(const SDL_Event& e);
-    std::string liveBanner(const game::Match& m) const;
-    void cameraEvent(const SDL_Event& e);
-    /// The level's framing, and the camera rig's home.
+    bool hotseatInUse() const;
+    /// The level as played: with hotseat, the computer's cannon handed to a second person.
+    game::Level levelInPlay() const;
     void frameLevel(const game::Match& m);
-    /// The panel along the bottom (the Match panel, or the replay viewer's: where it was
-    /// drawn open, openWindowRect) covers part of the screen: the follow camera frames
-    /// shots above it, and home moves so nothing to aim at stands under it. Called once a
-    /// frame while one is drawn.
-    void keepClearOfPanels(const game::Match& m, const std::optional<PixelRect>& panel);
-    /// The camera follows the shell (the setting is on and the player has not panned).
-    bool following() const;
-    void followShot(const game::Match& m);
-    /// The camera drawn with: the view shaken by blasts, when shaking is on.
-    Camera shakenCamera() const;
-    void markAssists();
-    void submit(const std::vector<game::Command>& commands);
-    void submit(const game::Command& command);
-    bool humanTurn() const;
-    void simulate(double wallSeconds);
-    void pollHeldInput(double wallSeconds);
-    void recordResultOnce();
+    bool follows() const;
+
+    // A frame.
+    void advance(double wallSeconds);
+    void fitToWindow();
+    void drawWorld();
     void drawPlaying();
     void drawPanels();
-    void persist();
-    void loadProgress();
-    /// The sound: the synthesizer hears the match on screen (a live one after every
-    /// tick, a replay once a frame) and the device plays it; nothing without a device.
-    bool hearing() const;
-    void hearTick(const game::Match& m);
+    void drawEditorPanels();
+    void replayPanel();
+    void matchPanels(MenuChoice& choice, bool& sceneToEditor);
+    void physicsPanelOfMatch(game::Match& m);
+    void playtestButton(MenuChoice& choice);
+    void actOn(const MenuChoice& choice, bool sceneToEditor);
+    void markAssists();
+    void recordResultOnce();
     void hearFrame();
-    phys::Vec2 pivotPixels() const;
-    phys::Vec2 pixelsPerPoint() const;
-    phys::Vec2 pointerPixels(int x, int y) const;
+
+    // Input.
+    void submit(const game::Command& command);
+    void submit(const std::vector<game::Command>& commands);
     bool keyDown(const SDL_Event& e);
+    bool backKey();
+    void gameKeyAction(GameKey action);
+    bool replayKey(const SDL_Event& e);
+    bool editorEvent(const SDL_Event& e);
+    void padAction(PadAction action);
+    bool mouseInMatch(const SDL_Event& e);
+    phys::Vec2 pixelsPerPoint() const;
 
     GLContext& context_;
     SdlWindow* window_;
@@ -185,72 +163,24 @@ class GameScreen final : public Screen {
     MultisampleTarget msaa_;
     int samples_ = 1;
 
-    PlayerSettings settings_;
-    std::string settingsFile_, iniFile_;
-    std::vector<LevelEntry> levels_;
-    /// The levels in their chapters, and what the player has earned ("" file: not kept).
-    CampaignMenu campaign_;
-    game::Progress progress_;
-    std::string progressFile_;
-    /// The lesson on screen (Overlay::Lesson) and the level its Play button opens.
-    std::size_t lessonChapter_ = 0;
-    std::string lessonThenLevel_;
-
-    game::Level level_;
-    std::unique_ptr<game::Session> session_;
-    std::unique_ptr<ReplayViewer> viewer_;
-    std::vector<ReplayEntry> replays_;
-    RewindControl rewind_;
-    RandomMapForm randomMap_; ///< the level select's Random map row
-    LevelEditorForm editorForm_; ///< the level select's Level editor row
-    /// The level editor; kept while its level is played or the level select is shown.
-    std::unique_ptr<LevelEditorView> editor_;
-    bool editing_ = false;  ///< the editor is on screen
-    bool playtest_ = false; ///< the match in play is the editor's level
-    /// Where the game in play branched from (a replay taken over, a rewind), "" if not.
-    std::string branchNote_;
-    std::uint64_t branchTick_ = 0;
-    /// The first level, drawn behind the level select screen before any game starts.
-    std::unique_ptr<game::Match> backdrop_;
-    phys::FixedClock clock_;
-    std::optional<double> tickBudget_; ///< wall s a frame may spend on ticks (tick_budget.h)
-    /// Wall seconds until the slow-motion banner goes (the budget cut a frame's ticks).
-    SlowMotion slowMotion_; ///< the budget cut a frame lately
-    TimeControls time_;
+    PlayerFiles files_;
+    MenuFlow menus_;
+    game::Level level_; ///< the level played or watched
+    LivePlay play_;
+    ReplayControl replays_;
+    EditorFlow editor_;
+    CameraControl camera_;
     ViewControls view_;
     MatchView matchView_;
-    AimInput aim_;
     SandboxTools sandboxTools_;
     StatsPanel statsPanel_; ///< Compare, energy and momentum, Charts
-    Camera camera_;
-    game::CameraRig rig_; ///< follows the shell, frames the impact, returns
-    /// How much of the bottom the panels there covered when the level was last framed (a
-    /// fraction of the height), and for how many more frames home jumps to a new framing
-    /// rather than gliding: ImGui sizes a panel over its first two frames, and a level that
-    /// just opened should not be seen moving into place.
-    double coveredBottom_ = 0.0;
-    int homeJumpFrames_ = 3;
-    bool cameraMoved_ = false;
-    bool panning_ = false;
-    bool resultRecorded_ = false;
-    bool newBest_ = false;
-
-    Overlay overlay_ = Overlay::None;
-    bool helpOpen_ = false;
+    PadInput pad_;          ///< a game controller, if one is plugged in
+    GameSound sound_;
+    FrameStats stats_;
+    int framesMeasured_ = 0;
     bool running_ = true;
     bool networkDuel_ = false;
     bool screenshotRequested_ = false;
-    FrameStats stats_;
-    /// What the match refused last (a spawn outside the world, say), shown on the HUD
-    /// for noticeSeconds_ more of wall time: else the press seems to do nothing.
-    std::string notice_;
-    double noticeSeconds_ = 0.0;
-    int framesMeasured_ = 0;
-    PadInput pad_; ///< a game controller, if one is plugged in
-    /// The sound card (window only; silent when there is none) and what it plays: voices
-    /// start as the match's events are heard, a frame at a time.
-    std::unique_ptr<AudioDevice> audio_;
-    game::audio::Synthesizer sound_{game::audio::SynthesizerDef{.live = true}};
 };
 
 } // namespace ui
