@@ -42,6 +42,10 @@ void CameraRig::setCoveredBottom(double fraction) {
     coveredBottom_ = std::isfinite(fraction) ? std::clamp(fraction, 0.0, 0.5) : 0.0;
 }
 
+void CameraRig::setCoveredRight(double fraction) {
+    coveredRight_ = std::isfinite(fraction) ? std::clamp(fraction, 0.0, 0.5) : 0.0;
+}
+
 void CameraRig::approach(Vec2 target, double zoom, double tau, double dt) {
     const double k = 1.0 - std::exp(-dt / tau);
     aim_ = target;
@@ -76,14 +80,16 @@ void CameraRig::tick(const Match& m) {
         }
         const double margin = def_.followMarginPx;
         const double openPx = viewHeightPx_ * (1.0 - coveredBottom_);
-        const double fit = std::min((viewWidthPx_ - 2.0 * margin) / std::max(1e-6, hi.x - lo.x),
+        const double openWidthPx = viewWidthPx_ * (1.0 - coveredRight_);
+        const double fit = std::min((openWidthPx - 2.0 * margin) / std::max(1e-6, hi.x - lo.x),
                                     (openPx - 2.0 * margin) / std::max(1e-6, hi.y - lo.y));
         const double zoom = std::clamp(fit, home, home * def_.impactZoom);
         // The lowest of them a quarter of the way up the open picture (the ground low, as
         // at home), unless the shell needs the view higher to stay in it.
         const double visible = openPx / zoom, m = margin / zoom;
         const double y = std::max(lo.y + 0.25 * visible, hi.y + m - 0.5 * visible);
-        approach({0.5 * (lo.x + hi.x), y - openCentreAbove(zoom)}, zoom, def_.followSeconds, dt);
+        approach({0.5 * (lo.x + hi.x) + openCentreLeft(zoom), y - openCentreAbove(zoom)}, zoom,
+                 def_.followSeconds, dt);
         return;
     }
     // The shot's end from the match's events (not from having watched it fall: a viewer
@@ -106,8 +112,8 @@ void CameraRig::tick(const Match& m) {
         // The impact low in the open picture, so what it threw up is in view.
         const double zoom = home * def_.impactZoom;
         const double visibleHeight = viewHeightPx_ * (1.0 - coveredBottom_) / zoom; // m
-        approach(lastShell_ + Vec2{0.0, 0.15 * visibleHeight - openCentreAbove(zoom)}, zoom,
-                 def_.followSeconds, dt);
+        approach(lastShell_ + Vec2{openCentreLeft(zoom), 0.15 * visibleHeight - openCentreAbove(zoom)},
+                 zoom, def_.followSeconds, dt);
         if (static_cast<double>(m.tick() - heldShot_) * tick >= def_.holdSeconds)
             phase_ = Phase::Returning;
     } else if (phase_ == Phase::Returning || phase_ == Phase::Home) {

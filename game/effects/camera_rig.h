@@ -49,6 +49,9 @@ class CameraRig {
     /// bottom): the shell, the targets and the impact are framed in the view above it.
     /// Home is the level's framing, which keeps its own soil band under them.
     void setCoveredBottom(double fraction);
+    /// The rightmost `fraction` of the view is covered (by panels along its right edge):
+    /// the shell, the targets and the impact are framed in the view left of it.
+    void setCoveredRight(double fraction);
 
     phys::Vec2 center() const { return center_; }
     double pixelsPerMetre() const { return zoom_; }
@@ -63,6 +66,9 @@ class CameraRig {
     double openCentreAbove(double zoom) const {
         return 0.5 * coveredBottom_ * viewHeightPx_ / zoom;
     }
+    /// How far the middle of the open picture (left of the covered right) lies left of
+    /// the view's centre at `zoom`, m.
+    double openCentreLeft(double zoom) const { return 0.5 * coveredRight_ * viewWidthPx_ / zoom; }
 
     CameraRigDef def_;
     Phase phase_ = Phase::Home;
@@ -74,6 +80,7 @@ class CameraRig {
     bool started_ = false;
     int viewWidthPx_ = 1280, viewHeightPx_ = 720;
     double coveredBottom_ = 0.0; ///< fraction of the view's height
+    double coveredRight_ = 0.0;  ///< fraction of the view's width
     phys::Vec2 lastShell_;
 };
 

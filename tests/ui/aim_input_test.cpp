@@ -71,17 +71,74 @@ TEST(AimInput, UnchangedAimSendsNothingAndFireSendsFire) {
     EXPECT_EQ(fire[0].kind, CommandKind::Fire);
 }
 
-TEST(AimInput, HeldKeysMoveThePendingAimAndCommitOnce) {
-    ui::AimInput in; // 40 deg/s, 15 m/s per s
+// A tap of an arrow key steps the aim by the same amount every time, whatever the frame
+// rate: 0.5 deg or 0.5 m/s, a fifth of it with Shift.
+TEST(AimInput, ATapStepsAFixedAmount) {
+    ui::AimInput in;
     const game::CannonState c = cannon(45.0, 30.0);
     in.sync(c);
-    for (int i = 0; i < 30; ++i) in.hold(1.0, -1.0, 1.0 / 60.0, c.def.maxSpeedMps); // 0.5 s
-    EXPECT_NEAR(in.pending().angleDeg, 65.0, 1e-9);
-    EXPECT_NEAR(in.pending().speedMps, 22.5, 1e-9);
+    in.step(1, 0, false, c.def.maxSpeedMps);
+    EXPECT_DOUBLE_EQ(in.pending().angleDeg, 45.5);
+    in.step(0, -1, false, c.def.maxSpeedMps);
+    EXPECT_DOUBLE_EQ(in.pending().speedMps, 29.5);
+    in.step(-1, 1, true, c.def.maxSpeedMps);
+    EXPECT_DOUBLE_EQ(in.pending().angleDeg, 45.4);
+    EXPECT_DOUBLE_EQ(in.pending().speedMps, 29.6);
     const auto cmds = in.commit(c);
     ASSERT_EQ(cmds.size(), 2u);
-    EXPECT_DOUBLE_EQ(cmds[0].number, 65.0);
-    EXPECT_DOUBLE_EQ(cmds[1].number, 22.5);
+    EXPECT_DOUBLE_EQ(cmds[0].number, 45.4);
+    EXPECT_DOUBLE_EQ(cmds[1].number, 29.6);
+}
+
+// Held, the key repeats after a delay, slowly at first and faster the longer it is
+// held, up to 40 deg/s: a frame's move grows with the time held, and reaches the most.
+TEST(AimInput, HeldKeysRepeatAfterADelayFasterTheLonger) {
+    ui::AimInputDef def; // 0.35 s delay; 8 steps/s doubling every 0.5 s; 40 deg/s at most
+    ui::AimInput in(def);
+    const game::CannonState c = cannon(45.0, 30.0);
+    in.sync(c);
+    const double dt = 1.0 / 60.0;
+    for (int i = 0; i < 20; ++i) in.hold(1.0, 0.0, dt, c.def.maxSpeedMps); // 0.33 s
+    EXPECT_DOUBLE_EQ(in.pending().angleDeg, 45.0) << "within the delay, the tap's step is all";
+    double before = in.pending().angleDeg, lastMove = 0.0;
+    for (int i = 0; i < 60; ++i) { // the next second
+        in.hold(1.0, 0.0, dt, c.def.maxSpeedMps);
+        const double move = in.pending().angleDeg - before;
+        EXPECT_GE(move, lastMove - 1e-12) << "frame " << i;
+        lastMove = move;
+        before = in.pending().angleDeg;
+    }
+    EXPECT_GT(lastMove, 0.0);
+    for (int i = 0; i < 120; ++i) in.hold(1.0, 0.0, dt, c.def.maxSpeedMps); // held 3.3 s
+    before = in.pending().angleDeg;
+    in.hold(1.0, 0.0, dt, c.def.maxSpeedMps);
+    EXPECT_NEAR(in.pending().angleDeg - before, def.angleRate * dt, 1e-9) << "the most";
+    // Let go and held again: slow from the start again.
+    in.releaseHold();
+    before = in.pending().angleDeg;
+    in.hold(1.0, 0.0, dt, c.def.maxSpeedMps);
+    EXPECT_DOUBLE_EQ(in.pending().angleDeg, before);
+}
+
+// A click (a press the pointer leaves by less than a few pixels) is not a drag: it leaves
+// the aim alone, where it used to aim at the click at full power.
+TEST(AimInput, AClickWithoutADragLeavesTheAimAlone) {
+    ui::AimInput in;
+    const game::CannonState c = cannon(45.0, 30.0);
+    in.sync(c);
+    in.beginDrag({200, 400}, {900, 100}, c.def.maxSpeedMps); // far up in the sky
+    in.dragTo({200, 400}, {903, 102}, c.def.maxSpeedMps);    // a hand's tremble
+    EXPECT_FALSE(in.rubberBand());
+    EXPECT_TRUE(in.endDrag(c).empty());
+    EXPECT_DOUBLE_EQ(in.pending().angleDeg, 45.0);
+    EXPECT_DOUBLE_EQ(in.pending().speedMps, 30.0);
+    // Past the few pixels it aims, and the rubber band runs to the pointer.
+    in.beginDrag({200, 400}, {300, 400}, c.def.maxSpeedMps);
+    in.dragTo({200, 400}, {300, 300}, c.def.maxSpeedMps);
+    ASSERT_TRUE(in.rubberBand());
+    EXPECT_DOUBLE_EQ(in.rubberBand()->y, 300.0);
+    EXPECT_DOUBLE_EQ(in.pending().angleDeg, 45.0);
+    EXPECT_FALSE(in.endDrag(c).empty());
 }
 
 TEST(AimInput, SpaceChargeFiresAtTheChargedPower) {
@@ -106,7 +163,8 @@ TEST(AimInput, ATapOfSpaceFiresAtThePowerSetNotAtTheCharge) {
     ui::AimInput in; // a tap is under 0.2 s, full power after 1.5 s
     const game::CannonState c = cannon(45.0, 20.0, 60.0);
     in.sync(c);
-    in.beginDrag({0.0, 0.0}, {100.0, -100.0}, 60.0); // 45 degrees, 141 px of 260
+    in.beginDrag({0.0, 0.0}, {0.0, 0.0}, 60.0);
+    in.dragTo({0.0, 0.0}, {100.0, -100.0}, 60.0); // 45 degrees, 141 px of 260
     const auto dragged = in.endDrag(c);
     ASSERT_EQ(dragged.size(), 1u); // the angle is unchanged: the power
     const double power = dragged[0].number;

@@ -148,7 +148,7 @@ TEST_F(VirtualPad, StickTriggerAndAFireTheShotTheyAimed) {
     for (int frame = 0; frame < 30; ++frame) {
         const ui::PadAxes a = pad.axes();
         aim.stick(a.stickX, a.stickY);
-        aim.hold(0.0, a.power, 1.0 / 60.0, m.cannon().def.maxSpeedMps);
+        aim.sweep(0.0, a.power, 1.0 / 60.0, m.cannon().def.maxSpeedMps);
     }
     EXPECT_NEAR(aim.pending().angleDeg, 30.0, 0.05);
     const double speed = std::min(speed0 + ui::AimInputDef{}.powerRate * 0.5,

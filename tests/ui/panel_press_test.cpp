@@ -66,7 +66,7 @@ struct Sandbox {
 TEST(PanelPress, APressOnAPanelDoesNotReachTheWorldUnderIt) {
     Sandbox s;
     ASSERT_NE(s.screen, nullptr);
-    const ImGuiWindow* panel = ImGui::FindWindowByName("Stats");
+    const ImGuiWindow* panel = ImGui::FindWindowByName("Sandbox");
     ASSERT_NE(panel, nullptr);
     ASSERT_TRUE(panel->Active) << "drawn in the last frame";
     s.click(panel->Rect().GetCenter());

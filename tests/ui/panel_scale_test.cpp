@@ -3,6 +3,7 @@
 // the HUD, as on a 720p one. A layout saved in one window size and loaded in another
 // keeps each panel at its corner, its margins and size scaled.
 #include "headless_game.h"
+#include "sdl_events.h"
 #include "ui/game/game_screen.h"
 #include "ui/platform/gl_context.h"
 #include "ui/platform/imgui_layer.h"
@@ -25,10 +26,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The castle on a headless game screen of w x h, two frames drawn.
+/// The castle on a headless game screen of w x h, two frames drawn, then the lab's
+/// Physics panel (F2) and Stats window (F6) opened and two frames more.
 struct Castle : test_game::HeadlessGame {
     Castle(int w, int h, const fs::path& settings)
-        : HeadlessGame("05_castle.json", w, h, settings) {}
+        : HeadlessGame("05_castle.json", w, h, settings) {
+        if (!screen) return;
+        for (const SDL_Keycode k : {SDLK_F2, SDLK_F6}) {
+            screen->handleEvent(test_events::keyEvent(SDL_KEYDOWN, k));
+            screen->handleEvent(test_events::keyEvent(SDL_KEYUP, k));
+        }
+        for (int i = 0; i < 2; ++i) screen->frame(1.0 / 60.0);
+    }
 };
 
 struct Rect {
@@ -79,12 +88,12 @@ TEST(PanelScale, PanelTextAndWorldLabelsAreTwiceAsLargeOnATwiceAsLargeScreen) {
         Castle c(2560, 1440, settings);
         ASSERT_NE(c.screen, nullptr);
         large = ImGui::GetFontSize();
-        const Rect match = rectOf("Match");
-        // The Match panel sits beside the aim readout at the bottom left, as at 720p, and
-        // is twice as wide (its 250 design pixels), so its rows still fit.
-        EXPECT_NEAR(match.x0, 2 * 342.0, 1.0);
-        EXPECT_NEAR(match.x1 - match.x0, 2 * 250.0, 1.0);
-        EXPECT_NEAR(match.y1, 1440 - 2 * 12.0, 1.0);
+        const Rect controls = rectOf("Controls");
+        // The turn's controls sit beside the aim readout at the bottom left, as at 720p,
+        // and their text is twice as large, so their row is about twice as tall.
+        EXPECT_NEAR(controls.x0, 2 * 336.0, 1.0);
+        EXPECT_NEAR(controls.y1, 1440 - 2 * 12.0, 1.0);
+        EXPECT_GT(controls.y1 - controls.y0, 2 * 30.0);
 
         // A world label's size and nudge scale too; a label the caller laid out in
         // pixels (the HUD, the charts) is drawn at the size it asks for.

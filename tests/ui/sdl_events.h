@@ -28,4 +28,12 @@ inline SDL_Event motion(phys::Vec2 pixel, phys::Vec2 rel = {}) {
     return e;
 }
 
+/// A key pressed and let go, as SDL reports it.
+inline SDL_Event keyEvent(Uint32 type, SDL_Keycode key) {
+    SDL_Event e{};
+    e.type = type;
+    e.key.keysym.sym = key;
+    return e;
+}
+
 } // namespace test_events

@@ -122,12 +122,17 @@ TEST(TurnControls, SpaceChargesUntilReleasedAndHeldArrowsSettleWhenLetGo) {
     game::Match m = earthBasics();
     ui::AimInput aim;
     aim.sync(m.cannon());
-    // Held arrows: the aim moves while held and becomes commands once let go.
-    EXPECT_TRUE(ui::holdToAim({1.0, 0.0}, 0.25, aim, m, true).empty()); // 40 deg/s for 0.25 s
+    // An arrow: its press steps the aim at once, held it repeats, and the aim becomes
+    // commands once it is let go.
+    const auto left = ui::pressTurnKey(SDLK_LEFT, aim, m);
+    ASSERT_TRUE(left);
+    EXPECT_TRUE(left->empty());
+    EXPECT_TRUE(ui::holdToAim({1.0, 0.0}, 0.25, aim, m, true).empty()); // within the delay
+    EXPECT_DOUBLE_EQ(aim.pending().angleDeg, 45.5);
     const std::vector<game::Command> settled = ui::holdToAim({}, 0.016, aim, m, true);
     ASSERT_EQ(kinds(settled), std::vector{CommandKind::Aim});
     submit(m, settled);
-    EXPECT_NEAR(m.cannon().angleDeg, 55.0, 1e-9);
+    EXPECT_DOUBLE_EQ(m.cannon().angleDeg, 45.5);
     // Space: a charge of 0.75 s (half of full power), fired on release.
     const auto press = ui::pressTurnKey(SDLK_SPACE, aim, m);
     ASSERT_TRUE(press);

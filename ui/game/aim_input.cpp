@@ -45,13 +45,19 @@ void AimInput::sync(const game::CannonState& cannon) {
     pending_ = {cannon.angleDeg, cannon.speedMps};
 }
 
-void AimInput::beginDrag(phys::Vec2 pivotPx, phys::Vec2 pointerPx, double maxSpeedMps) {
+void AimInput::beginDrag(phys::Vec2 /*pivotPx*/, phys::Vec2 pointerPx, double /*maxSpeedMps*/) {
+    // Nothing changes yet: a click is not a drag (a click in the sky would otherwise aim
+    // there at full power).
     dragging_ = true;
-    dragTo(pivotPx, pointerPx, maxSpeedMps);
+    dragMoved_ = false;
+    pressPx_ = pointerPx_ = pointerPx;
 }
 
 void AimInput::dragTo(phys::Vec2 pivotPx, phys::Vec2 pointerPx, double maxSpeedMps) {
     if (!dragging_) return;
+    pointerPx_ = pointerPx;
+    if (!dragMoved_ && length(pointerPx - pressPx_) < def_.dragStartPixels) return;
+    dragMoved_ = true;
     pending_ = aimFromDrag(pivotPx, pointerPx, maxSpeedMps, def_.fullPowerPixels);
     dirty_ = true;
 }
@@ -59,10 +65,36 @@ void AimInput::dragTo(phys::Vec2 pivotPx, phys::Vec2 pointerPx, double maxSpeedM
 std::vector<game::Command> AimInput::endDrag(const game::CannonState& cannon) {
     if (!dragging_) return {};
     dragging_ = false;
+    if (!dragMoved_) return {}; // a click: the aim as it was
+    dragMoved_ = false;
     return commit(cannon);
 }
 
+void AimInput::step(int angleSteps, int powerSteps, bool fine, double maxSpeedMps) {
+    const double k = fine ? 0.2 : 1.0;
+    pending_.angleDeg = round1(wrapDegrees(pending_.angleDeg + angleSteps * k * def_.stepDeg));
+    pending_.speedMps =
+        std::clamp(round1(pending_.speedMps + powerSteps * k * def_.stepMps), 0.0, maxSpeedMps);
+    dirty_ = true;
+    heldSeconds_ = 0.0;
+}
+
 void AimInput::hold(double angleAxis, double powerAxis, double dt, double maxSpeedMps) {
+    if (angleAxis == 0.0 && powerAxis == 0.0) return;
+    heldSeconds_ += dt;
+    const double repeating = heldSeconds_ - def_.repeatDelaySeconds;
+    if (repeating <= 0.0) return; // the tap's step was all, so far
+    // Steps a second, doubling as the keys stay down, up to the most rates.
+    const double steps = def_.stepsPerSecond * std::exp2(repeating / def_.doublingSeconds);
+    const double angleRate = std::min(def_.angleRate, steps * def_.stepDeg);
+    const double powerRate = std::min(def_.powerRate, steps * def_.stepMps);
+    pending_.angleDeg = wrapDegrees(pending_.angleDeg + angleAxis * angleRate * dt);
+    pending_.speedMps =
+        std::clamp(pending_.speedMps + powerAxis * powerRate * dt, 0.0, maxSpeedMps);
+    dirty_ = true;
+}
+
+void AimInput::sweep(double angleAxis, double powerAxis, double dt, double maxSpeedMps) {
     if (angleAxis == 0.0 && powerAxis == 0.0) return;
     pending_.angleDeg = wrapDegrees(pending_.angleDeg + angleAxis * def_.angleRate * dt);
     pending_.speedMps =

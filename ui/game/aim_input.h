@@ -24,8 +24,21 @@ struct AimInputDef {
     /// Space released sooner than this is a tap, not a charge: it fires at the power set
     /// (by a drag, say), as Enter does, instead of at the few per cent charged, s.
     double tapSeconds = 0.2;
-    double angleRate = 40.0;        ///< deg/s while an arrow key is held (x0.2 with Shift)
-    double powerRate = 15.0;        ///< m/s per s while up/down is held
+    /// A key tap steps the aim by this much (a fifth of it with Shift): a tap always does
+    /// the same, whatever the frame rate, deg and m/s.
+    double stepDeg = 0.5;
+    double stepMps = 0.5;
+    /// Held past this, the key repeats, slowly at first and faster the longer it is held:
+    /// from `stepsPerSecond` steps a second, doubling every `doublingSeconds`, up to the
+    /// rates below (x0.2 with Shift), s.
+    double repeatDelaySeconds = 0.35;
+    double stepsPerSecond = 8.0;
+    double doublingSeconds = 0.5;
+    double angleRate = 40.0;        ///< deg/s at most while an arrow key is held
+    double powerRate = 15.0;        ///< m/s per s at most while up/down is held
+    /// A press that the pointer leaves by less than this is a click, not a drag: it leaves
+    /// the aim alone, px.
+    double dragStartPixels = 6.0;
     double stickDeadzone = 0.3;     ///< stick deflection (0..1) under which it is ignored
 };
 
@@ -46,15 +59,29 @@ class AimInput {
     /// True while the pending aim differs from what was last committed.
     bool editing() const { return dirty_ || dragging_ || charge_.has_value(); }
 
-    // Mouse: press starts aiming, motion follows the pointer, release commits.
+    // Mouse: press starts, motion past dragStartPixels aims from the pointer (the rubber
+    // band), release commits; a press released where it began leaves the aim alone.
     void beginDrag(phys::Vec2 pivotPx, phys::Vec2 pointerPx, double maxSpeedMps);
     void dragTo(phys::Vec2 pivotPx, phys::Vec2 pointerPx, double maxSpeedMps);
     std::vector<game::Command> endDrag(const game::CannonState& cannon);
     bool dragging() const { return dragging_; }
+    /// Where the pointer pulls the aim, px, while a drag is aiming (the rubber band's end).
+    std::optional<phys::Vec2> rubberBand() const {
+        return dragging_ && dragMoved_ ? std::optional(pointerPx_) : std::nullopt;
+    }
 
-    /// Continuous adjustment from held keys or a controller: `angleAxis` and `powerAxis`
-    /// in -1..1 for `dt` seconds. Commit with commit() when the keys are released.
+    /// A key tap: the angle by `angleSteps` and the power by `powerSteps` steps (stepDeg,
+    /// stepMps; a fifth with `fine`). Commit with commit() when the keys are released.
+    void step(int angleSteps, int powerSteps, bool fine, double maxSpeedMps);
+    /// Held keys or a controller: `angleAxis` and `powerAxis` in -1..1 (0.2 is Shift's
+    /// fine) for `dt` seconds more of holding; past the repeat delay the aim moves, faster
+    /// the longer they are held.
     void hold(double angleAxis, double powerAxis, double dt, double maxSpeedMps);
+    /// An analog control (a controller's trigger or stick): the aim moves at once, at
+    /// `angleAxis` x angleRate and `powerAxis` x powerRate, for `dt` seconds.
+    void sweep(double angleAxis, double powerAxis, double dt, double maxSpeedMps);
+    /// The keys are let go: the next hold starts slow again.
+    void releaseHold() { heldSeconds_ = 0.0; }
     /// A controller stick (x right, y down as SDL reports it, -1..1): beyond the dead
     /// zone its direction is the angle.
     void stick(double x, double y);
@@ -95,6 +122,9 @@ class AimInput {
     PendingAim pending_;
     bool dirty_ = false;
     bool dragging_ = false;
+    bool dragMoved_ = false;           ///< the pointer left the press: the drag aims
+    phys::Vec2 pressPx_, pointerPx_;   ///< where the press began, where the pointer is
+    double heldSeconds_ = 0.0;         ///< how long the keys have been held
     std::optional<double> charge_;
 };
 

@@ -1,6 +1,7 @@
 #include "ui/game/camera_control.h"
 
-#include "ui/game/match_view.h"
+#include "ui/game/level_camera.h"
+#include "ui/render/design_canvas.h"
 
 #include <SDL.h>
 
@@ -9,8 +10,17 @@
 
 namespace ui {
 
+namespace {
+
+/// The top band the HUD's boxes stand in, a fraction of the height.
+double coveredTop(int width, int height) {
+    return height > 0 ? kHudTopBand * hudScale(width, height) / height : 0.0;
+}
+
+} // namespace
+
 void CameraControl::frameLevel(const game::Match& m, int width, int height) {
-    camera_ = levelCamera(m, width, height, coveredBottom_);
+    camera_ = levelCameraLeftOf(m, width, height, coveredRight_, coveredBottom_, coveredTop(width, height));
     rig_.setHome(camera_.center, camera_.pixelsPerMetre, camera_.width, camera_.height);
     rig_.tick(m); // from this tick on
     homeJumpFrames_ = 3;
@@ -22,10 +32,13 @@ void CameraControl::keepClearOfPanels(const game::Match& m, const std::optional<
     const bool mayJump = homeJumpFrames_ > 0;
     homeJumpFrames_ = std::max(0, homeJumpFrames_ - 1); // called once a frame
     rig_.setCoveredBottom(covered);
+    rig_.setCoveredRight(coveredRightNow_);
     // A line more or less in the panel (a hint's, a duel's) moves home; a pixel does not.
-    if (std::abs(covered - coveredBottom_) < 0.005) return;
+    if (std::abs(covered - coveredBottom_) < 0.005 && std::abs(coveredRightNow_ - coveredRight_) < 0.005)
+        return;
     coveredBottom_ = covered;
-    const Camera home = levelCamera(m, w, h, coveredBottom_);
+    coveredRight_ = coveredRightNow_;
+    const Camera home = levelCameraLeftOf(m, w, h, coveredRight_, coveredBottom_, coveredTop(w, h));
     rig_.moveHome(home.center, home.pixelsPerMetre, mayJump);
     if (following(follow) && rig_.phase() == game::CameraRig::Phase::Home) {
         camera_.center = rig_.center();

@@ -30,6 +30,10 @@ class CameraControl {
     /// frame while one is drawn; `follow` is whether the camera follows the shell.
     void keepClearOfPanels(const game::Match& m, const std::optional<PixelRect>& panel,
                            int width, int height, bool follow);
+    /// Panels stand along the right edge, over its rightmost `fraction` of the width (the
+    /// lab's, open): home and the follow camera frame the level left of them. Called once a
+    /// frame, before keepClearOfPanels().
+    void keepClearOfTheRight(double fraction) { coveredRightNow_ = fraction; }
     /// Once a frame: the rig watches the match, and the camera goes where it points
     /// while `follow` is on and the player has not moved the view.
     void followShot(const game::Match& m, bool follow);
@@ -57,6 +61,7 @@ class CameraControl {
     /// rather than gliding: ImGui sizes a panel over its first two frames, and a level that
     /// just opened should not be seen moving into place.
     double coveredBottom_ = 0.0;
+    double coveredRight_ = 0.0, coveredRightNow_ = 0.0; ///< framed with, asked for
     int homeJumpFrames_ = 3;
     bool moved_ = false;
     bool panning_ = false;

@@ -112,22 +112,11 @@ void drawShotFeedback(Renderer2D& r, const Effects& fx) {
         const float fade = static_cast<float>(std::min(1.0, 3.0 * (1.0 - n.age / n.life)));
         switch (n.kind) {
         case game::ShotNote::Kind::Miss:
-            // At the landing point, a marker and the note above it.
-            {
-                // The note stays on screen (about 200 px wide) even when the shell came down
-                // near the edge of the view.
-                r.strokeCircle(n.where, r.camera().metres(6.0), kMissText.withAlpha(0.8f * fade),
-                               2.0f);
-                const Camera& c = r.camera();
-                Vec2 at = c.toPixel(n.where) + Vec2{0.0, -34.0};
-                at.x = std::clamp(at.x, 110.0, std::max(110.0, c.width - 110.0));
-                at.y = std::clamp(at.y, 20.0, std::max(20.0, c.height - 20.0));
-                r.label(c.toWorld(at), n.text, kMissText.withAlpha(fade), {}, 1.1f, 0.5f);
-            }
+            // At the landing point, a marker; what it says is the HUD's verdict (hud.cpp), in
+            // one place that covers nothing.
+            r.strokeCircle(n.where, r.camera().metres(6.0), kMissText.withAlpha(0.8f * fade), 2.0f);
             break;
         case game::ShotNote::Kind::Points:
-            r.label(n.where + Vec2{0.0, 2.0 + 3.0 * n.age}, n.text, kGold.withAlpha(fade), {}, 1.5f,
-                    0.5f);
             break;
         case game::ShotNote::Kind::Hit: {
             // A hit marker: four ticks around the point, opening as it fades.

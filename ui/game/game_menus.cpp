@@ -313,7 +313,34 @@ bool soundSection(game::audio::SoundMix& mix, const std::string& silentWhy) {
     return done;
 }
 
-MenuChoice pauseMenu(PlayerSettings& settings, const std::string& silentWhy) {
+namespace {
+
+/// The match paused: back to any earlier moment (play goes on from there as a new branch,
+/// the later commands dropped; applied when the slider is let go), and the last shot again.
+void rewindAndReplay(const game::Match& m, RewindControl& rewind, MenuChoice& choice) {
+    const double dt = m.world().def().tickSeconds;
+    const double now = static_cast<double>(m.tick()) * dt;
+    if (!rewind.dragging) rewind.seconds = now;
+    ImGui::PushItemWidth(-FLT_MIN);
+    float seconds = static_cast<float>(rewind.seconds);
+    ImGui::SliderFloat("##rewind", &seconds, 0.0f, static_cast<float>(now), "rewind to %.1f s",
+                       ImGuiSliderFlags_NoInput);
+    rewind.dragging = ImGui::IsItemActive();
+    rewind.seconds = std::min(static_cast<double>(seconds), now);
+    if (ImGui::IsItemDeactivatedAfterEdit() && rewind.seconds < now)
+        choice.rewindTo = static_cast<std::uint64_t>(std::llround(rewind.seconds / dt));
+    ImGui::PopItemWidth();
+    ImGui::TextDisabled("drag back and let go: you play on from there (Backspace: 1 s)");
+    ImGui::BeginDisabled(m.shotsFired() == 0 || m.shell().has_value());
+    if (ImGui::Button("Watch the last shot again (Z)", ImVec2(-FLT_MIN, 0))) choice.watchLastShot = true;
+    ImGui::EndDisabled();
+    ImGui::Separator();
+}
+
+} // namespace
+
+MenuChoice pauseMenu(PlayerSettings& settings, const std::string& silentWhy,
+                     const game::Match* match, RewindControl& rewind) {
     MenuChoice choice;
     centreNextWindow(300.0f);
     ImGui::Begin("Paused", nullptr,
@@ -325,6 +352,7 @@ MenuChoice pauseMenu(PlayerSettings& settings, const std::string& silentWhy) {
     if (ImGui::Button("Choose another level (L)", wide)) choice.levelSelect = true;
     if (ImGui::Button("Help (F1)", wide)) choice.help = true;
     ImGui::Separator();
+    if (match) rewindAndReplay(*match, rewind, choice);
     ImGui::PushItemWidth(panelPx(120));
     choice.settingsChanged |= difficultyCombo(settings);
     ImGui::PopItemWidth();
@@ -367,7 +395,7 @@ void helpOverlay(bool& open) {
         {"C", "camera follows the shell and frames the impact (on / off)"},
         {"Esc", "pause menu"},
         {"F1 or ?", "this help"},
-        {"F2", "physics panel"},
+        {"F2, F6", "the lab: physics panel, Stats window (compare integrators, energy, charts)"},
         {". (period)", "one tick (pauses)"},
         {"[ / ]", "slower / faster (x1/16 .. x4); \\ back to x1"},
         {"K", "pause / resume the simulation"},
@@ -406,71 +434,31 @@ void helpOverlay(bool& open) {
     ImGui::End();
 }
 
-MatchPanelRequests matchPanel(const game::Match& m, bool humanTurn, PlayerSettings& settings,
-                              game::Difficulty inUse, bool hotseatInUse, RewindControl& rewind,
-                              const std::string& branch) {
+MatchPanelRequests matchControls(const game::Match& m, bool humanTurn, ImVec2 corner) {
     MatchPanelRequests req;
-    // On the band of soil at the bottom, beside the aim panel: cannons, targets and
-    // castles stand above it, and the arcs fly higher still.
-    const ImVec2 d = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(besideAimReadout(d.x, d.y), d.y - hudMargin(d.x, d.y)),
-                            ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
-    // As tall as what it holds, every frame: a duel's line or a branch's note is never cut
-    // off by a size saved in a practice level.
-    ImGui::SetNextWindowSize(ImVec2(panelPx(250), 0), ImGuiCond_Always);
-    ImGui::Begin("Match", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
-    keepPanelOnScreen(hudMargin(d.x, d.y));
+    ImGui::SetNextWindowPos(corner, ImGuiCond_Always);
+    ImGui::Begin("Controls", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
     const game::CannonState& c = m.cannon();
     ImGui::BeginDisabled(!humanTurn);
     ImGui::PushItemWidth(panelPx(150));
     if (const auto chosen = projectilePicker(c)) req.projectile = *chosen;
     ImGui::PopItemWidth();
+    ImGui::SameLine();
     const bool canFire = !m.shell() && !m.over() && c.shotsLeft > 0;
     ImGui::BeginDisabled(!canFire);
-    if (ImGui::Button("FIRE", ImVec2(panelPx(110), panelPx(34)))) req.fire = true;
+    if (ImGui::Button("FIRE", ImVec2(panelPx(90), 0))) req.fire = true;
     ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(m.over() || m.shell().has_value() || m.level().mode != game::Mode::Duel);
-    if (ImGui::Button("End turn", ImVec2(panelPx(110), panelPx(34)))) req.endTurn = true;
-    ImGui::EndDisabled();
-    ImGui::EndDisabled();
-    req.settingsChanged |= ImGui::Checkbox("preview (P)", &settings.trajectoryPreview);
-    ImGui::SameLine();
-    req.settingsChanged |= ImGui::Checkbox("hint (H)", &settings.solutionHint);
-    req.settingsChanged |= ImGui::Checkbox("full preview (V)", &settings.fullPreview);
-    if (settings.fullPreview || settings.solutionHint) ImGui::TextColored(kDimText, "assisted: 2 stars at most");
-    if (m.level().mode == game::Mode::Duel)
-        ImGui::TextColored(kDimText, "%s", hotseatInUse ? "hotseat: two players" :
-                                               (std::string("computer: ") + game::difficultyName(inUse)).c_str());
-    // Rewind: back to any earlier moment; play goes on from there as a new branch (the
-    // later commands are dropped). Applied when the slider is let go.
-    const double dt = m.world().def().tickSeconds;
-    const double now = static_cast<double>(m.tick()) * dt;
-    if (!rewind.dragging) rewind.seconds = now;
-    ImGui::PushItemWidth(panelPx(150));
-    float seconds = static_cast<float>(rewind.seconds);
-    ImGui::SliderFloat("rewind", &seconds, 0.0f, static_cast<float>(now), "back to %.1f s",
-                       ImGuiSliderFlags_NoInput);
-    rewind.dragging = ImGui::IsItemActive();
-    rewind.seconds = std::min(static_cast<double>(seconds), now);
-    if (ImGui::IsItemDeactivatedAfterEdit() && rewind.seconds < now)
-        req.rewindTo = static_cast<std::uint64_t>(std::llround(rewind.seconds / dt));
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Drag back and let go: the match returns to that moment and you play on "
-                          "from there (a new branch). Backspace: 1 s back.");
-    ImGui::PopItemWidth();
-    // Once a shot has landed: see it again, from half a second before it left. Shown
-    // from the start, greyed until then, so the panel keeps its height (and home, which
-    // keeps clear of it, its place) through the first shot.
-    ImGui::BeginDisabled(m.shotsFired() == 0 || m.shell().has_value());
-    if (ImGui::Button("Watch the last shot again (Z)", ImVec2(panelPx(226), 0)))
-        req.watchLastShot = true;
-    ImGui::EndDisabled();
-    if (!branch.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kGoldText);
-        ImGui::TextWrapped("%s", branch.c_str());
-        ImGui::PopStyleColor();
+    if (m.level().mode == game::Mode::Duel) {
+        ImGui::SameLine();
+        ImGui::BeginDisabled(m.over() || m.shell().has_value());
+        if (ImGui::Button("End turn")) req.endTurn = true;
+        ImGui::EndDisabled();
     }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("Menu")) req.menu = true;
     ImGui::End();
     return req;
 }

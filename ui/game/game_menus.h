@@ -1,13 +1,15 @@
 // The game's ImGui screens and overlays: level select (the campaign's chapters, drawn by
-// ui/game/campaign_view.*), the recorded replays, pause menu, help, and the side panel with the
-// match controls (rewind included). Each is a function that draws one frame of it and reports what
-// the player chose (STYLE.md, "Dear ImGui"); the game screen acts on it.
+// ui/game/campaign_view.*), the recorded replays, the pause menu (rewinding included), help,
+// and the row of a turn's controls for the mouse. Each is a function that draws one frame of
+// it and reports what the player chose, as Dear ImGui's widgets do; the game screen acts on it.
 #pragma once
 
 #include "game/match.h"
 #include "game/progress.h"
 #include "ui/game/player_settings.h"
 #include "ui/play/physics_panel.h"
+
+#include <imgui.h>
 
 #include <cstdint>
 #include <optional>
@@ -83,6 +85,8 @@ struct MenuChoice {
     std::optional<RandomMapRequest> randomMap; ///< generate this map and play it
     std::optional<std::string> editLevel; ///< open the editor on this file ("" = a new level)
     bool continueEditing = false;         ///< back to the level the editor holds
+    std::optional<std::uint64_t> rewindTo; ///< go back to this tick and play on (a branch)
+    bool watchLastShot = false;            ///< the last shot again (ReplayControl::watchLastShot)
 };
 
 struct CampaignMenu; // ui/game/campaign_view.h
@@ -96,37 +100,35 @@ MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress&
                              const std::vector<LevelEntry>* levels = nullptr);
 /// The replays in `folder` ("" when this run keeps none: check runs, headless).
 MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::string& folder);
-/// The pause menu: resume, restart, levels, help, the player's choices and the Sound
-/// section. `silentWhy` is why the game plays silent ("" when it plays sound).
-MenuChoice pauseMenu(PlayerSettings& settings, const std::string& silentWhy = "");
+/// The pause menu's rewind slider: the moment it points at while it is dragged.
+struct RewindControl {
+    double seconds = 0.0;
+    bool dragging = false;
+};
+
+/// The pause menu: resume, restart, levels, help, the rewind slider and the last shot
+/// again (over `match`, when one is played), the player's choices and the Sound section.
+/// `silentWhy` is why the game plays silent ("" when it plays sound).
+MenuChoice pauseMenu(PlayerSettings& settings, const std::string& silentWhy,
+                     const game::Match* match, RewindControl& rewind);
 /// The Sound section: master, effects and UI volume and mute. True once an edit is done
 /// (a slider let go, the box ticked): time to save the settings.
 bool soundSection(game::audio::SoundMix& mix, const std::string& silentWhy);
 /// The keyboard, mouse and controller shortcuts. `open` is cleared by its close button.
 void helpOverlay(bool& open);
 
-/// What the match panel asked for this frame.
+/// What the turn's controls asked for this frame.
 struct MatchPanelRequests {
     bool fire = false;
     bool endTurn = false;
     std::optional<std::size_t> projectile;
     bool settingsChanged = false;
-    std::optional<std::uint64_t> rewindTo; ///< go back to this tick and play on (a branch)
-    bool watchLastShot = false;            ///< the last shot again (GameScreen::watchLastShot)
+    bool menu = false; ///< the pause menu
 };
 
-/// The match panel's rewind slider: the moment it points at while it is dragged.
-struct RewindControl {
-    double seconds = 0.0;
-    bool dragging = false;
-};
-
-/// The left-hand match panel: projectile combo, Fire and End turn buttons, the preview
-/// and hint toggles, the difficulty in use, and the rewind slider over [0, now] (applied
-/// when released). `humanTurn` greys out what only a person on turn may do; `branch`
-/// says where this game branched from, if it did.
-MatchPanelRequests matchPanel(const game::Match& match, bool humanTurn, PlayerSettings& settings,
-                              game::Difficulty inUse, bool hotseatInUse, RewindControl& rewind,
-                              const std::string& branch);
+/// The controls of a turn for the mouse, in one row with its top-left corner at `corner`
+/// (window points): the projectile, Fire, End turn (duels) and the pause menu. `humanTurn`
+/// greys out what only a person on turn may do.
+MatchPanelRequests matchControls(const game::Match& match, bool humanTurn, ImVec2 corner);
 
 } // namespace ui

@@ -13,6 +13,7 @@
 #include "ui/game/settings_commands.h"
 #include "ui/game/target_inset.h"
 #include "ui/platform/sdl_window.h"
+#include "ui/render/design_canvas.h"
 #include "ui/render/gl.h"
 #include "ui/render/screenshot.h"
 
@@ -215,15 +216,25 @@ void GameScreen::frame(double wallSeconds) {
     if (const game::Match* shown = shownMatch()) camera_.followShot(*shown, follows());
     markAssists();
     imgui_.newFrame(wallSeconds);
+    layout_.clear(context_.width(), context_.height());
+    // The panels stand where they stood last frame until they are drawn again: what is
+    // placed before them (the HUD's boxes, the close-up) keeps clear of them.
+    for (const auto& [name, rect] : drawnWindowRects()) layout_.addOverlay("panel." + name, rect);
     msaa_.bind(context_.framebuffer());
     drawWorld();
     stats_.vertices = renderer_.stats().vertices;
     msaa_.resolveInto(context_.framebuffer());
     drawPanels();
-    imgui_.drawLabels(renderer_.labels());
+    const std::vector<PixelRect> labels = imgui_.drawLabels(renderer_.labels());
+    for (std::size_t i = 0; i < labels.size(); ++i)
+        if (renderer_.labels()[i].world) layout_.addOverlay("label", labels[i]);
     imgui_.render();
+    std::erase_if(layout_.overlays, [](const LayoutOverlay& o) { return o.name.starts_with("panel."); });
+    for (const auto& [name, rect] : drawnWindowRects()) layout_.addOverlay("panel." + name, rect);
     hearFrame();
 }
+
+std::string GameScreen::layoutJson() const { return ui::layoutJson(layout_); }
 
 /// The frame's ticks: the replay's, or the live match's (the level being made is not
 /// simulated: it is drawn at its first tick).
@@ -304,10 +315,12 @@ void GameScreen::drawPlaying() {
         o.fullPreview = settings.fullPreview;
         o.solutionHint = settings.solutionHint && humanTurn;
         if (humanTurn && play_.aim().editing()) o.pending = play_.aim().pending();
+        if (humanTurn) o.rubberBand = play_.aim().rubberBand();
         o.charge = play_.aim().chargeFraction();
         o.banner = play_.banner();
         o.notice = play_.notice();
     }
+    o.layout = &layout_;
     const Camera shown = camera_.shaken(matchView_.effects(), settings.screenShake);
     drawMatchFrame(renderer_, matchView_, m, shown, o);
     if (!replays_.watching() && play_.active()) { // the rope being drawn, the hand and what it holds
@@ -315,11 +328,9 @@ void GameScreen::drawPlaying() {
         statsPanel_.drawWorld(renderer_, m);
         renderer_.flush();
     }
-    // Beside the Stats window when it is open where the close-up goes (last frame's place);
-    // not while its charts take the middle of the view.
-    TargetInsetDef insetDef;
-    if (const auto stats = openWindowRect("Stats")) insetDef = clearOf(insetDef, shown, *stats);
-    const auto inset = statsPanel_.chartsShown() ? std::nullopt : targetInset(m, shown, insetDef);
+    // Clear of what the frame shows; not while the Stats window's charts take the middle
+    // of the view.
+    const auto inset = statsPanel_.chartsShown() ? std::nullopt : targetInset(m, shown, {}, &layout_);
     if (inset) drawTargetInset(renderer_, matchView_, m, shown, *inset, o);
 }
 
@@ -330,7 +341,8 @@ void GameScreen::drawPanels() {
     }
     MenuChoice choice = menus_.draw(files_.progress(), files_.settings(), files_.replaysFolder(),
                                     sound_.silentWhy(),
-                                    editor_.held() ? editor_.held()->editor().level().name : "");
+                                    editor_.held() ? editor_.held()->editor().level().name : "",
+                                    play_.active() ? &play_.match() : nullptr, play_.rewind());
     if (replays_.watching() && menus_.overlay() == Overlay::None) replayPanel();
     bool sceneToEditor = false;
     if (play_.active() && !replays_.watching() && menus_.overlay() == Overlay::None)
@@ -352,9 +364,9 @@ void GameScreen::drawEditorPanels() {
 
 void GameScreen::replayPanel() {
     ReplayViewer& viewer = *replays_.viewer();
-    const ReplayRequests req = viewer.panel();
-    camera_.keepClearOfPanels(viewer.match(), openWindowRect("Replay"), context_.width(),
-                              context_.height(), follows());
+    const ReplayRequests req = viewer.panel(clearCorner("Replay", ImVec2(panelPx(470), panelPx(150))));
+    camera_.keepClearOfPanels(viewer.match(), std::nullopt, context_.width(), context_.height(),
+                              follows());
     if (req.takeOver)
         takeOverReplay();
     else if (req.close)
@@ -371,27 +383,59 @@ void GameScreen::matchPanels(MenuChoice& choice, bool& sceneToEditor) {
     game::Match& m = play_.match();
     PlayerSettings& settings = files_.settings();
     const bool humanTurn = play_.humanTurn();
-    const MatchPanelRequests req = matchPanel(m, humanTurn, settings, settings.difficulty,
-                                              hotseatInUse(), play_.rewind(), play_.branchNote());
-    camera_.keepClearOfPanels(m, openWindowRect("Match"), context_.width(), context_.height(),
-                              follows());
+    const MatchPanelRequests req =
+        matchControls(m, humanTurn, clearCorner("Controls", ImVec2(panelPx(420), panelPx(44))));
+    camera_.keepClearOfTheRight(labPanelsRight());
+    camera_.keepClearOfPanels(m, std::nullopt, context_.width(), context_.height(), follows());
     if (req.projectile)
         if (auto c = AimInput::select(m.cannon(), *req.projectile)) submit(*c);
     if (req.fire && humanTurn) submit(play_.aim().fire(m.cannon()));
-    if (req.watchLastShot) watchLastShot();
-    submit(sandboxTools_.panel(m));
+    if (req.menu) menus_.open(Overlay::Pause);
+    // The lab's panels: the sandbox's in a sandbox, the others on their keys.
+    if (m.sandbox()) submit(sandboxTools_.panel(m));
     sceneToEditor = sandboxTools_.takeSaveAsLevel();
     if (editor_.playtest()) playtestButton(choice);
     if (req.endTurn && humanTurn) submit(AimInput::endTurn());
     const PendingAim shownAim = play_.aim().editing()
                                     ? play_.aim().pending()
                                     : PendingAim{m.cannon().angleDeg, m.cannon().speedMps};
-    if (auto d = statsPanel_.panel(m, shownAim)) submit(settingCommands(m.world().def(), *d));
+    if (statsShown_)
+        if (auto d = statsPanel_.panel(m, shownAim)) submit(settingCommands(m.world().def(), *d));
     if (settings.physicsPanel) physicsPanelOfMatch(m);
     if (m.over() && play_.resultRecorded() && !choice.openLevel && !editor_.playtest())
         choice = menus_.nextLevelCard(files_.progress(), level_.file);
-    // Last: a rewind replaces the match `m` refers to.
-    if (req.rewindTo && play_.active()) rewindLive(*req.rewindTo);
+}
+
+/// How much of the width the lab's panels cover along the right edge, where they open
+/// (last frame's places): the camera frames the level left of them.
+double GameScreen::labPanelsRight() const {
+    const double W = context_.width();
+    double right = 0.0;
+    for (const char* name : {"Physics", "Stats"})
+        if (const auto r = openWindowRect(name); r && r->x1 >= W - 40.0 * hudScale(W, context_.height()))
+            right = std::max(right, (W - r->x0) / W);
+    return right;
+}
+
+ImVec2 GameScreen::clearCorner(const char* name, ImVec2 estimate) const {
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    ImVec2 size(estimate.x, estimate.y); // until it has been drawn once
+    if (const auto was = openWindowRect(name))
+        size = ImVec2(static_cast<float>((was->x1 - was->x0) / scale.x),
+                      static_cast<float>((was->y1 - was->y0) / scale.y));
+    const double W = context_.width(), H = context_.height(), u = hudScale(W, H);
+    const double w = size.x * scale.x, h = size.y * scale.y, m = 12.0 * u;
+    const double beside = 336.0 * u, top = kHudTopBand * u;
+    const std::vector<PixelRect> places = {{beside, H - m - h, beside + w, H - m},
+                                           {W - m - w, H - m - h, W - m, H - m},
+                                           {W - m - w, top, W - m, top + h},
+                                           {m, top, m + w, top + h},
+                                           {0.5 * (W - w), H - m - h, 0.5 * (W + w), H - m}};
+    std::vector<PixelRect> avoid = layout_.objectRects();
+    for (const LayoutOverlay& o : layout_.overlays)
+        if (o.name != std::string("panel.") + name) avoid.push_back(o.rect); // not itself
+    const auto place = firstClear(places, avoid, PixelRect{0.0, 0.0, W, H}).value_or(places.front());
+    return ImVec2(static_cast<float>(place.x0 / scale.x), static_cast<float>(place.y0 / scale.y));
 }
 
 void GameScreen::physicsPanelOfMatch(game::Match& m) {
@@ -444,6 +488,8 @@ void GameScreen::actOn(const MenuChoice& choice, bool sceneToEditor) {
                                              files_.mapsFolder(), menus_.randomMap().status))
             openLevel(*file);
     if (choice.openReplay) tryTo([&] { openReplay(*choice.openReplay); });
+    if (choice.rewindTo && play_.active()) rewindLive(*choice.rewindTo);
+    if (choice.watchLastShot && replays_.watchLastShot(play_)) menus_.close();
     if (choice.restart && shownMatch()) {
         restart();
         menus_.close();
@@ -489,6 +535,9 @@ void GameScreen::hearFrame() {
 }
 
 void GameScreen::warmUp(double seconds) {
+    // The camera follows through the warm-up as it would have, watched: it starts at the
+    // first tick, and its first frame after takes every tick since at once.
+    if (const game::Match* shown = shownMatch()) camera_.followShot(*shown, follows());
     if (ReplayViewer* viewer = replays_.viewer()) viewer->warmUp(seconds, matchView_);
     play_.warmUp(seconds, [&] {
         matchView_.observe(play_.match());

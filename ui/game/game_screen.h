@@ -31,6 +31,7 @@
 #include "ui/game/pad_input.h"
 #include "ui/game/player_files.h"
 #include "ui/game/replay_control.h"
+#include "ui/game/screen_layout.h"
 #include "ui/game/sandbox_tools.h"
 #include "ui/game/stats_panel.h"
 #include "ui/platform/gl_context.h"
@@ -105,6 +106,9 @@ class GameScreen final : public Screen {
     LevelEditorView* levelEditor() { return editor_.onScreen(); }
     /// The match being played is the editor's level (a playtest: the editor waits).
     bool playtest() const { return editor_.playtest(); }
+    /// What the last frame drawn showed: its overlays and the objects the player must see.
+    const ScreenLayout& layout() const { return layout_; }
+    std::string layoutJson() const override;
 
   private:
     // Moving between what is on screen.
@@ -135,6 +139,12 @@ class GameScreen final : public Screen {
     void drawEditorPanels();
     void replayPanel();
     void matchPanels(MenuChoice& choice, bool& sceneToEditor);
+    /// Where the ImGui window `name` goes (its top-left corner, window points): the first
+    /// of the usual places (beside the aim readout at the bottom, the bottom right, the
+    /// top right and the top left under the HUD's band, the bottom middle) where it covers
+    /// nothing the frame shows so far; its size is last frame's, or `estimate` (points).
+    ImVec2 clearCorner(const char* name, ImVec2 estimate) const;
+    double labPanelsRight() const;
     void physicsPanelOfMatch(game::Match& m);
     void playtestButton(MenuChoice& choice);
     void actOn(const MenuChoice& choice, bool sceneToEditor);
@@ -177,6 +187,8 @@ class GameScreen final : public Screen {
     PadInput pad_;          ///< a game controller, if one is plugged in
     GameSound sound_;
     FrameStats stats_;
+    ScreenLayout layout_; ///< the frame's overlays and objects, gathered as it is drawn
+    bool statsShown_ = false; ///< the Stats window (a lab panel: shown on its key)
     int framesMeasured_ = 0;
     bool running_ = true;
     bool networkDuel_ = false;

@@ -22,6 +22,7 @@ enum class GameKey {
     ToggleFullPreview, ///< V: the whole path
     ToggleFollow,      ///< C: the camera follows the shell
     TogglePhysicsPanel, ///< F2
+    ToggleStats,       ///< F6: the Stats window (compare, energy, charts)
     StepTick,          ///< . : one tick, paused
     TogglePause,       ///< K
     Slower,            ///< [

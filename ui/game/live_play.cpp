@@ -72,7 +72,7 @@ void LivePlay::pollHeldInput(double dt, bool keysFree, PadInput& pad) {
         if (pad.connected()) {
             const PadAxes stick = pad.axes();
             aim_.stick(stick.stickX, stick.stickY);
-            axes.power += stick.power;
+            axes.padPower = stick.power;
         }
     }
     submit(holdToAim(axes, dt, aim_, m, humanTurn()));

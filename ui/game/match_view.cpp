@@ -1,15 +1,17 @@
 // Section index
-//   palette      colours of the scene and the HUD
-//   camera       levelCamera
+//   palette      colours of the scene (shared ones: ui/game/palette.h)
 //   scenery      sky, hills, terrain, water, obstacles
 //   things       blocks, ropes, blobs, particles, cannons, targets
 //   effects      trails, preview, hint (the rest: ui/game/effects_view.cpp)
-//   HUD          panels in pixel space, wind arrow, power bar, stars, results card
+//   layout       the objects the player must see, as drawn (the HUD: ui/game/hud.cpp;
+//                the level's framing: ui/game/level_camera.cpp)
 #include "ui/game/match_view.h"
 #include "ui/game/weapon_look.h"
 
 #include "game/ai.h"
 #include "ui/game/effects_view.h"
+#include "ui/game/palette.h"
+#include "ui/game/screen_layout.h"
 #include "physics/integrators.h"
 #include "physics/rigid/rigid_world.h"
 
@@ -23,6 +25,7 @@ namespace ui {
 
 namespace {
 
+using namespace palette;
 using game::Match;
 using phys::Vec2;
 constexpr double kDeg = std::numbers::pi / 180.0;
@@ -49,76 +52,10 @@ const Color kWood = Color::hex(0x9a6b3f);
 const Color kStone = Color::hex(0x9c978c);
 const Color kRope = Color::hex(0xc9a86b);
 const Color kBlob = Color::hex(0xe35d9b, 0.85f);
-const Color kTargetRed = Color::hex(0xd8322e);
-const Color kTargetWhite = Color::hex(0xf4f1ea);
-const Color kHit = Color::hex(0x8a8a8a);
-const Color kShell = Color::hex(0x1b1d21);
 const Color kPreview = Color::hex(0xffffff, 0.85f);
 const Color kHint = Color::hex(0xffcf3a);
-const Color kPanel = Color::hex(0x0e1420, 0.8f);
-const Color kPanelEdge = Color::hex(0xffffff, 0.12f);
-const Color kText = Color::hex(0xf3efe6);
-const Color kTextDim = Color::hex(0xb9c2cf);
-const Color kGold = Color::hex(0xffc93c);
-const Color kNotice = Color::hex(0xffb27a); ///< a refused command: warm, not alarming
-/// One colour per cannon / player, so shells, trails and HUD rows match their cannon.
-const Color kTeams[] = {Color::hex(0x3b82f6), Color::hex(0xef4444), Color::hex(0x22c55e),
-                        Color::hex(0xf59e0b), Color::hex(0xa855f7), Color::hex(0x14b8a6),
-                        Color::hex(0xec4899), Color::hex(0x84cc16)};
-Color team(int i) { return kTeams[static_cast<std::size_t>(i) % std::size(kTeams)]; }
-
-Color mix(Color a, Color b, float t) {
-    return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t,
-            a.a + (b.a - a.a) * t};
-}
-Color darker(Color c, float f = 0.65f) { return {c.r * f, c.g * f, c.b * f, c.a}; }
 
 bool lowGravity(const Match& m) { return m.world().def().forces.gravity.y > -5.0; }
-
-// ---- pixel-space helpers for the HUD ---------------------------------------------------
-/// The HUD is laid out in pixels; the renderer draws in world units, so convert.
-/// The HUD is designed for 1280x720 and scaled by `u` to the picture, so a 640x360
-/// frame shows the same layout at half size.
-struct HudSpace {
-    Renderer2D& r;
-    double u = 1.0;
-    Vec2 w(double x, double y) const { return r.camera().toWorld({x * u, y * u}); }
-    double metres(double designPx) const { return r.camera().metres(designPx * u); }
-    void rect(double x0, double y0, double x1, double y1, Color c) const {
-        const Vec2 q[] = {w(x0, y1), w(x1, y1), w(x1, y0), w(x0, y0)};
-        r.fillConvex(q, c);
-    }
-    /// A panel: a rectangle with its corners cut (one convex octagon, so a translucent
-    /// fill never overlaps itself) and a faint top rim.
-    void panel(double x0, double y0, double x1, double y1, Color c = kPanel) const {
-        const double k = 5.0;
-        const Vec2 q[] = {w(x0 + k, y1), w(x1 - k, y1), w(x1, y1 - k), w(x1, y0 + k),
-                          w(x1 - k, y0), w(x0 + k, y0), w(x0, y0 + k), w(x0, y1 - k)};
-        r.fillConvex(q, c);
-        r.line(w(x0 + k, y0 + 0.5), w(x1 - k, y0 + 0.5), kPanelEdge, static_cast<float>(u));
-    }
-    void text(double x, double y, const std::string& s, Color c, float scale = 1.0f,
-              float alignX = 0.0f) const {
-        r.screenLabel({x * u, y * u}, s, c, scale * static_cast<float>(u), alignX);
-    }
-};
-
-/// A five-pointed star (not convex: a pentagon and five triangles).
-void star(Renderer2D& r, Vec2 c, double outer, Color fill) {
-    const double inner = outer * 0.42;
-    Vec2 o[5], in[5];
-    for (int k = 0; k < 5; ++k) {
-        const double a = std::numbers::pi / 2 + k * 2 * std::numbers::pi / 5;
-        const double b = a + std::numbers::pi / 5;
-        o[k] = c + Vec2{std::cos(a), std::sin(a)} * outer;
-        in[k] = c + Vec2{std::cos(b), std::sin(b)} * inner;
-    }
-    r.fillConvex(in, fill);
-    for (int k = 0; k < 5; ++k) {
-        const Vec2 tri[] = {o[k], in[(k + 4) % 5], in[k]};
-        r.fillConvex(tri, fill);
-    }
-}
 
 // ---- scenery ----------------------------------------------------------------------------
 void drawSky(Renderer2D& r, const Match& m, double groundTop) {
@@ -428,8 +365,7 @@ void drawCannon(Renderer2D& r, const Match& m, int index, double angleDeg, bool 
 
 void drawTarget(Renderer2D& r, const game::TargetState& t) {
     const Vec2 c = t.position;
-    // Never under 6 px, so a far target is still a bullseye and not a dot.
-    const double rad = std::max(t.def.radius, r.camera().metres(6.0));
+    const double rad = targetDrawRadius(t, r.camera());
     const bool moving = !t.def.path.empty();
     if (moving) {
         // Its rail, so the player can lead the shot.
@@ -451,176 +387,14 @@ void drawTarget(Renderer2D& r, const game::TargetState& t) {
     }
 }
 
-// ---- HUD --------------------------------------------------------------------------------
-std::string playerName(const Match& m, const MatchViewOptions& o, int i) {
-    if (static_cast<std::size_t>(i) < o.playerNames.size()) return o.playerNames[static_cast<std::size_t>(i)];
-    return defaultPlayerName(m.cannons()[static_cast<std::size_t>(i)].def.player);
-}
-
-void drawWindArrow(const HudSpace& s, double cx, double y, double wind) {
-    char text[48];
-    if (std::abs(wind) < 0.05)
-        std::snprintf(text, sizeof text, "calm");
-    else
-        std::snprintf(text, sizeof text, "%.1f m/s %s", std::abs(wind), wind > 0 ? "->" : "<-");
-    s.panel(cx - 90, y, cx + 90, y + 56);
-    s.text(cx, y + 5, "WIND", kTextDim, 0.8f, 0.5f);
-    // Arrow length grows with the wind up to 15 m/s.
-    const double len = std::abs(wind) < 0.05 ? 0.0 : 24.0 + std::min(std::abs(wind), 15.0) / 15.0 * 100.0;
-    const double sign = wind >= 0 ? 1.0 : -1.0;
-    if (len > 1.0) {
-        const Color c = std::abs(wind) > 8 ? Color::hex(0xff8a65) : Color::hex(0x9be7ff);
-        s.r.arrow(s.w(cx - sign * len / 2, y + 29), s.w(cx + sign * len / 2, y + 29), c,
-                  static_cast<float>(4.0 * s.u), static_cast<float>(13.0 * s.u));
-    }
-    s.text(cx, y + 36, text, kText, 0.85f, 0.5f);
-}
-
-void drawPowerBar(const HudSpace& s, double x, double y, double w, double fraction, Color colour,
-                  std::optional<double> charge) {
-    s.rect(x, y, x + w, y + 12, Color::hex(0x000000, 0.45f));
-    const double f = std::clamp(fraction, 0.0, 1.0);
-    // Green to red as power rises.
-    const Color fill = mix(Color::hex(0x4ade80), Color::hex(0xef4444), static_cast<float>(f));
-    s.rect(x + 2, y + 2, x + 2 + (w - 4) * f, y + 10, charge ? fill : mix(fill, colour, 0.3f));
-    for (int k = 1; k < 4; ++k)
-        s.rect(x + w * k / 4.0, y + 1, x + w * k / 4.0 + 1, y + 11, Color::hex(0xffffff, 0.25f));
-}
-
-void drawHud(Renderer2D& r, const Match& m, const MatchViewOptions& o, const PendingAim& aim) {
-    const Camera& c = r.camera();
-    const double u = hudScale(c.width, c.height);
-    const HudSpace s{r, u};
-    const double W = c.width / u, H = c.height / u; // the canvas in design pixels
-    const game::CannonState& cs = m.cannon();
-    const int cur = m.currentPlayer();
-    const bool duel = m.level().mode == game::Mode::Duel;
-
-    // Top left: level, mode, turn, score.
-    s.panel(12, 12, 330, duel ? 112 : 96);
-    s.text(24, 18, m.level().name, kText, 1.1f);
-    char line[128];
-    std::snprintf(line, sizeof line, "%s", game::modeName(m.level().mode));
-    s.text(318, 21, line, kTextDim, 0.8f, 1.0f);
-    if (duel) {
-        for (int i = 0; i < static_cast<int>(m.cannons().size()) && i < 2; ++i) {
-            const auto& ci = m.cannons()[static_cast<std::size_t>(i)];
-            const double yy = 46 + 22 * i;
-            r.fillCircle(s.w(30, yy + 9), s.metres(5), team(i));
-            std::snprintf(line, sizeof line, "%s%s   HP %d", playerName(m, o, i).c_str(),
-                          i == cur && !m.over() ? "  (to fire)" : "", ci.hitPoints);
-            s.text(42, yy, line, i == cur ? kText : kTextDim, 0.9f);
-        }
-        std::snprintf(line, sizeof line, "shots fired %d", m.shotsFired());
-        s.text(24, 90, line, kTextDim, 0.8f);
-    } else if (m.sandbox()) {
-        s.text(24, 44, "no score, no shot budget", kGold, 1.0f);
-        std::snprintf(line, sizeof line, "shots fired %d   %zu particles   %zu blocks", m.shotsFired(),
-                      m.world().particles.count(), m.blocks().size());
-        s.text(24, 68, line, kText, 0.9f);
-    } else {
-        std::snprintf(line, sizeof line, "score %d / %d", m.score(), m.maxScore());
-        s.text(24, 44, line, kGold, 1.0f);
-        if (m.assisted()) s.text(318, 44, "assisted: 2 stars at most", kTextDim, 0.8f, 1.0f);
-        std::snprintf(line, sizeof line, "shots left %d", cs.shotsLeft);
-        s.text(24, 68, line, kText, 0.9f);
-        // Shot pips.
-        for (int k = 0; k < std::min(cs.shotsLeft, 12); ++k)
-            r.fillCircle(s.w(140 + 14 * k, 77), s.metres(4.5), kShell.withAlpha(0.9f));
-        for (int k = 0; k < std::min(cs.shotsLeft, 12); ++k)
-            r.fillCircle(s.w(139 + 14 * k, 76), s.metres(1.6), Color::hex(0x9aa0aa));
-    }
-
-    drawWindArrow(s, W / 2, 12, m.wind());
-    if (!o.banner.empty()) {
-        // Wide enough for the line: the HUD font averages under 8 design px a character.
-        const double half = std::max(120.0, 4.0 * static_cast<double>(o.banner.size()) + 14.0);
-        s.panel(W / 2 - half, 76, W / 2 + half, 106, Color::hex(0x000000, 0.55f));
-        s.text(W / 2, 81, o.banner, kGold, 1.0f, 0.5f);
-    }
-
-    // Bottom left: the aim of the cannon whose turn it is.
-    const double y0 = H - 118;
-    s.panel(12, y0, 330, H - 12);
-    r.fillCircle(s.w(28, y0 + 18), s.metres(6), team(cur));
-    s.text(40, y0 + 8, playerName(m, o, cur), kText, 1.0f);
-    std::snprintf(line, sizeof line, "angle %.1f deg", aim.angleDeg);
-    s.text(24, y0 + 34, line, kText, 0.95f);
-    std::snprintf(line, sizeof line, "power %.1f / %.0f m/s", aim.speedMps, cs.def.maxSpeedMps);
-    s.text(170, y0 + 34, line, kText, 0.95f);
-    const double shown = o.charge ? *o.charge * cs.def.maxSpeedMps : aim.speedMps;
-    drawPowerBar(s, 24, y0 + 60, 294, shown / cs.def.maxSpeedMps, team(cur), o.charge);
-    const game::Ammo ammo = m.selectedAmmo();
-    const int left = cs.projectile < cs.ammoLeft.size() ? cs.ammoLeft[cs.projectile] : -1;
-    std::snprintf(line, sizeof line, "%zu/%zu  %s  %.3g kg  %.0f mm%s", cs.projectile + 1,
-                  cs.def.projectiles.size(), ammo.preset.name ? ammo.preset.name : "?",
-                  ammo.preset.mass, ammo.preset.diameter * 1000.0,
-                  left >= 0 ? ("  x" + std::to_string(left)).c_str() : "");
-    s.text(24, y0 + 80, line, kTextDim, 0.85f);
-    if (ammo.weapon) s.text(24, y0 + 96, weaponHudLine(ammo), kTextDim, 0.75f);
-
-    // Bottom right: the physics the shot is under (what the level teaches).
-    const phys::WorldDef& d = m.world().def();
-    std::snprintf(line, sizeof line, "g %.2f m/s^2   drag %s   %s %.0f Hz   t %.1f s",
-                  -d.forces.gravity.y, d.forces.drag == phys::DragModel::None ? "off" : "on",
-                  phys::info(d.integrator).name, 1.0 / d.tickSeconds, m.time());
-    s.panel(W - 460, H - 40, W - 12, H - 12, Color::hex(0x0e1420, 0.55f));
-    s.text(W - 24, H - 36, line, kTextDim, 0.8f, 1.0f);
-    if (!o.notice.empty()) {
-        s.panel(W - 460, H - 74, W - 12, H - 46, Color::hex(0x0e1420, 0.75f));
-        s.text(W - 24, H - 70, o.notice, kNotice, 0.8f, 1.0f);
-    }
-
-    // The match is over: a results card with the stars.
-    if (m.over()) {
-        s.panel(W / 2 - 210, H / 2 - 110, W / 2 + 210, H / 2 + 80, Color::hex(0x0e1420, 0.85f));
-        if (duel) {
-            const int win = m.winner();
-            const std::string who = win < 0 ? std::string("Draw") : playerName(m, o, win) + " wins!";
-            s.text(W / 2, H / 2 - 90, who, win < 0 ? kText : team(win), 1.8f, 0.5f);
-        } else {
-            s.text(W / 2, H / 2 - 95, m.stars() > 0 ? "Level complete!" : "Out of shots", kText, 1.6f, 0.5f);
-            for (int k = 0; k < 3; ++k) {
-                const Vec2 p = s.w(W / 2 + (k - 1) * 70, H / 2 - 20);
-                star(r, p, s.metres(30), Color::hex(0x000000, 0.4f));
-                star(r, p, s.metres(26), k < m.stars() ? kGold : Color::hex(0x3a4150));
-            }
-            std::snprintf(line, sizeof line, "score %d / %d   shots %d", m.score(), m.maxScore(),
-                          m.shotsFired());
-            s.text(W / 2, H / 2 + 28, line, kText, 1.1f, 0.5f);
-            if (m.assisted())
-                s.text(W / 2, H / 2 + 52, "assisted (full preview or hint): no third star", kTextDim, 0.9f, 0.5f);
-        }
-    }
-}
-
 } // namespace
 
-namespace {
-
-/// The lowest point of what the player aims at or fires from (cannons, targets, blocks,
-/// blobs), m; infinity where there is none.
-double lowestThingStanding(const Match& m) {
-    const game::Level& l = m.level();
-    double lowest = INFINITY;
-    for (const auto& c : m.cannons())
-        lowest = std::min(lowest, c.def.position.y - game::kCannonRadius);
-    for (const auto& t : m.targets())
-        lowest = std::min(lowest, t.position.y - t.def.radius);
-    for (const auto& b : l.blocks)
-        lowest = std::min(lowest, b.position.y - 0.5 * b.size.y);
-    for (const auto& b : l.blobs)
-        lowest = std::min(lowest, b.center.y - b.radius);
-    return lowest;
+double targetDrawRadius(const game::TargetState& t, const Camera& camera) {
+    return std::max(t.def.radius, camera.metres(6.0));
 }
 
-} // namespace
-
-double coveredBottom(const PixelRect& panel, double width, double height) {
-    if (!(height > 0.0)) return 0.0;
-    double top = height - 118.0 * hudScale(width, height); // the aim readout's
-    if (panel.y1 >= 0.9 * height) top = std::min(top, panel.y0);
-    return std::clamp((height - top) / height, 0.0, 1.0);
+double shellDrawRadius(double radius, const Camera& camera) {
+    return std::max(radius, camera.metres(4.0));
 }
 
 double cannonDrawScale(const Camera& camera) {
@@ -636,71 +410,9 @@ std::string defaultPlayerName(const std::string& player) {
     return "Player " + player;
 }
 
-// ---- camera -------------------------------------------------------------------------------
-Camera levelCamera(const Match& m, int width, int height, double coveredBottom) {
-    const game::Level& l = m.level();
-    double ground = INFINITY, top = -INFINITY;
-    for (const Vec2 p : m.terrain().points()) ground = std::min(ground, p.y), top = std::max(top, p.y);
-    for (const auto& c : m.cannons()) top = std::max(top, c.def.position.y + 3.0);
-    for (const auto& t : m.targets()) top = std::max(top, t.position.y + t.def.radius + 2.0);
-    for (const auto& b : l.blocks) top = std::max(top, b.position.y + b.size.y + 2.0);
-    for (const auto& o : l.obstacles)
-        for (const Vec2 p : o.points) top = std::max(top, p.y + 2.0);
-    // The width: from the leftmost to the rightmost thing to see, with room around them,
-    // within the level's bounds.
-    double left = INFINITY, right = -INFINITY;
-    auto see = [&](Vec2 p) { left = std::min(left, p.x), right = std::max(right, p.x); };
-    for (const auto& c : m.cannons()) see(c.def.position);
-    for (const auto& t : m.targets()) {
-        see(t.position);
-        for (const Vec2 p : t.def.path) see(p);
-    }
-    for (const auto& b : l.blocks) see(b.position);
-    for (const auto& r : l.ropes) see(r.from), see(r.to);
-    for (const auto& b : l.blobs) see(b.center);
-    const double margin = 0.08 * (right - left) + 8.0;
-    const double xMin = std::max(l.worldMin.x, left - margin);
-    const double xMax = std::min(l.worldMax.x, right + margin);
-    const double aspect = static_cast<double>(height) / width;
-    // The whole width of the level, with a band of soil under the lowest ground (the
-    // bottom HUD sits on it) and the sky above for the arcs. When the things to see are
-    // taller than the width allows, the height decides and the view is centred on x.
-    // The soil is deeper where the panels along the bottom reach higher: what stands
-    // lowest (a cannon, a target, a block, a blob: not a pit's floor) is 3 % of the
-    // height above them.
-    const double lowest = lowestThingStanding(m);
-    const double clear = std::isfinite(coveredBottom) ? std::min(coveredBottom, 0.5) + 0.03 : 0.0;
-    auto soilFor = [&](double visible) {
-        const double standing = std::isfinite(lowest) ? std::max(0.0, lowest - ground) : 0.0;
-        return std::max(0.22, clear - standing / visible);
-    };
-    const double widthHeight = (xMax - xMin) * aspect;
-    double visibleHeight = widthHeight, soilFraction = 0.22;
-    for (int pass = 0; pass < 2; ++pass) { // the soil sets the height, which sets the soil
-        soilFraction = std::max(soilFraction, soilFor(visibleHeight));
-        // Room for the things to see above the soil, whatever its depth.
-        const double needed = std::max((top - ground) * 1.35 + soilFraction * widthHeight,
-                                       (top - ground) / (1.0 - soilFraction));
-        visibleHeight = std::max(widthHeight, needed);
-    }
-    Camera cam;
-    cam.width = width;
-    cam.height = height;
-    cam.pixelsPerMetre = height / visibleHeight;
-    const double bottom = ground - soilFraction * visibleHeight;
-    cam.center = {0.5 * (xMin + xMax), bottom + 0.5 * visibleHeight};
-    // A view wider than the things to see (the height decided) slides inside the level's
-    // bounds where they are wide enough: what lies outside them cannot be reached (a
-    // sandbox spawn there is refused), so it is not shown as if it were ground and sky.
-    // [xMin, xMax] stays in view: it lies within the bounds and is no wider than the view.
-    const double halfWidth = 0.5 * width / cam.pixelsPerMetre;
-    if (l.worldMax.x - l.worldMin.x >= 2.0 * halfWidth)
-        cam.center.x = std::clamp(cam.center.x, l.worldMin.x + halfWidth, l.worldMax.x - halfWidth);
-    return cam;
-}
-
 // ---- MatchView ------------------------------------------------------------------------------
 void MatchView::reset() {
+    hud_.reset();
     current_ = {};
     old_.clear();
     trailShell_ = phys::kNoParticle;
@@ -853,11 +565,19 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
         drawCannon(r, m, i, active ? aim.angleDeg : m.cannons()[static_cast<std::size_t>(i)].angleDeg,
                    active);
     }
+    if (aiming && o.rubberBand) {
+        // The rubber band: from the cannon to the pointer, thicker the harder it pulls.
+        const Vec2 pivot = cs.def.position, end = r.camera().toWorld(*o.rubberBand);
+        const float pull = static_cast<float>(std::clamp(aim.speedMps / cs.def.maxSpeedMps, 0.0, 1.0));
+        r.line(pivot, end, Color::hex(0x000000, 0.35f), 5.0f + 3.0f * pull);
+        r.line(pivot, end, team(m.currentPlayer()).withAlpha(0.9f), 2.5f + 2.0f * pull);
+        r.strokeCircle(end, r.camera().metres(7.0), Color::hex(0xffffff, 0.9f), 2.0f);
+    }
     drawLooseParticles(r, m, shell);
     if (shell) {
         const phys::ParticleSet& ps = m.world().particles;
         const Vec2 p = ps.position(*shell);
-        const double rad = std::max(ps.radius[*shell], r.camera().metres(4.0));
+        const double rad = shellDrawRadius(ps.radius[*shell], r.camera());
         r.fillCircle(p, rad * 1.6, Color::hex(0xffffff, 0.35f));
         r.fillCircle(p, rad, kShell);
         r.fillCircle(p + Vec2{-0.3, 0.3} * rad, rad * 0.35, Color::hex(0x8a9099));
@@ -879,7 +599,62 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
         w.rigid = &m.rigid();
         drawOverlays(r, m.world(), w);
     }
-    if (o.hud) drawHud(r, m, o, aim);
+    addObjects(r, m, o);
+    if (o.hud) hud_.draw(r, m, o, aim, effects_);
+}
+
+Vec2 turnedHalf(const game::Match& m, const game::BlockState& b) {
+    const double a = m.rigid().state(b.body).angle;
+    const double c = std::abs(std::cos(a)), s = std::abs(std::sin(a));
+    const Vec2 h = 0.5 * b.def.size;
+    return {c * h.x + s * h.y, s * h.x + c * h.y};
+}
+
+void MatchView::addObjects(const Renderer2D& r, const Match& m, const MatchViewOptions& o) const {
+    if (!o.layout) return;
+    const Camera& c = r.camera();
+    auto add = [&](const char* kind, Vec2 lo, Vec2 hi) {
+        const Vec2 a = c.toPixel({lo.x, hi.y}) + o.layoutOffset, b = c.toPixel({hi.x, lo.y}) + o.layoutOffset;
+        PixelRect p{a.x, a.y, b.x, b.y};
+        if (o.layoutClip) {
+            if (!p.overlaps(*o.layoutClip)) return;
+            p = {std::max(p.x0, o.layoutClip->x0), std::max(p.y0, o.layoutClip->y0),
+                 std::min(p.x1, o.layoutClip->x1), std::min(p.y1, o.layoutClip->y1)};
+        }
+        o.layout->addObject(kind, o.layoutView, p);
+    };
+    for (const game::TargetState& t : m.targets()) {
+        if (t.hit) continue;
+        const double rad = targetDrawRadius(t, c);
+        add("target", t.position - Vec2{rad, rad}, t.position + Vec2{rad, rad});
+    }
+    for (const game::BlockState& b : m.blocks()) {
+        if (!b.def.target || b.toppled || !m.rigid().alive(b.body)) continue;
+        const Vec2 p = m.rigid().state(b.body).position, h = turnedHalf(m, b);
+        add("target", p - h, p + h);
+    }
+    for (const game::BlobState& b : m.blobs()) {
+        if (!b.def.target || b.toppled || !m.world().particles.alive(b.center)) continue;
+        const Vec2 p = m.world().particles.position(b.center);
+        const double rad = 1.25 * b.def.radius;
+        add("target", p - Vec2{rad, rad}, p + Vec2{rad, rad});
+    }
+    const double k = cannonDrawScale(c);
+    const bool duel = m.level().mode == game::Mode::Duel;
+    for (const game::CannonState& cs : m.cannons()) {
+        const Vec2 p = cs.def.position;
+        // The barrel turns about the pivot; the wheel hangs under it; a duel's pips over it.
+        add("cannon", p - Vec2{1.6 * k, 0.9 * k}, p + Vec2{1.6 * k, duel ? 3.15 * k : 1.6 * k});
+    }
+    if (const auto shell = m.shell()) {
+        const phys::ParticleSet& ps = m.world().particles;
+        const double rad = 1.6 * shellDrawRadius(ps.radius[*shell], c);
+        add("shell", ps.position(*shell) - Vec2{rad, rad}, ps.position(*shell) + Vec2{rad, rad});
+    }
+    for (const game::Flash& f : effects_.flashes()) {
+        if (f.age >= effects_.def().flashSeconds) continue;
+        add("impact", f.where - Vec2{f.radius, f.radius}, f.where + Vec2{f.radius, f.radius});
+    }
 }
 
 } // namespace ui

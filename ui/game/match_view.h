@@ -16,6 +16,9 @@
 #include "game/effects/effects.h"
 #include "game/match.h"
 #include "ui/render/camera.h"
+#include "ui/game/hud.h"
+#include "ui/game/level_camera.h"
+#include "ui/game/screen_layout.h"
 #include "ui/render/design_canvas.h"
 #include "ui/render/pixel_rect.h"
 #include "ui/render/renderer2d.h"
@@ -52,15 +55,26 @@ struct MatchViewOptions {
     /// The aim being edited in the window; the barrel, the power bar and the preview
     /// follow it instead of the cannon's committed aim.
     std::optional<PendingAim> pending;
+    /// Where a drag pulls the aim, px (a rubber band from the cannon, with the power and
+    /// angle it sets beside the pointer), while one is aiming.
+    std::optional<phys::Vec2> rubberBand;
     /// Fraction 0..1 of a Space charge in progress (draws the charge gauge), if any.
     std::optional<double> charge;
     /// Name of who plays each cannon, as the HUD shows it ("Player 1", "Computer").
     std::vector<std::string> playerNames;
     /// A line in the middle of the top of the screen ("Paused", "x0.25").
     std::string banner;
-    /// A command the match refused, above the status line at the bottom right
-    /// ("spawn: spawn point is outside the world"), "" for none.
+    /// A command the match refused ("spawn: spawn point is outside the world"), "" for none.
     std::string notice;
+    /// The frame's layout (screen_layout.h): the objects drawn go into it, as seen from
+    /// `layoutView` ("main", or "inset" for the close-up, whose picture lies at
+    /// `layoutOffset` on the screen and is `layoutClip` there); the HUD's boxes are placed
+    /// clear of them and go into it too. Null: nothing is gathered, the boxes stand at
+    /// their first places.
+    ScreenLayout* layout = nullptr;
+    std::string layoutView = "main";
+    phys::Vec2 layoutOffset;
+    std::optional<PixelRect> layoutClip;
 };
 
 /// How much of the path the preview shows when it is not the full one, the launch arc:
@@ -80,16 +94,10 @@ std::size_t launchArcPoints(const std::vector<phys::Vec2>& path, double tickSeco
                             double metresPerPixel);
 
 /// Where the panels beside the aim readout at the bottom left start, in screen pixels:
-/// right of it, whatever the HUD's scale (the readout ends at 330 design pixels).
+/// right of it, whatever the HUD's scale (the readout ends at 324 design pixels).
 inline float besideAimReadout(double width, double height) {
-    return static_cast<float>(342.0 * hudScale(width, height));
+    return static_cast<float>(336.0 * hudScale(width, height));
 }
-/// How much of the screen's height, from the bottom, the panels along it cover (a
-/// fraction, for the follow camera to frame the shot above it): the aim readout, 118
-/// design pixels tall, and `panel` (the Match panel, or the replay viewer's, in the same
-/// pixels as width and height) while it stands on the bottom, as it opens; moved up, it
-/// is left out (folded, the caller passes an empty rect).
-double coveredBottom(const PixelRect& panel, double width, double height);
 /// The HUD's margin to the screen's edges (12 design pixels), which the panels beside it
 /// keep too.
 inline float hudMargin(double width, double height) {
@@ -104,16 +112,24 @@ inline float topRightPanelsTop(double width, double height, float panelWidth, fl
     const bool overGauge = width - margin - panelWidth < 0.5 * width + 90.0 * u + margin;
     return overGauge ? static_cast<float>(68.0 * u) + margin : margin;
 }
-/// Where the panels under the level's heading at the top left start, in screen pixels
-/// (the heading ends at 112 design pixels in a duel, 96 otherwise).
+/// Where the panels under the score box at the top left start, in screen pixels (the box
+/// ends at 82 design pixels in a duel, 76 otherwise).
 inline float belowLevelHeading(double width, double height) {
-    return static_cast<float>(120.0 * hudScale(width, height));
+    return static_cast<float>(90.0 * hudScale(width, height));
 }
 
 /// Seen from far, a 1.5 m barrel is a few pixels: cannons are drawn scaled by this
 /// factor (>= 1) so the barrel is at least 24 px long and the aim reads at a glance.
 /// The shell still leaves from the true muzzle.
 double cannonDrawScale(const Camera& camera);
+
+/// A target's radius as drawn, m: never under 6 px, so a far target is still a bullseye.
+double targetDrawRadius(const game::TargetState& target, const Camera& camera);
+/// The shell's radius as drawn, m: never under 4 px (its glow reaches 1.6 times that).
+double shellDrawRadius(double radius, const Camera& camera);
+
+/// Half extents of the axis-aligned box around a block turned by its body's angle, m.
+phys::Vec2 turnedHalf(const game::Match& match, const game::BlockState& block);
 
 /// The colour of cannon `index`'s team (its band, carriage, shells' trails, HUD rows).
 phys::Color teamColor(int index);
@@ -123,13 +139,6 @@ phys::Color targetWhite();
 
 /// How the HUD names a cannon's `player` field: "Computer" for "cpu", else "Player N".
 std::string defaultPlayerName(const std::string& player);
-
-/// A camera that shows the level: its whole width, the ground near the bottom, and
-/// every cannon, target and block inside. Under the lowest ground lies a band of soil,
-/// 22 % of the height, or deeper where the window's panels cover the bottom higher
-/// (`coveredBottom`, a fraction of the height: see coveredBottom()), so that nothing to
-/// aim at or fire from stands under them.
-Camera levelCamera(const game::Match& match, int width, int height, double coveredBottom = 0.0);
 
 class MatchView {
   public:
@@ -150,6 +159,8 @@ class MatchView {
     void drawPreview(Renderer2D& r, const game::Match& match, const PendingAim& aim, bool full);
     void drawHint(Renderer2D& r, const game::Match& match);
     void drawTrails(Renderer2D& r, const game::Match& match);
+    /// Puts what the player must see, as drawn, into `options.layout`.
+    void addObjects(const Renderer2D& r, const game::Match& match, const MatchViewOptions& options) const;
 
     struct Trail {
         std::vector<phys::Vec2> points;
@@ -175,6 +186,7 @@ class MatchView {
     std::vector<phys::Vec2> preview_;
     std::optional<PendingAim> hint_;
     bool hintExact_ = false;
+    Hud hud_;
 };
 
 } // namespace ui

@@ -16,7 +16,8 @@ void MenuFlow::showReplays(const std::string& folder) {
 
 MenuChoice MenuFlow::draw(const game::Progress& progress, PlayerSettings& settings,
                           const std::string& replaysFolder, const std::string& silentWhy,
-                          const std::string& editing) {
+                          const std::string& editing, const game::Match* match,
+                          RewindControl& rewind) {
     MenuChoice choice;
     editorForm_.editing = editing;
     if (overlay_ == Overlay::LevelSelect)
@@ -24,7 +25,7 @@ MenuChoice MenuFlow::draw(const game::Progress& progress, PlayerSettings& settin
     if (overlay_ == Overlay::Lesson)
         choice = lessonScreen(campaign_.campaign, lessonChapter_, lessonThenLevel_);
     if (overlay_ == Overlay::Replays) choice = replaysScreen(replays_, replaysFolder);
-    if (overlay_ == Overlay::Pause) choice = pauseMenu(settings, silentWhy);
+    if (overlay_ == Overlay::Pause) choice = pauseMenu(settings, silentWhy, match, rewind);
     drawHelp();
     return choice;
 }

@@ -38,10 +38,11 @@ class MenuFlow {
     void showReplays(const std::string& folder);
 
     /// Draws the open menu and the help; what the player chose this frame. `editing` names
-    /// the level the editor holds ("" none); `silentWhy` why the game plays silent.
+    /// the level the editor holds ("" none); `silentWhy` why the game plays silent; `match`
+    /// the match played (the pause menu rewinds it with `rewind`), null for none.
     MenuChoice draw(const game::Progress& progress, PlayerSettings& settings,
                     const std::string& replaysFolder, const std::string& silentWhy,
-                    const std::string& editing);
+                    const std::string& editing, const game::Match* match, RewindControl& rewind);
     /// The card at a finished level's end: the next level on the way, again, the select.
     MenuChoice nextLevelCard(const game::Progress& progress, const std::string& levelFile) const;
     /// Carries out the choices that only move between menus (a lesson, the replays, back,

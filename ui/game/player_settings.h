@@ -39,7 +39,7 @@ struct PlayerSettings {
     bool solutionHint = false;     ///< assisted: no third star
     bool cameraFollow = true;      ///< the camera follows the shell and frames the impact
     bool screenShake = true;       ///< blasts shake the view (off for comfort)
-    bool physicsPanel = true;
+    bool physicsPanel = false;     ///< the physics panel (F2), a lab panel: closed until asked for
     DrawChoices draw;
     /// Master, effects and UI volume (0..1) and mute: the settings panel's Sound section.
     game::audio::SoundMix sound;

@@ -155,77 +155,31 @@ void ReplayViewer::jumpBy(double seconds) {
 }
 
 // ---- controls -------------------------------------------------------------------------
-ReplayRequests ReplayViewer::panel() {
+ReplayRequests ReplayViewer::panel(ImVec2 corner) {
     ReplayRequests req;
     const game::ReplayPlayer& p = *player_;
     const double dt = tickSeconds();
-    const ImVec2 d = ImGui::GetIO().DisplaySize;
-    // On the band of soil at the bottom, beside the aim panel, where the match panel is
-    // in a game.
-    const float left = besideAimReadout(d.x, d.y);
-    const float margin = hudMargin(d.x, d.y);
-    ImGui::SetNextWindowPos(ImVec2(left, d.y - margin), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
-    ImGui::SetNextWindowSize(ImVec2(std::min(panelPx(560), d.x - left - margin), 0),
-                             ImGuiCond_FirstUseEver);
-    ImGui::Begin("Replay", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
-    ImGui::TextColored(kGoldText, "%s", std::filesystem::path(file_).filename().string().c_str());
-    ImGui::SameLine();
-    ImGui::TextColored(kDimText, "%s, %.1f s, %zu shots", p.match().level().name.c_str(),
+    // Where the game screen found room for it: clear of what the player watches.
+    ImGui::SetNextWindowPos(corner, ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(panelPx(470), 0), ImGuiCond_Always);
+    ImGui::Begin("Replay", nullptr,
+                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::TextColored(kDimText, "%s: %.1f s, %zu shots", p.match().level().name.c_str(),
                        static_cast<double>(p.lastTick()) * dt, p.shotTicks().size());
-
+    transportRow();
     // The scrub bar over the whole recording; it seeks while dragged, backwards too.
     std::uint64_t shown = seek_.value_or(p.tick());
     const std::uint64_t lo = 0, hi = std::max<std::uint64_t>(p.lastTick(), 1);
     char label[64];
-    std::snprintf(label, sizeof label, "%.2f s  (tick %llu / %llu)",
-                  static_cast<double>(shown) * dt, static_cast<unsigned long long>(shown),
-                  static_cast<unsigned long long>(p.lastTick()));
+    std::snprintf(label, sizeof label, "%.1f s of %.1f s", static_cast<double>(shown) * dt,
+                  static_cast<double>(p.lastTick()) * dt);
     ImGui::SetNextItemWidth(-FLT_MIN);
     if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &shown, &lo, &hi, label)) seek_ = shown;
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Drag to any moment (going back re-simulates from the start)");
-
-    const auto prevShot = previousShot(), nextShot = p.shotAfter(seek_.value_or(p.tick()));
-    if (buttonWhen(prevShot.has_value(), "|< shot", "previous shot (Page Up)")) seek_ = prevShot;
-    ImGui::SameLine();
-    if (ImGui::Button("< 1 s")) jumpBy(-1.0);
-    ImGui::SameLine();
-    if (ImGui::Button(paused_ ? (p.atEnd() ? "Play again" : "Play") : "Pause",
-                      ImVec2(panelPx(90), 0)))
-        togglePlay();
-    ImGui::SameLine();
-    if (buttonWhen(!p.atEnd(), "Step", "one tick (.); one back: ,")) {
-        paused_ = true;
-        stepRequested_ = true;
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("1 s >")) jumpBy(1.0);
-    ImGui::SameLine();
-    if (buttonWhen(nextShot.has_value(), "shot >|", "next shot (Page Down)")) seek_ = nextShot;
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(panelPx(110));
-    speedPicked_ |=
-        ImGui::SliderInt("speed", &speed_, 0, static_cast<int>(std::size(kReplaySpeeds)) - 1,
-                         kSpeedNames[speed_], ImGuiSliderFlags_NoInput);
-
-    // Is the re-simulation still the recorded game?
-    if (const auto& div = p.divergence()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kBadText);
-        ImGui::TextWrapped(
-            "DIVERGED at %.2f s (tick %llu) in %s: the re-simulation no longer matches "
-            "the recording (another build, or an edited file)",
-            static_cast<double>(div->tick) * dt, static_cast<unsigned long long>(div->tick),
-            div->what.c_str());
-        ImGui::PopStyleColor();
-    } else {
-        ImGui::TextColored(kGoodText, "re-simulates bit for bit: %zu of %zu checkpoints matched",
-                           p.checkpointsChecked(), p.replay().checkpoints.size());
-    }
-    if (p.refusedCommands() > 0)
-        ImGui::TextColored(kBadText, "%zu recorded command(s) refused", p.refusedCommands());
-
-    ImGui::Separator();
-    if (ImGui::Button("Take over (T)", ImVec2(panelPx(140), 0))) req.takeOver = true;
+        ImGui::SetTooltip("Drag to any moment (going back plays it again from the start)");
+    verdictLine();
+    if (ImGui::Button("Take over (T)")) req.takeOver = true;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Play on from this moment: the commands so far are kept and a new replay "
                           "branches from here");
@@ -239,12 +193,55 @@ ReplayRequests ReplayViewer::panel() {
         ImGui::SameLine();
         if (ImGui::Button("Replays")) req.close = true;
     }
-    // The keys on a line of their own (beside the buttons they ran past the panel's
-    // edge); the export's state takes their place (the panel keeps its height).
-    if (!videoLine())
-        ImGui::TextColored(kDimText, "Space play/pause  . step  [ ] speed  PgUp/PgDn shots");
+    videoLine();
     ImGui::End();
     return req;
+}
+
+void ReplayViewer::transportRow() {
+    const game::ReplayPlayer& p = *player_;
+    const auto prevShot = previousShot(), nextShot = p.shotAfter(seek_.value_or(p.tick()));
+    if (buttonWhen(prevShot.has_value(), "|<", "the previous shot (Page Up)")) seek_ = prevShot;
+    ImGui::SameLine();
+    if (buttonWhen(true, "<<", "a second back (left arrow)")) jumpBy(-1.0);
+    ImGui::SameLine();
+    if (ImGui::Button(paused_ ? (p.atEnd() ? "Again" : "Play") : "Pause", ImVec2(panelPx(70), 0)))
+        togglePlay();
+    ImGui::SameLine();
+    if (buttonWhen(!p.atEnd(), "Step", "one tick (.); one back: ,")) {
+        paused_ = true;
+        stepRequested_ = true;
+    }
+    ImGui::SameLine();
+    if (buttonWhen(true, ">>", "a second on (right arrow)")) jumpBy(1.0);
+    ImGui::SameLine();
+    if (buttonWhen(nextShot.has_value(), ">|", "the next shot (Page Down)")) seek_ = nextShot;
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    speedPicked_ |=
+        ImGui::SliderInt("##speed", &speed_, 0, static_cast<int>(std::size(kReplaySpeeds)) - 1,
+                         kSpeedNames[speed_], ImGuiSliderFlags_NoInput);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("speed ([ and ])");
+}
+
+/// What a player wants to know of a recording: that it plays as it was played, or from
+/// when it does not and what differs. Said once it is known, not as a running count.
+void ReplayViewer::verdictLine() {
+    const game::ReplayPlayer& p = *player_;
+    const double dt = tickSeconds();
+    if (const auto& div = p.divergence()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kBadText);
+        ImGui::TextWrapped("Not as recorded from %.1f s (tick %llu): %s differs. Another build, "
+                           "or an edited file.",
+                           static_cast<double>(div->tick) * dt,
+                           static_cast<unsigned long long>(div->tick), div->what.c_str());
+        ImGui::PopStyleColor();
+    } else if (p.atEnd() && p.checkpointsChecked() > 0) {
+        ImGui::TextColored(kGoodText, "Replay verified: it plays exactly as it was recorded.");
+    }
+    if (p.refusedCommands() > 0)
+        ImGui::TextColored(kBadText, "%zu recorded command(s) could not be played here",
+                           p.refusedCommands());
 }
 
 ReplayRequests ReplayViewer::key(const SDL_Keysym& k, bool repeat, bool& handled) {

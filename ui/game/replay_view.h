@@ -18,6 +18,7 @@
 #include "ui/video/video_export.h"
 
 #include <SDL_keyboard.h>
+#include <imgui.h>
 
 #include <cstdint>
 #include <optional>
@@ -50,8 +51,9 @@ class ReplayViewer {
                  std::optional<double> tickBudgetSeconds = std::nullopt);
     /// Plays `seconds` at once, without drawing (--warmup).
     void warmUp(double seconds, MatchView& view);
-    /// The "Replay" window.
-    ReplayRequests panel();
+    /// The "Replay" window, its top-left corner at `corner` (window points): what it is,
+    /// the transport, the scrub bar, whether it plays as recorded, take over, export.
+    ReplayRequests panel(ImVec2 corner);
     /// A key press (repeats included: held . or arrows keep stepping). Returns what it
     /// asks of the screen; keys it does not know are left to the screen.
     ReplayRequests key(const SDL_Keysym& key, bool repeat, bool& handled);
@@ -81,6 +83,8 @@ class ReplayViewer {
 
   private:
     void togglePlay();
+    void transportRow();
+    void verdictLine();
     void changeSpeed(int by);
     void jumpBy(double seconds);
     /// The panel's words about "Export video": running, where it went, or why not (in

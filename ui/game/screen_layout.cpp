@@ -49,10 +49,12 @@ std::vector<Covering> coverings(const ScreenLayout& layout) {
 
 namespace {
 
-std::string rectText(const PixelRect& r) {
-    char text[96];
-    std::snprintf(text, sizeof text, "[%.0f, %.0f, %.0f, %.0f]", std::floor(r.x0), std::floor(r.y0),
-                  std::ceil(r.x1) - std::floor(r.x0), std::ceil(r.y1) - std::floor(r.y0));
+/// [x, y, w, h] in whole pixels, the rectangle's pixels all inside; `separator` between.
+std::string rectText(const PixelRect& r, const char* separator = ", ") {
+    char text[112];
+    std::snprintf(text, sizeof text, "[%.0f%s%.0f%s%.0f%s%.0f]", std::floor(r.x0), separator,
+                  std::floor(r.y0), separator, std::ceil(r.x1) - std::floor(r.x0), separator,
+                  std::ceil(r.y1) - std::floor(r.y0));
     return text;
 }
 
@@ -75,19 +77,32 @@ std::string describe(const ScreenLayout& layout, const Covering& c) {
 }
 
 std::string layoutJson(const ScreenLayout& layout) {
-    std::string out = "{\"size\":[" + std::to_string(layout.width) + "," +
-                      std::to_string(layout.height) + "],\"overlays\":[";
+    std::string out = "{\"size\":[";
+    out += std::to_string(layout.width);
+    out += ',';
+    out += std::to_string(layout.height);
+    out += "],\"overlays\":[";
     for (std::size_t i = 0; i < layout.overlays.size(); ++i) {
-        const LayoutOverlay& o = layout.overlays[i];
-        out += (i ? "," : "") + std::string("{\"name\":") + quoted(o.name) + ",\"rect\":" + rectText(o.rect) + "}";
+        if (i > 0) out += ',';
+        out += "{\"name\":";
+        out += quoted(layout.overlays[i].name);
+        out += ",\"rect\":";
+        out += rectText(layout.overlays[i].rect, ",");
+        out += '}';
     }
     out += "],\"objects\":[";
     for (std::size_t i = 0; i < layout.objects.size(); ++i) {
-        const LayoutObject& o = layout.objects[i];
-        out += (i ? "," : "") + std::string("{\"kind\":") + quoted(o.kind) + ",\"view\":" + quoted(o.view) +
-               ",\"rect\":" + rectText(o.rect) + "}";
+        if (i > 0) out += ',';
+        out += "{\"kind\":";
+        out += quoted(layout.objects[i].kind);
+        out += ",\"view\":";
+        out += quoted(layout.objects[i].view);
+        out += ",\"rect\":";
+        out += rectText(layout.objects[i].rect, ",");
+        out += '}';
     }
-    return out + "]}";
+    out += "]}";
+    return out;
 }
 
 bool inside(const PixelRect& inner, const PixelRect& outer) {

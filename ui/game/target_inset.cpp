@@ -1,6 +1,9 @@
 #include "ui/game/target_inset.h"
 
 #include "game/match.h"
+#include "ui/game/level_camera.h"
+#include "ui/game/screen_layout.h"
+#include "ui/render/design_canvas.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,14 +30,6 @@ struct Box {
     }
 };
 
-/// Half extents of the axis-aligned box around a block turned by its body's angle.
-Vec2 blockHalf(const game::Match& m, const game::BlockState& b) {
-    const double a = m.rigid().state(b.body).angle;
-    const double c = std::abs(std::cos(a)), s = std::abs(std::sin(a));
-    const Vec2 h = 0.5 * b.def.size;
-    return {c * h.x + s * h.y, s * h.x + c * h.y};
-}
-
 } // namespace
 
 std::optional<std::pair<Vec2, Vec2>> aimedAtBox(const game::Match& m) {
@@ -42,7 +37,7 @@ std::optional<std::pair<Vec2, Vec2>> aimedAtBox(const game::Match& m) {
     for (const game::TargetState& t : m.targets())
         if (!t.hit) box.add(t.position, t.def.radius);
     for (const game::BlockState& b : m.blocks())
-        if (b.def.target && !b.toppled) box.add(m.rigid().state(b.body).position, blockHalf(m, b));
+        if (b.def.target && !b.toppled) box.add(m.rigid().state(b.body).position, turnedHalf(m, b));
     for (const game::BlobState& b : m.blobs())
         if (b.def.target && !b.toppled) box.add(m.world().particles.position(b.center), b.def.radius);
     for (std::size_t i = 0; i < m.cannons().size(); ++i) {
@@ -64,26 +59,65 @@ std::optional<std::pair<Vec2, Vec2>> aimedAtBox(const game::Match& m) {
         Box near = marked;
         near.lo = near.lo - Vec2{6.0, 6.0};
         near.hi = near.hi + Vec2{6.0, 6.0};
-        if (near.overlaps(p, blockHalf(m, b))) box.add(p, blockHalf(m, b));
+        if (near.overlaps(p, turnedHalf(m, b))) box.add(p, turnedHalf(m, b));
     }
     return std::pair{box.lo, box.hi};
 }
 
+namespace {
+
+/// The smallest of the targets still standing as drawn, m across: discs at their drawn
+/// radius, target blocks and blobs by their shorter side; infinity where there is none.
+double smallestTarget(const game::Match& m, const Camera& screen) {
+    double smallest = INFINITY;
+    for (const game::TargetState& t : m.targets())
+        if (!t.hit) smallest = std::min(smallest, 2.0 * targetDrawRadius(t, screen));
+    for (const game::BlockState& b : m.blocks())
+        if (b.def.target && !b.toppled) smallest = std::min({smallest, b.def.size.x, b.def.size.y});
+    for (const game::BlobState& b : m.blobs())
+        if (b.def.target && !b.toppled) smallest = std::min(smallest, 2.0 * b.def.radius);
+    return smallest;
+}
+
+/// Where the close-up may stand, w x h px, in order: the top right under the HUD's band,
+/// the top left under it, the bottom right and the bottom left over the aim's band.
+std::vector<PixelRect> insetPlaces(const Camera& screen, const TargetInsetDef& def, double w, double h) {
+    const double W = screen.width, H = screen.height, m = def.rightPx, top = def.topPx;
+    const double bottom = H - kHudBottomBand * hudScale(W, H) - h;
+    return {{W - m - w, top, W - m, top + h}, {m, top, m + w, top + h},
+            {W - m - w, bottom, W - m, bottom + h}, {m, bottom, m + w, bottom + h}};
+}
+
+} // namespace
+
 std::optional<TargetInset> targetInset(const game::Match& m, const Camera& screen,
-                                       const TargetInsetDef& def) {
+                                       const TargetInsetDef& def, const ScreenLayout* layout) {
     const auto aimed = aimedAtBox(m);
     if (!aimed) return std::nullopt;
     const auto [lo, hi] = *aimed;
-    // Shown readable already: the main view's own picture of it is tall enough.
+    // Shown readable already: the main view's own picture of it is tall enough, and no
+    // target in it is too small to make out.
     const double shownPx = std::max(hi.y - lo.y, 1.0) * screen.pixelsPerMetre;
-    if (shownPx >= def.readablePx) return std::nullopt;
-    TargetInset inset;
-    const int w = static_cast<int>(std::lround(def.widthFraction * screen.width));
-    const int h = static_cast<int>(std::lround(w * 9.0 / 16.0));
-    const Vec2 margin{def.marginM, def.marginM};
-    inset.camera = Camera::framing(lo - margin, hi + margin, w, h);
-    inset.cornerPx = {screen.width - def.rightPx - w, def.topPx};
-    return inset;
+    const double smallestPx = smallestTarget(m, screen) * screen.pixelsPerMetre;
+    if (shownPx >= def.readablePx && smallestPx >= def.smallestPx) return std::nullopt;
+    std::vector<PixelRect> avoid;
+    if (layout) avoid = layout->objectRects();
+    if (layout)
+        for (const PixelRect& r : layout->overlayRects()) avoid.push_back(r);
+    const PixelRect whole{0.0, 0.0, static_cast<double>(screen.width), static_cast<double>(screen.height)};
+    // As large as a clear place allows: its full size, else smaller.
+    for (const double fraction : {def.widthFraction, 0.75 * def.widthFraction, 0.55 * def.widthFraction}) {
+        const int w = static_cast<int>(std::lround(fraction * screen.width));
+        const int h = static_cast<int>(std::lround(w * 9.0 / 16.0));
+        const auto place = firstClear(insetPlaces(screen, def, w, h), avoid, whole);
+        if (!place) continue;
+        TargetInset inset;
+        const Vec2 margin{def.marginM, def.marginM};
+        inset.camera = Camera::framing(lo - margin, hi + margin, w, h);
+        inset.cornerPx = {place->x0, place->y0};
+        return inset;
+    }
+    return std::nullopt;
 }
 
 TargetInsetDef clearOf(TargetInsetDef def, const Camera& screen, const PixelRect& panel) {
@@ -104,6 +138,14 @@ void drawTargetInset(Renderer2D& r, MatchView& view, const game::Match& m, const
     o.pending.reset();
     o.charge.reset();
     o.banner.clear();
+    if (o.layout) {
+        const PixelRect rect{inset.cornerPx.x, inset.cornerPx.y,
+                             inset.cornerPx.x + inset.camera.width, inset.cornerPx.y + inset.camera.height};
+        o.layout->addOverlay("inset", rect);
+        o.layoutView = "inset";
+        o.layoutOffset = inset.cornerPx;
+        o.layoutClip = rect;
+    }
     const int x = static_cast<int>(std::lround(inset.cornerPx.x));
     const int yUp = screen.height - static_cast<int>(std::lround(inset.cornerPx.y)) -
                     inset.camera.height; // GL counts rows from the bottom

@@ -20,9 +20,14 @@ class Match;
 }
 
 namespace ui {
+struct ScreenLayout;
+}
+
+namespace ui {
 
 struct TargetInsetDef {
     double readablePx = 64.0;  ///< what is aimed at reads well from this tall on screen, px
+    double smallestPx = 10.0;  ///< a target reads from this across, px
     double widthFraction = 0.3; ///< the close-up's width, fraction of the screen's
     double topPx = 84.0;        ///< below the top panels, px
     double rightPx = 12.0;      ///< from the right edge, px
@@ -40,16 +45,22 @@ struct TargetInset {
 std::optional<std::pair<Vec2, Vec2>> aimedAtBox(const game::Match& match);
 
 /// The close-up for a frame seen through `screen`, or nothing when the screen already
-/// shows what is aimed at at least `def.readablePx` tall (or nothing is aimed at).
+/// shows what is aimed at readably: at least `def.readablePx` tall, and every target in
+/// it at least `def.smallestPx` across (or nothing is aimed at). With `layout`, it stands
+/// where it covers none of the layout's objects and overlays (the top right under the
+/// HUD's band, else the top left, else the bottom corners; smaller if it must), and
+/// nothing when no place is clear.
 std::optional<TargetInset> targetInset(const game::Match& match, const Camera& screen,
-                                       const TargetInsetDef& def = {});
+                                       const TargetInsetDef& def = {},
+                                       const ScreenLayout* layout = nullptr);
 
 /// `def` with the close-up moved left of `panel` where the panel covers its place, if
 /// there is room left of it; else `def` as it is.
 TargetInsetDef clearOf(TargetInsetDef def, const Camera& screen, const PixelRect& panel);
 
 /// Draws the close-up over the frame just drawn through `screen` (no HUD, no preview,
-/// the effects as in the main view), with a frame and the distance from the cannon.
+/// the effects as in the main view), with a frame and the distance from the cannon. With
+/// `options.layout`, it goes in as the overlay "inset", and its objects as view "inset".
 void drawTargetInset(Renderer2D& renderer, MatchView& view, const game::Match& match,
                      const Camera& screen, const TargetInset& inset,
                      MatchViewOptions options);

@@ -20,6 +20,18 @@ std::optional<std::vector<game::Command>> pressTurnKey(SDL_Keycode key, AimInput
         return std::vector<game::Command>{AimInput::endTurn()};
     case SDLK_TAB:
         return selected(AimInput::selectNext(c));
+    case SDLK_LEFT:
+    case SDLK_RIGHT:
+    case SDLK_UP:
+    case SDLK_DOWN: {
+        // A tap steps once, at once: a tap shorter than a frame still counts.
+        if (m.shell()) return std::vector<game::Command>{};
+        const bool fine = (SDL_GetModState() & KMOD_SHIFT) != 0;
+        const int angle = key == SDLK_LEFT ? 1 : key == SDLK_RIGHT ? -1 : 0;
+        const int power = key == SDLK_UP ? 1 : key == SDLK_DOWN ? -1 : 0;
+        aim.step(angle, power, fine, c.def.maxSpeedMps);
+        return std::vector<game::Command>{};
+    }
     default:
         if (key >= SDLK_1 && key <= SDLK_8)
             return selected(AimInput::select(c, static_cast<std::size_t>(key - SDLK_1)));
@@ -65,10 +77,13 @@ std::vector<game::Command> holdToAim(HeldAxes axes, double dt, AimInput& aim,
     std::vector<game::Command> settled;
     if (!myTurn || m.shell()) {
         aim.cancelCharge();
-    } else if (axes.angle != 0.0 || axes.power != 0.0) {
+    } else if (axes.angle != 0.0 || axes.power != 0.0 || axes.padPower != 0.0) {
         aim.hold(axes.angle, axes.power, dt, c.def.maxSpeedMps);
-    } else if (aim.editing() && !aim.dragging() && !aim.charging()) {
-        settled = aim.commit(c); // keys released (or the stick let go): the aim settles
+        aim.sweep(0.0, axes.padPower, dt, c.def.maxSpeedMps);
+    } else {
+        aim.releaseHold();
+        if (aim.editing() && !aim.dragging() && !aim.charging())
+            settled = aim.commit(c); // keys released (or the stick let go): the aim settles
     }
     aim.updateCharge(dt);
     aim.sync(c);

@@ -2,8 +2,10 @@
 // every window that plays a turn (the game's, the network duel's), so a duel across the
 // network plays as one at home.
 //
-//   drag from anywhere   aim: direction = angle, length = power (AimInput)
-//   arrow keys (held)    angle and power, Shift for fine steps; settle on release
+//   drag from anywhere   aim: direction = angle, length = power (AimInput), drawn as a
+//                        rubber band; a click leaves the aim alone
+//   arrow keys           angle and power: a tap steps 0.5 deg or 0.5 m/s (Shift 0.1),
+//                        held they repeat, faster the longer; settle on release
 //   Space                hold to charge from zero, release to fire; a tap fires at the
 //                        power set
 //   Enter, F             fire at the aim set
@@ -42,7 +44,8 @@ bool dragToAim(const SDL_Event& e, AimInput& aim, const game::Match& m, bool myT
 
 /// The arrow keys held now as angle and power axes, -1..1 (a fifth with Shift held).
 struct HeldAxes {
-    double angle = 0.0, power = 0.0;
+    double angle = 0.0, power = 0.0; ///< the arrow keys: they repeat after a delay
+    double padPower = 0.0;           ///< a controller's triggers: at once, analog
 };
 HeldAxes heldArrowKeys();
 

@@ -17,6 +17,7 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+#include <string_view>
 
 namespace ui {
 
@@ -129,13 +130,18 @@ void keepPanelOnScreen(float margin) {
 void ImGuiLayer::setPanelScale(float scale) {
     ImGuiIO& io = ImGui::GetIO();
     io.Fonts->Clear();
-    if (std::filesystem::exists(kFontPath)) {
-        io.Fonts->AddFontFromFileTTF(kFontPath, kFontPixels * scale);
-    } else {
-        ImFontConfig builtIn;
-        builtIn.SizePixels = 13.0f * scale; // the built-in font's own size, 13 px
-        io.Fonts->AddFontDefault(&builtIn);
-    }
+    // The text the game writes: Latin, Greek (theta, omega), punctuation (the dashes),
+    // super- and subscripts, arrows, mathematical operators (the root, the minus) and the
+    // stars of the results card. ImGui's ranges are pairs, ended by a zero.
+    static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x206F,
+                                      0x2070, 0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF,
+                                      0x25A0, 0x25FF, 0x2600, 0x26FF, 0};
+    // The layout of every panel and label is measured in this font: without it the game
+    // would draw another layout than the one it was made for.
+    if (!std::filesystem::exists(kFontPath))
+        throw std::runtime_error(std::string("the font ") + kFontPath +
+                                 " is missing: install the package fonts-dejavu-core");
+    io.Fonts->AddFontFromFileTTF(kFontPath, kFontPixels * scale, nullptr, kRanges);
     ImGui::GetStyle() = designStyle();
     ImGui::GetStyle().ScaleAllSizes(scale);
     if (io.Fonts->TexID) { // else the backend's first frame builds it
@@ -204,23 +210,36 @@ void ImGuiLayer::keepPanelsInPlace(Vec2 was, Vec2 now) {
     }
 }
 
-void ImGuiLayer::drawLabels(std::span<const Label> labels) {
+std::vector<PixelRect> ImGuiLayer::drawLabels(std::span<const Label> labels) {
     ImDrawList* list = ImGui::GetBackgroundDrawList();
     ImFont* font = ImGui::GetFont();
     // Labels are placed in framebuffer pixels; ImGui works in window points.
     const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    std::vector<PixelRect> drawn;
+    drawn.reserve(labels.size());
     for (const Label& l : labels) {
         const ImU32 colour =
             ImGui::ColorConvertFloat4ToU32(ImVec4(l.color.r, l.color.g, l.color.b, l.color.a));
         const float size = ImGui::GetFontSize() / scale_ * l.scale; // the design size
-        const float width =
-            l.alignX != 0.0f ? font->CalcTextSizeA(size, FLT_MAX, 0.0f, l.text.c_str()).x : 0.0f;
-        const ImVec2 p(std::round(static_cast<float>(l.pixel.x) / scale.x - l.alignX * width),
+        const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.0f, l.text.c_str());
+        const ImVec2 p(std::round(static_cast<float>(l.pixel.x) / scale.x - l.alignX * extent.x),
                        std::round(static_cast<float>(l.pixel.y) / scale.y));
         // A one-pixel dark shadow keeps text readable on sky and ground alike.
         list->AddText(font, size, ImVec2(p.x + 1, p.y + 1), IM_COL32(0, 0, 0, 140), l.text.c_str());
         list->AddText(font, size, p, colour, l.text.c_str());
+        drawn.push_back({p.x * scale.x, p.y * scale.y, (p.x + extent.x + 1) * scale.x,
+                         (p.y + extent.y + 1) * scale.y});
     }
+    return drawn;
+}
+
+PixelRect labelRect(const Label& l) {
+    ImFont* font = ImGui::GetFont();
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    const float size = ImGui::GetFontSize() / gPanelScale * l.scale;
+    const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.0f, l.text.c_str());
+    const double x0 = l.pixel.x - l.alignX * extent.x * scale.x;
+    return {x0, l.pixel.y, x0 + (extent.x + 1) * scale.x, l.pixel.y + (extent.y + 1) * scale.y};
 }
 
 void ImGuiLayer::render() {
@@ -251,6 +270,20 @@ std::optional<PixelRect> openWindowRect(const char* name) {
     const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
     return PixelRect{w->Pos.x * scale.x, w->Pos.y * scale.y, (w->Pos.x + w->Size.x) * scale.x,
                      (w->Pos.y + w->Size.y) * scale.y};
+}
+
+std::vector<std::pair<std::string, PixelRect>> drawnWindowRects() {
+    std::vector<std::pair<std::string, PixelRect>> rects;
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    for (const ImGuiWindow* w : ImGui::GetCurrentContext()->Windows) {
+        if (!drawnLastFrame(*w) || (w->Flags & ImGuiWindowFlags_ChildWindow)) continue;
+        // The fallback window ImGui keeps for widgets outside any window, never shown here.
+        if (std::string_view(w->Name).starts_with("Debug##")) continue;
+        const ImRect r = w->Rect(); // a folded window: its title bar
+        rects.emplace_back(w->Name, PixelRect{r.Min.x * scale.x, r.Min.y * scale.y,
+                                              r.Max.x * scale.x, r.Max.y * scale.y});
+    }
+    return rects;
 }
 
 // ImGui's own hover test (FindHoveredWindow, run at the next frame's start) on the

@@ -10,6 +10,9 @@
 
 #include <optional>
 #include <span>
+#include <string>
+#include <utility>
+#include <vector>
 
 union SDL_Event;
 
@@ -20,6 +23,11 @@ class SdlWindow;
 /// Where the ImGui window `name` was drawn open (not folded) in the last frame, in
 /// framebuffer pixels, or nothing: what a panel covers, for what the game draws beside it.
 std::optional<PixelRect> openWindowRect(const char* name);
+/// Every window drawn in the last frame (folded ones by their title bar; tooltips and
+/// pop-ups too), by its ImGui name, in framebuffer pixels: what the panels cover.
+std::vector<std::pair<std::string, PixelRect>> drawnWindowRects();
+/// Where `label` will be drawn, in framebuffer pixels, in the font of the panels being built.
+PixelRect labelRect(const Label& label);
 
 /// Design pixels (the 1280x720 canvas of ui/render/design_canvas.h) to pixels of the
 /// panels being built: what a fixed width or position in a panel is given in, so it
@@ -50,8 +58,9 @@ class ImGuiLayer {
     bool processEvent(const SDL_Event& event);
     /// Starts an ImGui frame of `dtSeconds`.
     void newFrame(double dtSeconds);
-    /// Queues the renderer's text labels behind every ImGui window.
-    void drawLabels(std::span<const Label> labels);
+    /// Queues the renderer's text labels behind every ImGui window; where each was put,
+    /// in framebuffer pixels.
+    std::vector<PixelRect> drawLabels(std::span<const Label> labels);
     /// Draws the ImGui frame into the currently bound framebuffer.
     void render();
 

@@ -154,6 +154,7 @@ struct RunReport {
     std::string context;
     std::string screenshot; ///< absolute path, "" when none
     bool networkDuel = false; ///< the player chose Network duel in the menu
+    std::string layout;       ///< the last frame's layout as JSON, "" for none
 };
 
 void parseSize(const Args& args, PlayOptions& o) {
@@ -341,6 +342,7 @@ int runHeadless(const PlayOptions& o, RunReport& report) {
         screen.setMeasuredFrameMs(ms);
         accumulate(report, ms);
     }
+    report.layout = screen.layoutJson();
     return saveIfAsked(screen, o, report) ? game::cli::kOk : game::cli::kCheckFailed;
 }
 
@@ -373,6 +375,7 @@ int runWindow(const PlayOptions& o, RunReport& report) {
             if (screen.saveScreenshot(name).empty())
                 std::cout << "screenshot: " << absolute(name) << std::endl;
         }
+        if (lastFrame) report.layout = screen.layoutJson();
         if (lastFrame && !saveIfAsked(screen, o, report)) return game::cli::kCheckFailed;
         window->present();
         const double ms = msSince(now);
@@ -395,6 +398,7 @@ void printReport(std::ostream& out, const RunReport& r, const PlayOptions& o, bo
             out << "null";
         else
             out << "\"" << r.screenshot << "\"";
+        if (!r.layout.empty()) out << ",\"layout\":" << r.layout;
         out << "}\n";
         return;
     }

@@ -24,6 +24,9 @@ class Screen {
     virtual void setMeasuredFrameMs(double ms) = 0;
     /// Simulates `seconds` without drawing (--warmup).
     virtual void warmUp(double seconds) = 0;
+    /// The last frame's layout as JSON (ui/game/screen_layout.h), "" for a screen that
+    /// does not gather one.
+    virtual std::string layoutJson() const { return ""; }
 };
 
 } // namespace ui

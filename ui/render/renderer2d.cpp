@@ -261,7 +261,7 @@ void Renderer2D::arrow(Vec2 from, Vec2 to, Color color, float widthPx, float hea
 void Renderer2D::label(Vec2 p, std::string text, Color color, Vec2 offsetPx, float scale,
                        float alignX) {
     labels_.push_back({camera_.toPixel(p) + offsetPx * labelScale_, std::move(text), color,
-                       scale * labelScale_, alignX});
+                       scale * labelScale_, alignX, true});
 }
 
 void Renderer2D::screenLabel(Vec2 pixel, std::string text, Color color, float scale, float alignX) {

@@ -34,6 +34,9 @@ struct Label {
     Color color;
     float scale = 1.0f;  ///< relative to the UI font size
     float alignX = 0.0f; ///< which point of the text sits at `pixel`: 0 left, 0.5 centre, 1 right
+    /// Placed by a point of the world (label()), not laid out in pixels by the HUD or a
+    /// chart (screenLabel()): an overlay of its own over the field.
+    bool world = false;
 };
 
 struct RenderStats {

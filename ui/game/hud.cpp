@@ -1,0 +1,347 @@
+// Section index
+//   drawing     HudSpace: the design canvas in the renderer's world units; star, gauges
+//   boxes       the score, wind, aim, banner, notice and end-of-match card, each a box
+//   placing     Hud::place: a box's places in order, clear of the layout's objects
+#include "ui/game/hud.h"
+
+#include "ui/game/match_view.h"
+#include "ui/game/palette.h"
+#include "ui/game/screen_layout.h"
+#include "ui/game/weapon_look.h"
+#include "ui/render/design_canvas.h"
+#include "physics/integrators.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace ui {
+
+namespace {
+
+using namespace palette;
+using game::Match;
+using phys::Vec2;
+
+// ---- drawing ------------------------------------------------------------------------------
+/// The HUD is laid out in design pixels (1280x720, scaled by `u` to the picture); the
+/// renderer draws in world units, so convert. A box's origin is its top-left corner.
+struct HudSpace {
+    Renderer2D& r;
+    double u = 1.0;
+    double x = 0.0, y = 0.0; ///< the box's top-left corner, design px
+    Vec2 w(double px, double py) const { return r.camera().toWorld({(x + px) * u, (y + py) * u}); }
+    double metres(double designPx) const { return r.camera().metres(designPx * u); }
+    void rect(double x0, double y0, double x1, double y1, Color c) const {
+        const Vec2 q[] = {w(x0, y1), w(x1, y1), w(x1, y0), w(x0, y0)};
+        r.fillConvex(q, c);
+    }
+    /// A panel: a rectangle with its corners cut (one convex octagon, so a translucent
+    /// fill never overlaps itself) and a faint top rim.
+    void panel(double x0, double y0, double x1, double y1, Color c = kPanel) const {
+        const double k = 5.0;
+        const Vec2 q[] = {w(x0 + k, y1), w(x1 - k, y1), w(x1, y1 - k), w(x1, y0 + k),
+                          w(x1 - k, y0), w(x0 + k, y0), w(x0, y0 + k), w(x0, y1 - k)};
+        r.fillConvex(q, c);
+        r.line(w(x0 + k, y0 + 0.5), w(x1 - k, y0 + 0.5), kPanelEdge, static_cast<float>(u));
+    }
+    void text(double px, double py, const std::string& s, Color c, float scale = 1.0f,
+              float alignX = 0.0f) const {
+        r.screenLabel({(x + px) * u, (y + py) * u}, s, c, scale * static_cast<float>(u), alignX);
+    }
+};
+
+/// A five-pointed star (not convex: a pentagon and five triangles).
+void star(Renderer2D& r, Vec2 c, double outer, Color fill) {
+    const double inner = outer * 0.42;
+    Vec2 o[5], in[5];
+    for (int k = 0; k < 5; ++k) {
+        const double a = std::numbers::pi / 2 + k * 2 * std::numbers::pi / 5;
+        const double b = a + std::numbers::pi / 5;
+        o[k] = c + Vec2{std::cos(a), std::sin(a)} * outer;
+        in[k] = c + Vec2{std::cos(b), std::sin(b)} * inner;
+    }
+    r.fillConvex(in, fill);
+    for (int k = 0; k < 5; ++k) {
+        const Vec2 tri[] = {o[k], in[(k + 4) % 5], in[k]};
+        r.fillConvex(tri, fill);
+    }
+}
+
+std::string playerName(const Match& m, const MatchViewOptions& o, int i) {
+    if (static_cast<std::size_t>(i) < o.playerNames.size()) return o.playerNames[static_cast<std::size_t>(i)];
+    return defaultPlayerName(m.cannons()[static_cast<std::size_t>(i)].def.player);
+}
+
+void drawPowerBar(const HudSpace& s, double x, double y, double w, double fraction, Color colour,
+                  std::optional<double> charge) {
+    s.rect(x, y, x + w, y + 12, Color::hex(0x000000, 0.45f));
+    const double f = std::clamp(fraction, 0.0, 1.0);
+    // Green to red as power rises.
+    const Color fill = mix(Color::hex(0x4ade80), Color::hex(0xef4444), static_cast<float>(f));
+    s.rect(x + 2, y + 2, x + 2 + (w - 4) * f, y + 10, charge ? fill : mix(fill, colour, 0.3f));
+    for (int k = 1; k < 4; ++k)
+        s.rect(x + w * k / 4.0, y + 1, x + w * k / 4.0 + 1, y + 11, Color::hex(0xffffff, 0.25f));
+}
+
+// ---- boxes --------------------------------------------------------------------------------
+// Each box: its size in design pixels, and a function drawing it at a HudSpace's origin.
+constexpr double kMargin = 12.0;
+constexpr double kScoreW = 292.0, kScoreH = 64.0, kDuelH = 70.0;
+constexpr double kWindW = 168.0, kWindH = 48.0;
+constexpr double kAimW = 312.0, kAimH = 92.0;
+constexpr double kCardW = 440.0, kCardH = 196.0;
+
+void drawScore(const HudSpace& s, const Match& m) {
+    const game::CannonState& cs = m.cannon();
+    s.panel(0, 0, kScoreW, kScoreH);
+    s.text(12, 7, m.level().name, kText, 1.0f);
+    char line[96];
+    if (m.sandbox()) {
+        s.text(12, 35, "sandbox: no score, no shot budget", kGold, 0.85f);
+        return;
+    }
+    std::snprintf(line, sizeof line, "score %d / %d", m.score(), m.maxScore());
+    s.text(12, 35, line, kGold, 0.95f);
+    // Shots left as pips, the number beside them when there are too many to show.
+    const int shown = std::min(cs.shotsLeft, 8);
+    for (int k = 0; k < shown; ++k) {
+        s.r.fillCircle(s.w(kScoreW - 20 - 14 * k, 45), s.metres(4.5), kShell.withAlpha(0.9f));
+        s.r.fillCircle(s.w(kScoreW - 21 - 14 * k, 44), s.metres(1.6), Color::hex(0x9aa0aa));
+    }
+    std::snprintf(line, sizeof line, "%d", cs.shotsLeft);
+    s.text(kScoreW - 28 - 14 * shown, 36, cs.shotsLeft > 8 || shown == 0 ? line : "", kText, 0.85f, 1.0f);
+}
+
+void drawPlayers(const HudSpace& s, const Match& m, const MatchViewOptions& o) {
+    s.panel(0, 0, kScoreW, kDuelH);
+    const int cur = m.currentPlayer();
+    char line[96];
+    for (int i = 0; i < static_cast<int>(m.cannons().size()) && i < 2; ++i) {
+        const auto& ci = m.cannons()[static_cast<std::size_t>(i)];
+        const double yy = 8 + 28 * i;
+        s.r.fillCircle(s.w(18, yy + 10), s.metres(5.5), team(i));
+        std::snprintf(line, sizeof line, "%s", playerName(m, o, i).c_str());
+        s.text(30, yy + 1, line, i == cur && !m.over() ? kText : kTextDim, 0.95f);
+        // Hit points as pips, right-aligned.
+        for (int p = 0; p < game::kCannonHitPoints; ++p) {
+            const Vec2 at = s.w(kScoreW - 18 - 16 * p, yy + 10);
+            s.r.fillCircle(at, s.metres(6), Color::hex(0x111111, 0.6f));
+            s.r.fillCircle(at, s.metres(4.5), game::kCannonHitPoints - 1 - p < ci.hitPoints
+                                                  ? Color::hex(0x4ade80)
+                                                  : Color::hex(0x3f3f46));
+        }
+    }
+}
+
+void drawWind(const HudSpace& s, double wind) {
+    char text[48];
+    if (std::abs(wind) < 0.05)
+        std::snprintf(text, sizeof text, "wind calm");
+    else
+        std::snprintf(text, sizeof text, "wind %.1f m/s", std::abs(wind));
+    s.panel(0, 0, kWindW, kWindH);
+    s.text(kWindW / 2, 4, text, kText, 0.85f, 0.5f);
+    // Arrow length grows with the wind up to 15 m/s.
+    const double len = std::abs(wind) < 0.05 ? 0.0 : 16.0 + std::min(std::abs(wind), 15.0) / 15.0 * 120.0;
+    const double sign = wind >= 0 ? 1.0 : -1.0;
+    if (len > 1.0) {
+        const Color c = std::abs(wind) > 8 ? Color::hex(0xff8a65) : Color::hex(0x9be7ff);
+        const double cx = kWindW / 2;
+        s.r.arrow(s.w(cx - sign * len / 2, 33), s.w(cx + sign * len / 2, 33), c,
+                  static_cast<float>(4.0 * s.u), static_cast<float>(12.0 * s.u));
+    }
+}
+
+/// The name of what flies the shell: the closed form where only gravity acts and the
+/// model allows it, else the integrator chosen.
+std::string flightModelLine(const Match& m) {
+    const phys::WorldDef& d = m.world().def();
+    char line[128];
+    std::snprintf(line, sizeof line, "g %.2f m/s²   drag %s   %s %.0f Hz", -d.forces.gravity.y,
+                  d.forces.drag == phys::DragModel::None ? "off" : "on",
+                  phys::info(d.integrator).name, 1.0 / d.tickSeconds);
+    return line;
+}
+
+void drawAim(const HudSpace& s, const Match& m, const MatchViewOptions& o, const PendingAim& aim) {
+    const game::CannonState& cs = m.cannon();
+    const int cur = m.currentPlayer();
+    s.panel(0, 0, kAimW, kAimH);
+    const game::Ammo ammo = m.selectedAmmo();
+    const int left = cs.projectile < cs.ammoLeft.size() ? cs.ammoLeft[cs.projectile] : -1;
+    char line[160];
+    std::snprintf(line, sizeof line, "%s%s%s   %.3g kg  %.0f mm%s",
+                  m.level().mode == game::Mode::Duel ? playerName(m, o, cur).c_str() : "",
+                  m.level().mode == game::Mode::Duel ? ":  " : "",
+                  ammo.preset.name ? ammo.preset.name : "?", ammo.preset.mass,
+                  ammo.preset.diameter * 1000.0, left >= 0 ? ("   x" + std::to_string(left)).c_str() : "");
+    s.r.fillCircle(s.w(16, 16), s.metres(5.5), team(cur));
+    s.text(28, 7, line, kText, 0.85f);
+    std::snprintf(line, sizeof line, "%.1f°", aim.angleDeg);
+    s.text(12, 28, line, kText, 1.0f);
+    std::snprintf(line, sizeof line, "%.1f / %.0f m/s", aim.speedMps, cs.def.maxSpeedMps);
+    s.text(kAimW - 12, 28, line, kText, 1.0f, 1.0f);
+    const double shown = o.charge ? *o.charge * cs.def.maxSpeedMps : aim.speedMps;
+    drawPowerBar(s, 12, 52, kAimW - 24, shown / cs.def.maxSpeedMps, team(cur), o.charge);
+    s.text(12, 70, ammo.weapon ? weaponHudLine(ammo) : flightModelLine(m), kTextDim, 0.72f);
+}
+
+/// A line in a dark box, `width` design pixels for `text` at `scale`.
+double lineWidth(const std::string& text, double scale) {
+    // The HUD font averages under 8 design px a character at scale 1.
+    return 8.0 * scale * static_cast<double>(text.size()) + 28.0;
+}
+
+void drawLine(const HudSpace& s, const std::string& text, Color colour, double scale, Color back) {
+    const double w = lineWidth(text, scale);
+    s.panel(0, 0, w, 30, back);
+    s.text(w / 2, 5, text, colour, static_cast<float>(scale), 0.5f);
+}
+
+void drawCard(Renderer2D& r, const HudSpace& s, const Match& m, const MatchViewOptions& o) {
+    s.panel(0, 0, kCardW, kCardH, Color::hex(0x0e1420, 0.88f));
+    const double cx = kCardW / 2;
+    if (m.level().mode == game::Mode::Duel) {
+        const int win = m.winner();
+        const std::string who = win < 0 ? std::string("Draw") : playerName(m, o, win) + " wins!";
+        s.text(cx, 22, who, win < 0 ? kText : team(win), 1.8f, 0.5f);
+        char line[96];
+        std::snprintf(line, sizeof line, "shots fired %d", m.shotsFired());
+        s.text(cx, 90, line, kText, 1.1f, 0.5f);
+        return;
+    }
+    s.text(cx, 14, m.stars() > 0 ? "Level complete!" : "Out of shots", kText, 1.6f, 0.5f);
+    for (int k = 0; k < 3; ++k) {
+        const Vec2 p = s.w(cx + (k - 1) * 70, 90);
+        star(r, p, s.metres(30), Color::hex(0x000000, 0.4f));
+        star(r, p, s.metres(26), k < m.stars() ? kGold : Color::hex(0x3a4150));
+    }
+    char line[96];
+    std::snprintf(line, sizeof line, "score %d / %d   shots %d", m.score(), m.maxScore(), m.shotsFired());
+    s.text(cx, 136, line, kText, 1.1f, 0.5f);
+    if (m.assisted())
+        s.text(cx, 162, "assisted (full preview or hint): no third star", kTextDim, 0.9f, 0.5f);
+}
+
+/// Design-pixel rectangles of a box w x h at each of `corners` (its top-left corner).
+std::vector<PixelRect> at(std::initializer_list<Vec2> corners, double w, double h) {
+    std::vector<PixelRect> rects;
+    for (const Vec2 c : corners) rects.push_back({c.x, c.y, c.x + w, c.y + h});
+    return rects;
+}
+
+/// The shot's verdict: what its notes say, the newest first ("missed by 4.0 m, short",
+/// "+150"), while they last.
+std::string verdictOf(const game::Effects& fx) {
+    std::string text;
+    for (auto n = fx.feedback().notes().rbegin(); n != fx.feedback().notes().rend(); ++n)
+        if (!n->text.empty() && text.find(n->text) == std::string::npos)
+            text += (text.empty() ? "" : "   ") + n->text;
+    return text;
+}
+
+} // namespace
+
+// ---- placing ------------------------------------------------------------------------------
+std::optional<PixelRect> Hud::place(const std::string& name, const std::vector<PixelRect>& candidates,
+                                    const MatchViewOptions& o, double u, double width,
+                                    double height) {
+    auto pixels = [&](const PixelRect& d) { return PixelRect{d.x0 * u, d.y0 * u, d.x1 * u, d.y1 * u}; };
+    if (!o.layout) return candidates.empty() ? std::nullopt : std::optional(candidates.front());
+    std::vector<PixelRect> avoid = o.layout->objectRects();
+    for (const PixelRect& r : o.layout->overlayRects()) avoid.push_back(r);
+    const PixelRect screen{0.0, 0.0, width, height};
+    auto clear = [&](const PixelRect& d) {
+        const PixelRect p = pixels(d);
+        if (!inside(p, screen)) return false;
+        for (const PixelRect& a : avoid)
+            if (p.overlaps(a)) return false;
+        return true;
+    };
+    std::optional<std::size_t> chosen;
+    if (const auto was = places_.find(name); was != places_.end() && was->second < candidates.size() &&
+                                             clear(candidates[was->second]))
+        chosen = was->second;
+    for (std::size_t i = 0; !chosen && i < candidates.size(); ++i)
+        if (clear(candidates[i])) chosen = i;
+    if (!chosen) {
+        places_.erase(name);
+        return std::nullopt;
+    }
+    places_[name] = *chosen;
+    o.layout->addOverlay(name, pixels(candidates[*chosen]));
+    return candidates[*chosen];
+}
+
+void Hud::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o, const PendingAim& aim,
+               const game::Effects& fx) {
+    const Camera& c = r.camera();
+    const double u = hudScale(c.width, c.height);
+    const double W = c.width / u, H = c.height / u; // the canvas in design pixels
+    const double mg = kMargin;
+    auto box = [&](const std::optional<PixelRect>& where) { return HudSpace{r, u, where->x0, where->y0}; };
+    auto placed = [&](const std::string& name, const std::vector<PixelRect>& candidates) {
+        return place(name, candidates, o, u, c.width, c.height);
+    };
+    const bool duel = m.level().mode == game::Mode::Duel;
+
+    const double scoreH = duel ? kDuelH : kScoreH;
+    if (auto p = placed("hud.score", at({{mg, mg}, {W - mg - kScoreW, mg}, {mg, H - mg - scoreH}}, kScoreW, scoreH))) {
+        if (duel)
+            drawPlayers(box(p), m, o);
+        else
+            drawScore(box(p), m);
+    }
+    if (auto p = placed("hud.wind", at({{W / 2 - kWindW / 2, mg}, {W / 2 - kWindW / 2, H - mg - kWindH},
+                                        {W * 0.3 - kWindW / 2, mg}, {W * 0.7 - kWindW / 2, mg}},
+                                       kWindW, kWindH)))
+        drawWind(box(p), m.wind());
+    // The aim while it can be changed: no shell in the air, the match not over.
+    if (!m.shell() && !m.over())
+        if (auto p = placed("hud.aim", at({{mg, H - mg - kAimH}, {W - mg - kAimW, H - mg - kAimH},
+                                           {W - mg - kAimW, mg + kScoreH + mg}},
+                                          kAimW, kAimH)))
+            drawAim(box(p), m, o, aim);
+    // The power and angle a drag sets, beside the pointer where it covers nothing.
+    if (o.rubberBand && !m.shell() && !m.over()) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.1f m/s   %.1f°", aim.speedMps, aim.angleDeg);
+        const double w = lineWidth(text, 0.85), px = o.rubberBand->x / u, py = o.rubberBand->y / u;
+        if (auto p = placed("hud.pull", at({{px + 16, py + 16}, {px + 16, py - 46}, {px - 16 - w, py + 16},
+                                            {px - 16 - w, py - 46}},
+                                           w, 30)))
+            drawLine(box(p), text, kText, 0.85, Color::hex(0x0e1420, 0.8f));
+    }
+    if (!o.banner.empty()) {
+        const double w = lineWidth(o.banner, 1.0);
+        if (auto p = placed("hud.banner", at({{W / 2 - w / 2, mg + kWindH + 8}, {W / 2 - w / 2, H / 2 - 15},
+                                              {W / 2 - w / 2, H - mg - 30}},
+                                             w, 30)))
+            drawLine(box(p), o.banner, kGold, 1.0, Color::hex(0x000000, 0.6f));
+    }
+    if (const std::string verdict = verdictOf(fx); !verdict.empty()) {
+        const double w = lineWidth(verdict, 1.0);
+        if (auto p = placed("hud.verdict", at({{W / 2 - w / 2, mg + kWindH + 8}, {W / 2 - w / 2, mg + kWindH + 46},
+                                               {W / 2 - w / 2, H / 2 - 80}, {W / 2 - w / 2, H - mg - 30}},
+                                              w, 30)))
+            drawLine(box(p), verdict, kGold, 1.0, Color::hex(0x0e1420, 0.8f));
+    }
+    if (!o.notice.empty()) {
+        const double w = lineWidth(o.notice, 0.8);
+        if (auto p = placed("hud.notice", at({{W / 2 - w / 2, H - mg - 30}, {W - mg - w, H - mg - 30},
+                                              {W / 2 - w / 2, H / 2 + 40}},
+                                             w, 30)))
+            drawLine(box(p), o.notice, kNotice, 0.8, Color::hex(0x0e1420, 0.8f));
+    }
+    if (m.over())
+        if (auto p = placed("card", at({{W / 2 - kCardW / 2, H / 2 - kCardH / 2},
+                                        {W / 2 - kCardW / 2, mg + kWindH + 8},
+                                        {W / 2 - kCardW / 2, H - mg - kCardH},
+                                        {mg, H / 2 - kCardH / 2}, {W - mg - kCardW, H / 2 - kCardH / 2}},
+                                       kCardW, kCardH)))
+            drawCard(r, box(p), m, o);
+}
+
+} // namespace ui
