@@ -5,7 +5,7 @@
 
 BUILD ?= build
 JOBS  ?= $(shell nproc)
-# Debian packages the project builds and tests with (see DESIGN.md).
+# Debian packages the project builds, tests and packages with.
 PACKAGES := cmake g++ make pkg-config libbox2d-dev libsdl2-dev libimgui-dev \
             libosmesa6-dev libegl-dev libegl-mesa0 libgl-dev libstb-dev fonts-dejavu-core \
             nlohmann-json3-dev libgtest-dev libbenchmark-dev libeigen3-dev xvfb xauth \

@@ -1,7 +1,7 @@
 // The game's ImGui screens and overlays: level select (the campaign's chapters, drawn by
 // ui/game/campaign_view.*), the recorded replays, pause menu, help, and the side panel with the
 // match controls (rewind included). Each is a function that draws one frame of it and reports what
-// the player chose (STYLE.md, "Dear ImGui"); the game screen acts on it.
+// the player chose (Dear ImGui's immediate mode); the game screen acts on it.
 #pragma once
 
 #include "game/match.h"
