@@ -7,7 +7,9 @@
 #   - a level in levels/ is not listed in docs/playing.md;
 #   - a relative link or image in README.md, levels/README.md or docs/*.md points at a
 #     file that does not exist, or outside the repository (a clone has only what is in
-#     it), or at an anchor (#part) its page has no heading or id for.
+#     it), or at an anchor (#part) its page has no heading or id for;
+#   - README.md does not give the number of golden replays in tests/replays/ and of
+#     shipped levels as they are ("the N golden replays", "M shipped levels").
 cmake_minimum_required(VERSION 3.25)
 if(NOT EXE OR NOT SRC)
   message(FATAL_ERROR "usage: cmake -DEXE=path/to/artillery -DSRC=source-dir [-DUPDATE=ON] -P docs_check.cmake")
@@ -137,6 +139,20 @@ foreach(page IN LISTS pages)
       endif()
     endif()
   endforeach()
+endforeach()
+
+# --- the README says what the golden replays cover -----------------------------------------
+file(GLOB goldens "${SRC}/tests/replays/*.replay.json")
+list(LENGTH goldens ngoldens)
+list(LENGTH level_files nfiles)
+math(EXPR nshipped "${nfiles} - 1") # campaign.json is no level
+file(READ "${SRC}/README.md" readme)
+string(REGEX REPLACE "[ \n]+" " " readme "${readme}")
+foreach(phrase "the ${ngoldens} golden replays" "${nshipped} shipped levels")
+  string(FIND "${readme}" "${phrase}" at)
+  if(at EQUAL -1)
+    problem("README.md does not say \"${phrase}\" (tests/replays/ holds ${ngoldens} goldens, levels/ ${nshipped} levels)")
+  endif()
 endforeach()
 
 if(problems)
