@@ -25,7 +25,8 @@ fs::path executable() {
 
 std::string dataFolder() {
     if (const fs::path exe = executable(); !exe.empty()) {
-        const fs::path installed = (exe.parent_path() / ".." / "share" / "artillery").lexically_normal();
+        const fs::path installed =
+            (exe.parent_path() / ".." / "share" / "artillery").lexically_normal();
         if (hasLevels(installed)) return installed.string();
     }
 #ifdef ARTILLERY_SOURCE_TREE
@@ -41,6 +42,8 @@ std::string levelsFolder() {
     return levels.string();
 }
 
-std::string shippedLevel(const std::string& name) { return (fs::path(levelsFolder()) / name).string(); }
+std::string shippedLevel(const std::string& name) {
+    return (fs::path(levelsFolder()) / name).string();
+}
 
 } // namespace game

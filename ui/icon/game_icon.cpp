@@ -18,9 +18,9 @@ namespace ui {
 namespace {
 
 // The icon is designed on the unit square (y up) and mapped onto the picture.
-constexpr double kCorner = 0.18;   ///< radius of the rounded square's corners
+constexpr double kCorner = 0.18;    ///< radius of the rounded square's corners
 constexpr double kLaunchDeg = 62.0; ///< the barrel's elevation
-constexpr double kGravity = 1.0;   ///< in icon units: only the arc's shape matters
+constexpr double kGravity = 1.0;    ///< in icon units: only the arc's shape matters
 const Color kSky = Color::hex(0x24406b);
 const Color kSkyLow = Color::hex(0x4f7fae);
 const Color kGround = Color::hex(0x4f8f3a);
@@ -32,7 +32,9 @@ const Color kBlock = Color::hex(0xc9a66b);
 const Color kBlockEdge = Color::hex(0x7a5c34);
 
 /// The hill's top: concave, so the ground below it within the rounded square is convex.
-double hill(double x) { return 0.26 + 0.11 * std::sin(std::numbers::pi * x); }
+double hill(double x) {
+    return 0.26 + 0.11 * std::sin(std::numbers::pi * x);
+}
 
 struct Frame {
     charts::Rect area;
@@ -64,7 +66,8 @@ void drawSky(Renderer2D& r, const Frame& f) {
     std::vector<Vec2> outline = roundedBottom();
     cornerArc(outline, {kCorner, 1.0 - kCorner}, pi, pi / 2);
     cornerArc(outline, {1.0 - kCorner, 1.0 - kCorner}, pi / 2, 0.0);
-    for (Vec2& v : outline) v = f.at(v.x, v.y);
+    for (Vec2& v : outline)
+        v = f.at(v.x, v.y);
     r.fillConvex(outline, kSky);
     // The horizon's glow: lighter towards the ground, inside the straight sides.
     r.fillRectGradient(f.at(0.0, kCorner), f.at(1.0, 0.62), kSkyLow, kSky);
@@ -77,7 +80,8 @@ void drawGround(Renderer2D& r, const Frame& f) {
         const double x = static_cast<double>(i) / kSteps;
         ground.push_back({x, hill(x)});
     }
-    for (Vec2& v : ground) v = f.at(v.x, v.y);
+    for (Vec2& v : ground)
+        v = f.at(v.x, v.y);
     r.fillConvex(ground, kGround);
 }
 
@@ -85,8 +89,8 @@ void drawTower(Renderer2D& r, const Frame& f, double x0, double width) {
     const double base = hill(x0 + width) - 0.01, h = 0.085;
     for (int i = 0; i < 3; ++i) {
         const double inset = i == 2 ? 0.02 : 0.0;
-        r.fillRectGradient(f.at(x0 + inset, base + i * h), f.at(x0 + width - inset, base + (i + 1) * h),
-                           kBlockEdge, kBlock);
+        r.fillRectGradient(f.at(x0 + inset, base + i * h),
+                           f.at(x0 + width - inset, base + (i + 1) * h), kBlockEdge, kBlock);
     }
 }
 
@@ -110,7 +114,8 @@ void drawShot(Renderer2D& r, const Frame& f, Vec2 pivot, Vec2 target, int dots) 
     const Vec2 shell = phys::ballisticState(muzzle, dir * v, g, flight * 0.9).position;
     r.fillCircle(f.at(shell.x, shell.y), f.size(0.045), kShell, 1.0f);
     // The barrel: a thick line from the pivot out along the elevation, then the wheel.
-    r.line(f.at(pivot.x, pivot.y), f.at(muzzle.x, muzzle.y), kIron, static_cast<float>(f.size(0.085)));
+    r.line(f.at(pivot.x, pivot.y), f.at(muzzle.x, muzzle.y), kIron,
+           static_cast<float>(f.size(0.085)));
     r.fillCircle(f.at(pivot.x, pivot.y - 0.02), f.size(0.065), kWheel, 1.0f);
     r.fillCircle(f.at(pivot.x, pivot.y - 0.02), f.size(0.022), kIron, 0.5f);
 }
@@ -137,7 +142,8 @@ int runIcon(const game::cli::Args& args, std::ostream& out) {
     if (std::filesystem::path(png).extension() != ".png")
         args.fail("--png expects a file name ending in .png, got '" + png + "'");
     const std::string error = charts::renderChartPng(
-        png, size, size, [](Renderer2D& r, charts::Rect area) { drawGameIcon(r, area); }, Color{0, 0, 0, 0});
+        png, size, size, [](Renderer2D& r, charts::Rect area) { drawGameIcon(r, area); },
+        Color{0, 0, 0, 0});
     if (!error.empty()) {
         std::cerr << "artillery icon: cannot draw " << png << ": " << error << "\n";
         return game::cli::kCheckFailed;
@@ -164,8 +170,8 @@ void drawGameIcon(Renderer2D& r, charts::Rect area) {
 }
 
 const game::cli::Verb& iconVerb() {
-    static const game::cli::Verb verb{"icon", "the game's icon as a PNG of any size, drawn headless",
-                                      kIconUsage, {}, runIcon};
+    static const game::cli::Verb verb{
+        "icon", "the game's icon as a PNG of any size, drawn headless", kIconUsage, {}, runIcon};
     return verb;
 }
 
