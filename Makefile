@@ -5,16 +5,16 @@
 
 BUILD ?= build
 JOBS  ?= $(shell nproc)
-# Debian packages the project builds and tests with (see DESIGN.md).
+# Debian packages the project builds, tests and packages with.
 PACKAGES := cmake g++ make pkg-config libbox2d-dev libsdl2-dev libimgui-dev \
             libosmesa6-dev libegl-dev libegl-mesa0 libgl-dev libstb-dev fonts-dejavu-core \
             nlohmann-json3-dev libgtest-dev libbenchmark-dev libeigen3-dev xvfb xauth \
             libenet-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev \
-            libswresample-dev xdotool
+            libswresample-dev xdotool help2man dpkg-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps configure build play test bench charts clean sanitize fuzz cli-docs screenshots \
-        clang-deps san-configure fuzz-seconds
+        clang-deps san-configure fuzz-seconds package install
 
 all: build
 
@@ -42,6 +42,16 @@ play: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# The Debian package (CPack): $(BUILD)/package/artillery_VERSION_ARCH.deb, installed with
+# `sudo apt install ./$(BUILD)/package/artillery_*.deb`. `make install` installs into
+# /usr/local instead (PREFIX=... elsewhere); either way the game finds its levels
+# beside the executable (../share/artillery).
+PREFIX ?= /usr/local
+package: build
+	cmake --build $(BUILD) --target package
+install: build
+	$(SUDO) cmake --install $(BUILD) --prefix $(PREFIX)
 
 # The README's speed-and-accuracy charts: docs/*.png from the bench verbs (about a
 # minute on 2 cores; the CSVs go to $(BUILD)/charts/). Add BENCH=--full for the long sweeps.

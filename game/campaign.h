@@ -1,4 +1,5 @@
-// The campaign: the shipped levels in chapters that follow the lecture notes, each
+// The campaign: the shipped levels in chapters that follow the game-physics sources
+// (docs/references.md), each
 // chapter opening with a one-screen lesson and its formula. Read from levels/campaign.json
 // (format in levels/README.md) strictly: every error names the file, the JSON path and
 // what was expected, and a campaign is loaded whole or not at all.

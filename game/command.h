@@ -1,4 +1,4 @@
-// Commands: every change to the world is a Command at a tick (DESIGN.md). The window,
+// Commands: every change to the world is a Command at a tick (docs/architecture.md). The window,
 // the computer player, hand-written scripts and replays all speak this vocabulary, so
 // replaying the commands of a game gives the same world to the last bit.
 //

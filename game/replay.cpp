@@ -1,6 +1,7 @@
 #include "game/replay.h"
 
 #include "game/ai.h"
+#include "game/files/data_folder.h"
 #include "game/files/json_reader.h"
 
 #include <cstdio>
@@ -108,25 +109,29 @@ void saveReplay(const std::string& file, const Replay& r) { writeFileAtomically(
 
 Level levelForReplay(const std::string& replayFile, const Replay& r) {
     // A relative level path is looked up from the replay's folder and each folder above
-    // it (a replay in tests/replays finds levels/ at the top), then from here.
+    // it (a replay in tests/replays finds levels/ at the top), then in the game's data
+    // folder (a shipped level, "levels/NAME.json", from an installed game), then from here.
     fs::path p = r.levelFile;
     if (p.is_relative()) {
         std::error_code ec;
+        bool found = false;
         for (fs::path dir = fs::absolute(replayFile, ec).parent_path(); !dir.empty();
              dir = dir.parent_path()) {
             if (fs::exists(dir / p, ec)) {
                 p = dir / p;
+                found = true;
                 break;
             }
             if (dir == dir.root_path()) break;
         }
+        if (!found && fs::exists(fs::path(dataFolder()) / p, ec)) p = fs::path(dataFolder()) / p;
     }
     std::string text;
     try {
         text = readFile(p.string());
     } catch (const LoadError&) {
         throw LoadError(replayFile, "$.level.file",
-                        "the level \"" + r.levelFile + "\" cannot be opened (looked in the replay's folder, the folders above it and the working folder)");
+                        "the level \"" + r.levelFile + "\" cannot be opened (looked in the replay's folder, the folders above it, the game's data folder and the working folder)");
     }
     if (contentHash(text) != r.levelHash)
         throw LoadError(replayFile, "$.level.content_hash",

@@ -32,8 +32,8 @@ const SettingInfo kSettings[] = {
      "at the end of each step, so a fast small ball passes a thin wall",
      K::Boolean},
     {"restitution.PROJECTILE", "",
-     "the projectile's e against the rigid floor (notes: e = sqrt(h/H)): one of the notes' "
-     "presets, or e itself",
+     "the projectile's e against the rigid floor (measured as e = sqrt(h/H)): one of the "
+     "measured presets, or e itself",
      K::ChoiceOrNumber, 0.0, 1.0, "a preset name"},
     {"pair.MATERIAL.MATERIAL", "",
      "e of a pair of materials (a projectile's name means its own material) in place of "

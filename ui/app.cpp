@@ -3,6 +3,7 @@
 #include "game/cli/verbs.h"
 #include "ui/charts/bench_verb.h"
 #include "ui/game/png_frames.h"
+#include "ui/icon/game_icon.h"
 #include "ui/net/net_verbs.h"
 #include "ui/play/play_verb.h"
 
@@ -26,6 +27,7 @@ std::vector<game::cli::Verb> allVerbs() {
     all.push_back(benchVerb()); // draws its charts with the renderer, so it lives in ui/
     all.push_back(net::hostVerb()); // sockets live beside the window, not in game/
     all.push_back(net::joinVerb());
+    all.push_back(iconVerb()); // drawn by the renderer, like the charts
     return all;
 }
 
@@ -42,7 +44,7 @@ void printOverview(std::ostream& out) {
         out << "  " << name << v.summary << "\n";
     }
     out << "\nEvery verb takes --json for machine-readable output. Exit codes: 0 ok,\n"
-           "1 check failed, 2 bad input.\n";
+           "1 check failed, 2 bad input. artillery --version prints the version.\n";
 }
 
 } // namespace
@@ -52,6 +54,10 @@ int runApp(int argc, const char* const* argv) {
     const std::string verb = argv[1];
     if (verb == "--help" || verb == "-h" || verb == "help") {
         printOverview(std::cout);
+        return game::cli::kOk;
+    }
+    if (verb == "--version") {
+        std::cout << "artillery " << ARTILLERY_VERSION << "\n";
         return game::cli::kOk;
     }
     for (const auto& v : allVerbs()) {

@@ -1,5 +1,5 @@
-// The match's sound track: a view of the match (DESIGN.md: "sound, effects and the camera
-// are views of the match's events") that turns what happened in each tick into voices
+// The match's sound track: a view of the match (docs/architecture.md, "Layers": sound,
+// effects and the camera are views of the match's events) that turns what happened in each tick into voices
 // and renders them as stereo float frames at 48 kHz. It reads the match after each tick
 // and never writes it, so a match's hashes are the same with sound or without.
 //

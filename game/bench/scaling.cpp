@@ -95,7 +95,7 @@ std::unique_ptr<World> clothWorld(int side, int substeps) {
 // The pile: balls of radius 0.05 m on a grid 0.12 m apart (a little jitter so they do
 // not stack in perfect columns), about twice as many columns as rows, in an open box.
 constexpr double kBallRadius = 0.05, kBallSpacing = 0.12;
-constexpr double kWoodenRestitution = 0.603; // the notes' wooden preset (materials.h)
+constexpr double kWoodenRestitution = 0.603; // the measured wooden ball's preset (materials.h)
 
 struct PileLayout {
     long columns = 1, rows = 1;

@@ -1,6 +1,6 @@
 // Command-line options of one verb: `--name value` pairs, `--flag`s and positionals,
 // read through typed getters that refuse bad input with one clear message naming the
-// option and what was expected (DESIGN.md: exit 2 on bad input).
+// option and what was expected (exit 2 on bad input, docs/cli.md).
 #pragma once
 
 #include "physics/vec2.h"

@@ -1,4 +1,5 @@
-// artillery drop: the notes' drop experiment (001): bounce apexes against e^(2k) H.
+// artillery drop: the drop experiment of Claypool, Game Physics (ch. 10): bounce apexes
+// against e^(2k) H.
 #include "game/cli/verbs.h"
 
 #include "physics/collision/drop.h"

@@ -128,11 +128,11 @@ stable below 2, RK4 below 2.83, implicit Euler always.
            [--json]
 
 Drops a ball from rest, its lowest point H above a rigid floor, and reports the apex
-of each bounce against e^(2k) H, the height the notes' measurement e = sqrt(h/H)
-predicts (notes 001). The bounce is resolved at the time of impact, so with an
-integrator exact under constant acceleration (velocity-verlet, midpoint, rk4,
-leapfrog) the apexes do not depend on dt; explicit and symplectic Euler show their
-own (first-order) error.
+of each bounce against e^(2k) H, the height the measured e = sqrt(h/H) predicts (balls
+dropped from 92 cm: Claypool, Game Physics, ch. 10). The bounce is resolved at the time
+of impact, so with an integrator exact under constant acceleration (velocity-verlet,
+midpoint, rk4, leapfrog) the apexes do not depend on dt; explicit and symplectic Euler
+show their own (first-order) error.
 
   --height H      drop height of the ball's lowest point, m (> 0)
   --cor E         coefficient of restitution ball-floor, 0..1 (a pair entry)

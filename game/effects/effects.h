@@ -1,8 +1,8 @@
 // What a shot looks like beyond the physics that scores it: debris and dust thrown by a
 // blast, smoke drifting with the wind, the flash, the crust of a crater and the soil it
 // scattered, splinters off blocks hit hard or toppled, and splashes where a shell enters
-// the water. A view of the match (DESIGN.md: "sound, effects and the camera are views of
-// the match's events"): Effects reads the match and its events after each tick and never
+// the water. A view of the match (docs/architecture.md, "Layers": sound, effects and the
+// camera are views of the match's events): Effects reads the match and its events after each tick and never
 // writes it, so a replay's hashes are the same with effects running or not.
 //
 // Debris, dust, splinters and spray are particles of the project's own particle layer, in

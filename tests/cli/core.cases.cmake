@@ -2,8 +2,8 @@
 # No arguments: the list of verbs, and never a stub.
 cli_test(overview 0 "verbs:.*solve.*trajectory.*spring" "")
 cli_test(unknown_verb 2 "unknown verb 'fly'" "fly")
-# solve: the notes' target practice example, JSON, out of range, bad input.
-cli_test(solve_notes 0 "39\\.0[0-9]*.*75\\.1[0-9]*|39\\.1.*75\\.2"
+# solve: the target practice example of Rabin (ed.), ch. 4.3, JSON, out of range, bad input.
+cli_test(solve_target_practice 0 "39\\.0[0-9]*.*75\\.1[0-9]*|39\\.1.*75\\.2"
          "solve;--from;10,2;--to;50,20;--speed;30;--json")
 cli_test(solve_out_of_range 0 "\"solutions\":\\[\\]" "solve;--from;0,0;--to;40,0;--speed;19;--json")
 cli_test(solve_text 0 "low .*angle.*high .*angle" "solve;--from;0,0;--to;40,0;--speed;25")

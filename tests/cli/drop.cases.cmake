@@ -1,4 +1,4 @@
-# drop: the notes' bounce experiment (001): apex k = e^(2k) H, and its bad input.
+# drop: the bounce experiment of Claypool, Game Physics (ch. 10): apex k = e^(2k) H, and its bad input.
 # Golf (e = 0.858) from 1 m: 0.736164, 0.541937..., 0.398954... m, with the default
 # velocity Verlet and with RK4 at dt = 1/60 s (time-of-impact response: no dt error).
 cli_test(drop_golf_json 0

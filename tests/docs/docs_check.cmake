@@ -6,7 +6,10 @@
 #     which runs this script with -DUPDATE=ON);
 #   - a level in levels/ is not listed in docs/playing.md;
 #   - a relative link or image in README.md, levels/README.md or docs/*.md points at a
-#     file that does not exist.
+#     file that does not exist, or outside the repository (a clone has only what is in
+#     it), or at an anchor (#part) its page has no heading or id for;
+#   - README.md does not give the number of golden replays in tests/replays/ and of
+#     shipped levels as they are ("the N golden replays", "M shipped levels").
 cmake_minimum_required(VERSION 3.25)
 if(NOT EXE OR NOT SRC)
   message(FATAL_ERROR "usage: cmake -DEXE=path/to/artillery -DSRC=source-dir [-DUPDATE=ON] -P docs_check.cmake")
@@ -79,6 +82,29 @@ endforeach()
 # --- links and images resolve -----------------------------------------------------------
 file(GLOB docs "${SRC}/docs/*.md")
 set(pages "${SRC}/README.md" "${SRC}/levels/README.md" ${docs})
+
+# The anchors a page offers: each heading's GitHub slug (lower case; letters, digits,
+# spaces, hyphens and underscores kept; spaces to hyphens) and each id="...".
+function(page_anchors page out)
+  file(STRINGS "${page}" headings REGEX "^#+ ")
+  set(anchors "")
+  foreach(h IN LISTS headings)
+    string(REGEX REPLACE "^#+ +" "" h "${h}")
+    string(REGEX REPLACE "<a id=\"[^\"]*\"></a>" "" h "${h}")
+    string(TOLOWER "${h}" h)
+    string(REGEX REPLACE "[^a-z0-9 _-]" "" h "${h}")
+    string(REPLACE " " "-" h "${h}")
+    list(APPEND anchors "${h}")
+  endforeach()
+  file(READ "${page}" text)
+  string(REGEX MATCHALL "id=\"[^\"]+\"" ids "${text}")
+  foreach(id IN LISTS ids)
+    string(REGEX REPLACE "^id=\"([^\"]+)\"$" "\\1" id "${id}")
+    list(APPEND anchors "${id}")
+  endforeach()
+  set(${out} "${anchors}" PARENT_SCOPE)
+endfunction()
+
 foreach(page IN LISTS pages)
   file(READ "${page}" text)
   get_filename_component(dir "${page}" DIRECTORY)
@@ -91,14 +117,42 @@ foreach(page IN LISTS pages)
   string(REGEX MATCHALL "<link>\\([^) ]+\\)" links "${text}")
   foreach(link IN LISTS links)
     string(REGEX REPLACE "^<link>\\(([^) ]+)\\)$" "\\1" target "${link}")
-    if(target MATCHES "^(https?|mailto):" OR target MATCHES "^#")
+    if(target MATCHES "^(https?|mailto):")
       continue()
     endif()
     string(REGEX REPLACE "#.*$" "" path "${target}")
-    if(NOT EXISTS "${dir}/${path}")
+    if(path STREQUAL "")
+      set(file "${page}")
+    else()
+      cmake_path(ABSOLUTE_PATH path BASE_DIRECTORY "${dir}" NORMALIZE OUTPUT_VARIABLE file)
+    endif()
+    cmake_path(IS_PREFIX SRC "${file}" NORMALIZE inside)
+    if(NOT inside)
+      problem("${page_name}: the link ${target} points outside the repository")
+    elseif(NOT EXISTS "${file}")
       problem("${page_name}: the link ${target} points at nothing")
+    elseif(target MATCHES "#" AND file MATCHES "\\.md$")
+      string(REGEX REPLACE "^[^#]*#" "" anchor "${target}")
+      page_anchors("${file}" anchors)
+      if(NOT anchor IN_LIST anchors)
+        problem("${page_name}: the link ${target}: its page has no heading or id '${anchor}'")
+      endif()
     endif()
   endforeach()
+endforeach()
+
+# --- the README says what the golden replays cover -----------------------------------------
+file(GLOB goldens "${SRC}/tests/replays/*.replay.json")
+list(LENGTH goldens ngoldens)
+list(LENGTH level_files nfiles)
+math(EXPR nshipped "${nfiles} - 1") # campaign.json is no level
+file(READ "${SRC}/README.md" readme)
+string(REGEX REPLACE "[ \n]+" " " readme "${readme}")
+foreach(phrase "the ${ngoldens} golden replays" "${nshipped} shipped levels")
+  string(FIND "${readme}" "${phrase}" at)
+  if(at EQUAL -1)
+    problem("README.md does not say \"${phrase}\" (tests/replays/ holds ${ngoldens} goldens, levels/ ${nshipped} levels)")
+  endif()
 endforeach()
 
 if(problems)

@@ -50,7 +50,7 @@ TEST(Campaign, ShippedCampaignIsSound) {
     const std::vector<std::string> problems = campaignProblems(c, (kSource / "levels").string());
     for (const std::string& p : problems)
         ADD_FAILURE() << p;
-    // The chapters follow the lecture notes in order.
+    // The chapters follow the game-physics sources in order (docs/references.md).
     const char* order[] = {"flight",  "worlds", "drag",      "bounce",
                            "springs", "rigid",  "stability", "finals"};
     for (std::size_t i = 0; i < c.chapters.size() && i < std::size(order); ++i)

@@ -1,7 +1,7 @@
 // Live controls as settings: each projectile's restitution preset, the
 // material pair table, the contact model and continuous detection, set by `set`
 // commands in a match. Checked against the physics they stand for: a drop rebounds to
-// e^2 H (notes 001: e = sqrt(h/H)), a penalty contact sinks as its spring and damper
+// e^2 H (Claypool, Game Physics (ch. 10): e = sqrt(h/H)), a penalty contact sinks as its spring and damper
 // say, continuous detection stops what tunnels without it; refusals say what was
 // expected; a replay carrying these commands re-simulates bit for bit.
 #include "game/headless.h"
@@ -93,7 +93,7 @@ Drop dropBall(Match& m, const std::vector<Command>& during = {}) {
     return d;
 }
 
-/// The bounce against the notes' e = sqrt(h/H): exact at the contact and, since the
+/// The bounce against the measured e = sqrt(h/H): exact at the contact and, since the
 /// particles meet the terrain only as the world's static shapes (the coupling skips its
 /// Box2D mirror), exact at the apex over the ticks too.
 void expectBounce(const Drop& d, double e, const char* what) {
@@ -155,7 +155,7 @@ TEST(LiveSettings, ChangeInFlightActsAtTheNextCollision) {
 }
 
 TEST(LiveSettings, RestitutionIsPerProjectileNotPerMaterial) {
-    // Cannonball and steel ball share the notes' steel bearing; each has its own setting.
+    // Cannonball and steel ball share the measured steel bearing; each has its own setting.
     Match m = dropMatch("steel-ball", 1.0, {set("restitution.cannonball", 0.1)});
     EXPECT_EQ(readSetting(m.liveSettings(), "restitution.steel-ball"),
               SettingValue(std::string("steel-bearing")));

@@ -1,7 +1,8 @@
-// No allocation per step (STYLE.md, habit 3): once its buffers are warm, World::step
-// with collisions, the broad phase, resting contact, sleep and rods allocates nothing,
-// except that a buffer meeting a new peak (more contacts, or grid cells, than ever
-// before) grows geometrically: a handful of times in a world's life, never per step.
+// No allocation per step (so a tick costs the same every time): once its buffers are
+// warm, World::step with collisions, the broad phase, resting contact, sleep and rods
+// allocates nothing, except that a buffer meeting a new peak (more contacts, or grid
+// cells, than ever before) grows geometrically: a handful of times in a world's life,
+// never per step.
 // The global operator new of this test binary counts allocations while `counting` is set.
 #include "physics/world.h"
 

@@ -1,4 +1,4 @@
-// The material table: the notes' measured presets, the combine rule, pair overrides,
+// The material table: the measured presets, the combine rule, pair overrides,
 // and the projectile presets built on them.
 #include "physics/materials.h"
 #include "physics/projectiles.h"
@@ -9,8 +9,8 @@
 
 using namespace phys;
 
-// Notes 001: restitution of balls dropped from 92 cm onto a floor.
-TEST(Materials, NotesPresetsAgainstTheFloor) {
+// Claypool, Game Physics (ch. 10): restitution of balls dropped from 92 cm onto a floor.
+TEST(Materials, MeasuredPresetsAgainstTheFloor) {
     const MaterialTable t;
     const struct {
         const char* name;

@@ -11,7 +11,7 @@
 namespace ui::charts {
 
 Image renderChartImage(int width, int height, const std::function<void(Renderer2D&, Rect)>& draw,
-                       std::string& error) {
+                       std::string& error, Color background) {
     error.clear();
     auto ctx = createHeadlessContext(width, height, HeadlessBackend::Auto, error);
     if (!ctx) {
@@ -32,7 +32,7 @@ Image renderChartImage(int width, int height, const std::function<void(Renderer2
         imgui.newFrame(1.0 / 60.0);
         msaa.bind(ctx->framebuffer());
         gl::fn.Viewport(0, 0, width, height);
-        gl::fn.ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        gl::fn.ClearColor(background.r, background.g, background.b, background.a);
         gl::fn.Clear(GL_COLOR_BUFFER_BIT);
         // A camera whose world units are pixels (y up): the chart maps through it.
         renderer.begin(Camera::framing({0.0, 0.0}, {static_cast<double>(width),
@@ -52,9 +52,9 @@ Image renderChartImage(int width, int height, const std::function<void(Renderer2
 }
 
 std::string renderChartPng(const std::string& path, int width, int height,
-                           const std::function<void(Renderer2D&, Rect)>& draw) {
+                           const std::function<void(Renderer2D&, Rect)>& draw, Color background) {
     std::string error;
-    const Image img = renderChartImage(width, height, draw, error);
+    const Image img = renderChartImage(width, height, draw, error, background);
     if (!error.empty()) return error;
     return writePng(path, img);
 }

@@ -1,5 +1,5 @@
 // The level editor's property panels: each is a function that edits a game::Level in
-// place and returns true when a field changed (STYLE.md, "Dear ImGui"); the editor
+// place and returns true when a field changed (Dear ImGui's immediate mode); the editor
 // screen turns the edited copy into an undo step. The panels check nothing themselves:
 // the loader's verdict on the result is shown beside them.
 #pragma once

@@ -1,5 +1,6 @@
 #include "ui/net/net_verbs.h"
 
+#include "game/files/data_folder.h"
 #include "game/replay.h"
 #include "ui/net/net_duel.h"
 #include "ui/net/net_screen.h"
@@ -29,8 +30,9 @@ const char* const kHostUsage =
 Hosts a duel over the network (ENet over UDP): the host plays cannon 0, the player who
 joins plays cannon 1, spectators may watch. Lockstep on the command stream: each side
 sends only its own commands, and both compare state hashes at every replay checkpoint.
-LEVEL is a duel level (default levels/10_duel.json). You play it in a window; with
---autoplay or --commands the cannon is played for you, without one unless --window.
+LEVEL is a duel level (default: 10_duel.json of the game's levels). You play it in a
+window; with --autoplay or --commands the cannon is played for you, without one unless
+--window.
 
   --port P          UDP port (default 7777; 0 picks a free one, printed)
   --bind ADDR       address to listen on (default 127.0.0.1; 0.0.0.0: every interface)
@@ -64,8 +66,8 @@ const char* const kJoinUsage = R"(usage: artillery join HOST[:P] [--name NAME] [
 
 Joins a duel hosted with `artillery host` and plays cannon 1 in a window (with
 --autoplay or --commands without one, unless --window), or watches it with --spectate.
-The level is the host's: it is looked up by file name in DIR (default ./levels) and
-must have the same content hash; the program version must match too.
+The level is the host's: it is looked up by file name in DIR (default: the game's
+levels) and must have the same content hash; the program version must match too.
 
   HOST[:P]          the host's address and port (default port 7777)
   --name NAME       your name (default guest)
@@ -74,7 +76,7 @@ must have the same content hash; the program version must match too.
                     in your turns
   --autoplay        the computer plays your cannon
   --record FILE     save the match as a replay (a window: network-last.json without it)
-  --levels DIR      where to look for the host's level (default levels)
+  --levels DIR      where to look for the host's level (default: the game's levels)
   --timeout S       how long to keep trying to reconnect after a drop (default 60 s)
   --wait S          how long to wait for the host to answer (default 120 s)
   --window          a window also for --autoplay, --commands or --spectate, as for host
@@ -93,7 +95,7 @@ int runNet(const Args& args, std::ostream& out, bool host) {
         args.fail("takes one " + std::string(host ? "LEVEL" : "HOST[:P]") + ", got " +
                   std::to_string(pos.size()));
     if (host) {
-        o.levelFile = pos.empty() ? "levels/10_duel.json" : pos[0];
+        o.levelFile = pos.empty() ? game::shippedLevel("10_duel.json") : pos[0];
         o.port = static_cast<std::uint16_t>(args.integer("port", kDefaultPort, 0, 65535));
         o.bindAddress = args.text("bind", "127.0.0.1");
     } else {
@@ -103,7 +105,7 @@ int runNet(const Args& args, std::ostream& out, bool host) {
         o.address = a->first;
         o.port = a->second;
         o.spectate = args.flag("spectate");
-        o.levelsDir = args.text("levels", "levels");
+        o.levelsDir = args.text("levels", game::levelsFolder());
     }
     o.name = args.text("name", host ? "host" : "guest");
     if (o.name.empty() || o.name.size() > game::net::kMaxNameBytes)

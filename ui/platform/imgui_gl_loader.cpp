@@ -2,7 +2,7 @@
 // ui/CMakeLists.txt), so its GL functions come from the stripped gl3w loader that ships
 // with it, implemented here. Its own imgl3wInit() would open libGL.so.1 and ask GLX,
 // which has no current context under OSMesa or EGL; imgl3wInit2 takes the context's
-// own proc-address function instead (DESIGN.md, "OpenGL under OSMesa").
+// own proc-address function instead.
 #define IMGL3W_IMPL
 #include "backends/imgui_impl_opengl3_loader.h"
 

@@ -45,7 +45,7 @@ class OSMesaContextImpl final : public GLContext {
 } // namespace
 
 std::unique_ptr<GLContext> createOSMesaContext(int width, int height, std::string& error) {
-    // A core 3.3 context; llvmpipe gives 4.5 (DESIGN.md). No depth or stencil: 2D only.
+    // A core 3.3 context; llvmpipe gives 4.5. No depth or stencil: 2D only.
     const int attributes[] = {OSMESA_FORMAT,
                               OSMESA_RGBA,
                               OSMESA_DEPTH_BITS,

@@ -145,7 +145,8 @@ bool typedNumber(const char* id, double shown, double& typed) {
     return ImGui::InputDouble(id, &typed, 0.0, 0.0, "%.3f", ImGuiInputTextFlags_EnterReturnsTrue);
 }
 
-/// Per projectile: which of the notes' restitution presets it bounces with, or its e.
+/// Per projectile: which measured restitution preset it bounces with (balls dropped from
+/// 92 cm, Claypool, Game Physics (ch. 10)), or its e.
 bool projectileRestitution(game::LiveSettings& s, const std::string& projectile) {
     const std::string name = "restitution." + projectile;
     const auto preset = phys::projectileFromName(projectile);

@@ -2,7 +2,7 @@
 // sub-steps, gravity, drag, wind, contact model, continuous detection; in a match also
 // each projectile's restitution and the material pairs), time (pause, single step,
 // slow motion), what to draw, and the stats line. A panel is a function that edits
-// settings structs and says whether it changed them (STYLE.md, "Dear ImGui").
+// settings structs and says whether it changed them (Dear ImGui's immediate mode).
 #pragma once
 
 #include "game/settings.h"
@@ -51,7 +51,7 @@ struct FrameStats {
 /// Draws the panel. Returns true when `def` was edited (apply it at the next tick).
 bool physicsPanel(phys::WorldDef& def, TimeControls& time, ViewControls& view, SceneRequests& scene,
                   const FrameStats& stats);
-/// The panel of a match: also each projectile's restitution (a preset of the notes, or e
+/// The panel of a match: also each projectile's restitution (a measured preset, or e
 /// typed) and the table of the material pairs in play (e, friction, e typed to override
 /// it). Every edit goes through game::applySetting. Returns true when `settings` changed.
 bool physicsPanel(game::LiveSettings& settings, const game::MaterialsInPlay& inPlay,

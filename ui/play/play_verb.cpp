@@ -2,6 +2,7 @@
 
 #include "ui/net/net_screen.h"
 
+#include "game/files/data_folder.h"
 #include "game/files/text_file.h"
 #include "game/replay.h"
 #include "ui/game/game_screen.h"
@@ -38,8 +39,10 @@ constexpr const char* kPlayUsage =
                       [--sleeping] [--models] [--json]
 
 Plays LEVEL in a window; without LEVEL the level select screen opens (the campaign:
-levels/ in chapters with their lessons, your stars, and what opens next; any level
-opens here as LEVEL, locked or not). Aim by dragging from the cannon
+the shipped levels in chapters with their lessons, your stars, and what opens next;
+any level opens here as LEVEL, locked or not). The shipped levels are found beside the
+executable (../share/artillery/levels when installed; the source tree's in a build),
+from any working folder. Aim by dragging from the cannon
 (direction = angle, length = power) or with the arrow keys, hold Space to charge and
 release to fire (a tap fires at the power set), 1-8 pick the projectile. Every change
 you make, physics settings included, is a command the session records, so each game
@@ -256,17 +259,6 @@ PlayScreenDef screenDef(const PlayOptions& o, const SdlWindow* window) {
     return d;
 }
 
-/// Where the level select screen finds levels: ./levels when run from the project, else
-/// the source tree's (the build knows where it is).
-std::string levelsFolder() {
-    if (std::filesystem::is_directory("levels")) return "levels";
-#ifdef ARTILLERY_LEVELS_DIR
-    return ARTILLERY_LEVELS_DIR;
-#else
-    return "levels";
-#endif
-}
-
 /// The game for a level (or the level select screen in a window); the physics demo with
 /// --demo, or headless without a level.
 std::unique_ptr<Screen> makeScreen(GLContext& context, SdlWindow* window, const PlayOptions& o) {
@@ -276,7 +268,7 @@ std::unique_ptr<Screen> makeScreen(GLContext& context, SdlWindow* window, const 
     GameScreenDef d;
     d.levelFile = o.level;
     d.replayFile = o.replay;
-    d.levelsFolder = levelsFolder();
+    d.levelsFolder = game::levelsFolder();
     d.msaaSamples = o.msaa;
     d.panel = o.panel;
     d.difficulty = o.difficulty;
@@ -441,7 +433,7 @@ int play(PlayOptions o, std::ostream& out) {
         while (report.networkDuel && code == game::cli::kOk) {
             net::NetWindowOptions duel;
             duel.width = o.width, duel.height = o.height;
-            duel.duel.levelsDir = levelsFolder(); // the game's: its maps, by name
+            duel.duel.levelsDir = game::levelsFolder(); // the game's: its maps, by name
             duel.duel.levelFile = (std::filesystem::path(duel.duel.levelsDir) / "10_duel.json").string();
             net::runNetWindow(duel, out);
             report = {};

@@ -3,7 +3,7 @@
 // OSMesaGetProcAddress or eglGetProcAddress headless).
 //
 // Why our own table: linking libGL directly binds GLX entry points, which have no
-// current context under OSMesa or EGL (DESIGN.md, "OpenGL under OSMesa"). Only type
+// current context under OSMesa or EGL. Only type
 // definitions come from the Khronos header; every function is a pointer filled by
 // loadGL(). ImGui's backend has its own loader (imgui_gl_loader.cpp); the two never
 // share a translation unit because their headers define the same names.
