@@ -64,21 +64,36 @@ TEST(TurnControls, EnterAndFFireWhileEEndsTheTurn) {
     EXPECT_FALSE(ui::pressTurnKey(SDLK_q, aim, m)) << "not a turn key: left to the window";
 }
 
-TEST(TurnControls, TabAndTheNumberKeysPickTheShell) {
-    game::Match m = earthBasics();
+// Tab steps through the balls; a number key is a weapon by its own number (5 is the
+// mortar wherever a level lists it), and a weapon the level lacks is refused, saying so.
+TEST(TurnControls, TabCyclesTheBallsAndEachNumberIsAWeapon) {
+    game::Match m = earthBasics(); // cannonball, golf ball, tennis ball; no weapon
     ui::AimInput aim;
-    ASSERT_GE(m.cannon().def.projectiles.size(), 2u);
     const auto next = ui::pressTurnKey(SDLK_TAB, aim, m);
     ASSERT_TRUE(next);
     submit(m, *next);
     EXPECT_EQ(m.cannon().projectile, 1u);
-    const auto first = ui::pressTurnKey(SDLK_1, aim, m);
-    ASSERT_TRUE(first);
-    submit(m, *first);
-    EXPECT_EQ(m.cannon().projectile, 0u);
-    const auto none = ui::pressTurnKey(SDLK_8, aim, m);
-    ASSERT_TRUE(none) << "a turn key even where the cannon has no eighth shell";
+    std::string message;
+    const auto none = ui::pressTurnKey(SDLK_1, aim, m, &message);
+    ASSERT_TRUE(none) << "a turn key even where the level has no such weapon";
     EXPECT_TRUE(none->empty());
+    EXPECT_EQ(message, "no cluster in this level");
+    EXPECT_EQ(m.cannon().projectile, 1u);
+
+    const auto root = std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();
+    game::Match bridge(game::loadLevel((root / "levels/06_rope_bridge.json").string()));
+    ASSERT_EQ(bridge.cannon().def.projectiles[2], "mortar");
+    message.clear();
+    const auto mortar = ui::pressTurnKey(SDLK_5, aim, bridge, &message);
+    ASSERT_TRUE(mortar);
+    submit(bridge, *mortar);
+    EXPECT_EQ(bridge.cannon().projectile, 2u) << "5 is the mortar, third in this level's list";
+    EXPECT_EQ(message, "");
+    // Tab from the mortar goes on to the balls, not through the weapons.
+    const auto ball = ui::pressTurnKey(SDLK_TAB, aim, bridge);
+    ASSERT_TRUE(ball);
+    submit(bridge, *ball);
+    EXPECT_EQ(bridge.cannon().projectile, 0u);
 }
 
 TEST(TurnControls, ADragAimsAndEnterFiresItThroughAMatch) {

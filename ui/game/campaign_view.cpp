@@ -1,10 +1,13 @@
 #include "ui/game/campaign_view.h"
+#include "ui/game/lesson_pictures.h"
 #include "ui/platform/imgui_layer.h"
 #include "ui/render/design_canvas.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 
@@ -268,28 +271,45 @@ MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progres
 }
 
 MenuChoice lessonScreen(const game::Campaign& campaign, std::size_t chapter,
-                        const std::string& thenLevel) {
+                        const std::string& thenLevel, const LessonArt& art) {
     MenuChoice choice;
     const game::Chapter& ch = campaign.chapters.at(chapter);
     const ImVec2 d = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(d.x * 0.5f, d.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(panelPx(680), 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(std::min(panelPx(760), d.x - panelPx(24)), 0), ImGuiCond_Always);
     ImGui::Begin("Lesson", nullptr,
                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                     ImGuiWindowFlags_NoSavedSettings);
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar);
     ImGui::TextColored(kGold, "CHAPTER %zu", chapter + 1);
     ImGui::SameLine();
     ImGui::TextUnformatted(ch.title.c_str());
     ImGui::Separator();
+    // The idea as a picture, drawn by the game from the chapter's formula.
+    const float width = ImGui::GetContentRegionAvail().x;
+    const ImVec2 size(width, std::round(width * 0.42f));
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    if (art.pictures && !art.picture.empty())
+        if (const TextureTarget* t = art.pictures->picture(art.picture, static_cast<int>(size.x * scale.x),
+                                                           static_cast<int>(size.y * scale.y), art.fbo)) {
+            ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(t->texture())), size,
+                         ImVec2(0, 1), ImVec2(1, 0));
+            ImGui::PushTextWrapPos(0.0f);
+            ImGui::TextColored(kDim, "%s", lessonPictureCaption(art.picture).c_str());
+            ImGui::PopTextWrapPos();
+        }
     ImGui::Spacing();
-    // The formula stands on its own line, large enough to read from across the room.
-    ImGui::SetWindowFontScale(1.25f);
+    // The formula stands on its own, in the large face: read from across the room.
+    ImGui::PushFont(largeFont());
     ImGui::PushStyleColor(ImGuiCol_Text, kGold);
-    ImGui::TextWrapped("%s", ch.formula.c_str());
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(ch.formula.c_str());
+    ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
-    ImGui::SetWindowFontScale(1.0f);
+    ImGui::PopFont();
     ImGui::Spacing();
-    ImGui::TextWrapped("%s", ch.lesson.c_str());
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(ch.lesson.c_str());
+    ImGui::PopTextWrapPos();
     ImGui::Spacing();
     ImGui::Separator();
     if (!thenLevel.empty()) {

@@ -49,9 +49,20 @@ void campaignTable(const CampaignMenu& menu, const game::Progress& progress, Men
 MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progress,
                          const std::string& levelFile);
 
-/// One chapter's lesson and formula on a screen of its own. `thenLevel` is the level the
-/// player picked ("" when the lesson was opened on its own): the button plays it.
+class LessonPictures;
+
+/// What a lesson is drawn with: its picture's name ("" none), the pictures, and the
+/// framebuffer bound again once one is drawn.
+struct LessonArt {
+    std::string picture;
+    LessonPictures* pictures = nullptr;
+    unsigned fbo = 0;
+};
+
+/// One chapter's lesson on a screen of its own: its picture, the formula large, the
+/// lesson in a few sentences. `thenLevel` is the level the player picked ("" when the
+/// lesson was opened on its own): the button plays it.
 MenuChoice lessonScreen(const game::Campaign& campaign, std::size_t chapter,
-                        const std::string& thenLevel);
+                        const std::string& thenLevel, const LessonArt& art = {});
 
 } // namespace ui

@@ -32,6 +32,20 @@ void centreNextWindow(float width) {
     ImGui::SetNextWindowSize(ImVec2(panelPx(width), 0), ImGuiCond_Always);
 }
 
+/// A full-screen menu: a fixed window in the middle with a gold heading and a dim line.
+void beginMenuWindow(const char* title, const char* heading, const char* subtitle) {
+    centreNextWindow(760.0f);
+    ImGui::Begin(title, nullptr,
+                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                     ImGuiWindowFlags_NoSavedSettings);
+    ImGui::TextColored(kGoldText, "%s", heading);
+    ImGui::SameLine();
+    ImGui::TextColored(kDimText, "%s", subtitle);
+    ImGui::Separator();
+}
+
+} // namespace
+
 bool difficultyCombo(PlayerSettings& s) {
     const game::Difficulty all[] = {game::Difficulty::Easy, game::Difficulty::Normal,
                                     game::Difficulty::Hard};
@@ -49,17 +63,7 @@ bool difficultyCombo(PlayerSettings& s) {
     return changed;
 }
 
-/// A full-screen menu: a fixed window in the middle with a gold heading and a dim line.
-void beginMenuWindow(const char* title, const char* heading, const char* subtitle) {
-    centreNextWindow(760.0f);
-    ImGui::Begin(title, nullptr,
-                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                     ImGuiWindowFlags_NoSavedSettings);
-    ImGui::TextColored(kGoldText, "%s", heading);
-    ImGui::SameLine();
-    ImGui::TextColored(kDimText, "%s", subtitle);
-    ImGui::Separator();
-}
+namespace {
 
 /// The seed as typed: decimal digits only, at most the largest seed a level holds.
 std::optional<std::uint64_t> seedFromText(const char* text) {
@@ -71,6 +75,8 @@ std::optional<std::uint64_t> seedFromText(const char* text) {
     }
     return seed;
 }
+
+} // namespace
 
 /// Random map: a seed field (the seed is the map: share it), a New seed button (drawn by
 /// the operating system; the map it names is the same everywhere), practice or duel,
@@ -137,7 +143,6 @@ void levelEditorRow(LevelEditorForm& form, const std::vector<LevelEntry>& levels
     }
 }
 
-} // namespace
 
 std::vector<LevelEntry> listLevels(const std::string& folder) {
     std::vector<LevelEntry> out;
@@ -202,42 +207,6 @@ std::vector<ReplayEntry> listReplays(const std::string& folder) {
     return out;
 }
 
-MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress& progress,
-                             PlayerSettings& settings, RandomMapForm* randomMap,
-                             LevelEditorForm* editor, const std::vector<LevelEntry>* levels) {
-    MenuChoice choice;
-    beginMenuWindow("Choose a level", "ARTILLERY", "a physics playground: every level shows one idea");
-    ImGui::SameLine(ImGui::GetWindowWidth() - panelPx(120));
-    if (ImGui::SmallButton("Network duel")) choice.networkDuel = true; // ui/net/net_screen.cpp
-    if (randomMap) {
-        randomMapRow(*randomMap, choice);
-        ImGui::Separator();
-    }
-    if (editor && levels) {
-        levelEditorRow(*editor, *levels, choice);
-        ImGui::Separator();
-    }
-    if (campaign.chapters.empty() && campaign.outside.empty())
-        ImGui::TextWrapped("No level files found (looked for levels/*.json).");
-    playNextButton(campaign, progress, choice);
-    campaignTable(campaign, progress, choice);
-    ImGui::Separator();
-    ImGui::PushItemWidth(panelPx(120));
-    choice.settingsChanged |= difficultyCombo(settings);
-    ImGui::PopItemWidth();
-    ImGui::SameLine();
-    choice.settingsChanged |= ImGui::Checkbox("hotseat (duel against a person)", &settings.hotseat);
-    ImGui::SameLine(ImGui::GetWindowWidth() - panelPx(210));
-    if (ImGui::Button("Replays")) choice.replays = true;
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Watch the games you played, and take one over from any moment");
-    ImGui::SameLine();
-    if (ImGui::Button("Help (F1)")) choice.help = true;
-    ImGui::SameLine();
-    if (ImGui::Button("Quit")) choice.quit = true;
-    ImGui::End();
-    return choice;
-}
 
 MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::string& folder) {
     MenuChoice choice;
@@ -442,23 +411,21 @@ MatchPanelRequests matchControls(const game::Match& m, bool humanTurn, ImVec2 co
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
     const game::CannonState& c = m.cannon();
     ImGui::BeginDisabled(!humanTurn);
-    ImGui::PushItemWidth(panelPx(150));
-    if (const auto chosen = projectilePicker(c)) req.projectile = *chosen;
-    ImGui::PopItemWidth();
+    if (const auto chosen = projectileBar(c)) req.projectile = *chosen;
     ImGui::SameLine();
     const bool canFire = !m.shell() && !m.over() && c.shotsLeft > 0;
     ImGui::BeginDisabled(!canFire);
-    if (ImGui::Button("FIRE", ImVec2(panelPx(90), 0))) req.fire = true;
+    if (ImGui::Button("FIRE", ImVec2(panelPx(90), panelPx(44)))) req.fire = true;
     ImGui::EndDisabled();
     if (m.level().mode == game::Mode::Duel) {
         ImGui::SameLine();
         ImGui::BeginDisabled(m.over() || m.shell().has_value());
-        if (ImGui::Button("End turn")) req.endTurn = true;
+        if (ImGui::Button("End turn", ImVec2(0, panelPx(44)))) req.endTurn = true;
         ImGui::EndDisabled();
     }
     ImGui::EndDisabled();
     ImGui::SameLine();
-    if (ImGui::Button("Menu")) req.menu = true;
+    if (ImGui::Button("Menu", ImVec2(0, panelPx(44)))) req.menu = true;
     ImGui::End();
     return req;
 }

@@ -89,15 +89,15 @@ struct MenuChoice {
     bool watchLastShot = false;            ///< the last shot again (ReplayControl::watchLastShot)
 };
 
-struct CampaignMenu; // ui/game/campaign_view.h
+/// The computer's difficulty, as a combo box; true when changed.
+bool difficultyCombo(PlayerSettings& settings);
+/// The Random map form: a seed (typed to play a shared map, or drawn anew), practice or
+/// duel, and Generate, which asks for the map to be made and played (choice.randomMap).
+void randomMapRow(RandomMapForm& form, MenuChoice& choice);
+/// The Level editor form: a new level, one of `levels` to edit, or back to the one the
+/// editor holds (choice.editLevel, choice.continueEditing).
+void levelEditorRow(LevelEditorForm& form, const std::vector<LevelEntry>& levels, MenuChoice& choice);
 
-/// The level select screen: the campaign's chapters and the levels outside them, with the
-/// progress that unlocks them, and the buttons to the other screens; with `randomMap`,
-/// also its Random map row; with `editor`, the Level editor row over `levels`.
-MenuChoice levelSelectScreen(const CampaignMenu& campaign, const game::Progress& progress,
-                             PlayerSettings& settings, RandomMapForm* randomMap = nullptr,
-                             LevelEditorForm* editor = nullptr,
-                             const std::vector<LevelEntry>* levels = nullptr);
 /// The replays in `folder` ("" when this run keeps none: check runs, headless).
 MenuChoice replaysScreen(const std::vector<ReplayEntry>& replays, const std::string& folder);
 /// The pause menu's rewind slider: the moment it points at while it is dragged.

@@ -342,7 +342,8 @@ void GameScreen::drawPanels() {
     MenuChoice choice = menus_.draw(files_.progress(), files_.settings(), files_.replaysFolder(),
                                     sound_.silentWhy(),
                                     editor_.held() ? editor_.held()->editor().level().name : "",
-                                    play_.active() ? &play_.match() : nullptr, play_.rewind());
+                                    play_.active() ? &play_.match() : nullptr, play_.rewind(),
+                                    context_.framebuffer());
     if (replays_.watching() && menus_.overlay() == Overlay::None) replayPanel();
     bool sceneToEditor = false;
     if (play_.active() && !replays_.watching() && menus_.overlay() == Overlay::None)
@@ -384,7 +385,7 @@ void GameScreen::matchPanels(MenuChoice& choice, bool& sceneToEditor) {
     PlayerSettings& settings = files_.settings();
     const bool humanTurn = play_.humanTurn();
     const MatchPanelRequests req =
-        matchControls(m, humanTurn, clearCorner("Controls", ImVec2(panelPx(420), panelPx(44))));
+        matchControls(m, humanTurn, clearCorner("Controls", ImVec2(panelPx(420), panelPx(44) + 2.0f * ImGui::GetStyle().WindowPadding.y)));
     camera_.keepClearOfTheRight(labPanelsRight());
     camera_.keepClearOfPanels(m, std::nullopt, context_.width(), context_.height(), follows());
     if (req.projectile)

@@ -128,11 +128,14 @@ bool GameScreen::keyDown(const SDL_Event& e) {
         return true;
     }
     if (!play_.active() || !noMenu || e.key.repeat) return true;
-    if (play_.humanTurn())
-        if (auto commands = pressTurnKey(key, play_.aim(), play_.match())) {
+    if (play_.humanTurn()) {
+        std::string message;
+        if (auto commands = pressTurnKey(key, play_.aim(), play_.match(), &message)) {
             submit(*commands);
+            if (!message.empty()) play_.say(message);
             return true;
         }
+    }
     if (bound && bound->scope == KeyScope::Match) gameKeyAction(bound->action);
     return true;
 }

@@ -52,9 +52,13 @@ std::string LivePlay::submit(const game::Command& command) {
     if (!session_) return "";
     const std::string why = session_->submit(command);
     if (why.empty()) return "";
-    notice_ = std::string(game::commandName(command.kind)) + ": " + why;
-    noticeSeconds_ = kNoticeSeconds;
+    say(std::string(game::commandName(command.kind)) + ": " + why);
     return notice_;
+}
+
+void LivePlay::say(std::string text) {
+    notice_ = std::move(text);
+    noticeSeconds_ = kNoticeSeconds;
 }
 
 std::string LivePlay::submit(const std::vector<game::Command>& commands) {

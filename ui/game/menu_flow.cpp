@@ -1,6 +1,22 @@
 #include "ui/game/menu_flow.h"
 
+#include <map>
+
 namespace ui {
+
+namespace {
+
+/// The picture of a chapter's lesson, by the chapter.
+std::string lessonPicture(const game::Chapter& chapter) {
+    static const std::map<std::string, std::string> byChapter = {
+        {"flight", "firing-solution"}, {"worlds", "moon-vs-earth"}, {"drag", "drag"},
+        {"bounce", "bounce"},          {"springs", "spring"},       {"rigid", "topple"},
+        {"stability", "euler-drift"}};
+    const auto it = byChapter.find(chapter.id);
+    return it == byChapter.end() ? "" : it->second;
+}
+
+} // namespace
 
 MenuFlow::MenuFlow(const std::string& levelsFolder)
     : levels_(listLevels(levelsFolder)), campaign_(campaignMenu(levelsFolder, levels_)) {}
@@ -17,13 +33,16 @@ void MenuFlow::showReplays(const std::string& folder) {
 MenuChoice MenuFlow::draw(const game::Progress& progress, PlayerSettings& settings,
                           const std::string& replaysFolder, const std::string& silentWhy,
                           const std::string& editing, const game::Match* match,
-                          RewindControl& rewind) {
+                          RewindControl& rewind, unsigned fbo) {
     MenuChoice choice;
     editorForm_.editing = editing;
     if (overlay_ == Overlay::LevelSelect)
-        choice = levelSelectScreen(campaign_, progress, settings, &randomMap_, &editorForm_, &levels_);
+        choice = levelSelectScreen(campaign_, progress, settings, page_, pictures_, fbo,
+                                   {&randomMap_, &editorForm_, &levels_});
     if (overlay_ == Overlay::Lesson)
-        choice = lessonScreen(campaign_.campaign, lessonChapter_, lessonThenLevel_);
+        choice = lessonScreen(campaign_.campaign, lessonChapter_, lessonThenLevel_,
+                              {lessonPicture(campaign_.campaign.chapters.at(lessonChapter_)),
+                               &lessonPictures_, fbo});
     if (overlay_ == Overlay::Replays) choice = replaysScreen(replays_, replaysFolder);
     if (overlay_ == Overlay::Pause) choice = pauseMenu(settings, silentWhy, match, rewind);
     drawHelp();

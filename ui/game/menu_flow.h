@@ -10,6 +10,9 @@
 #include "game/progress.h"
 #include "ui/game/campaign_view.h"
 #include "ui/game/game_menus.h"
+#include "ui/game/level_select.h"
+#include "ui/game/lesson_pictures.h"
+#include "ui/game/level_thumbnails.h"
 #include "ui/game/player_settings.h"
 
 #include <memory>
@@ -39,10 +42,12 @@ class MenuFlow {
 
     /// Draws the open menu and the help; what the player chose this frame. `editing` names
     /// the level the editor holds ("" none); `silentWhy` why the game plays silent; `match`
-    /// the match played (the pause menu rewinds it with `rewind`), null for none.
+    /// the match played (the pause menu rewinds it with `rewind`), null for none; `fbo` the
+    /// framebuffer being drawn (the level select's pictures are drawn, then it is bound again).
     MenuChoice draw(const game::Progress& progress, PlayerSettings& settings,
                     const std::string& replaysFolder, const std::string& silentWhy,
-                    const std::string& editing, const game::Match* match, RewindControl& rewind);
+                    const std::string& editing, const game::Match* match, RewindControl& rewind,
+                    unsigned fbo);
     /// The card at a finished level's end: the next level on the way, again, the select.
     MenuChoice nextLevelCard(const game::Progress& progress, const std::string& levelFile) const;
     /// Carries out the choices that only move between menus (a lesson, the replays, back,
@@ -68,6 +73,9 @@ class MenuFlow {
     std::string lessonThenLevel_;
     RandomMapForm randomMap_;      ///< the level select's Random map row
     LevelEditorForm editorForm_;   ///< the level select's Level editor row
+    LevelSelectState page_;        ///< the level select's page
+    LevelThumbnails pictures_;     ///< the level select's pictures of the levels
+    LessonPictures lessonPictures_; ///< the lessons' pictures
     std::unique_ptr<game::Match> backdrop_;
 };
 

@@ -1,9 +1,11 @@
 #include "ui/game/turn_controls.h"
 
+#include "ui/game/weapon_look.h"
+
 namespace ui {
 
 std::optional<std::vector<game::Command>> pressTurnKey(SDL_Keycode key, AimInput& aim,
-                                                       const game::Match& m) {
+                                                       const game::Match& m, std::string* message) {
     const game::CannonState& c = m.cannon();
     auto selected = [](std::optional<game::Command> s) {
         return s ? std::vector<game::Command>{*s} : std::vector<game::Command>{};
@@ -18,8 +20,10 @@ std::optional<std::vector<game::Command>> pressTurnKey(SDL_Keycode key, AimInput
         return aim.fire(c);
     case SDLK_e:
         return std::vector<game::Command>{AimInput::endTurn()};
-    case SDLK_TAB:
-        return selected(AimInput::selectNext(c));
+    case SDLK_TAB: {
+        const auto ball = nextBall(c);
+        return selected(ball ? AimInput::select(c, *ball) : std::nullopt);
+    }
     case SDLK_LEFT:
     case SDLK_RIGHT:
     case SDLK_UP:
@@ -33,8 +37,13 @@ std::optional<std::vector<game::Command>> pressTurnKey(SDL_Keycode key, AimInput
         return std::vector<game::Command>{};
     }
     default:
-        if (key >= SDLK_1 && key <= SDLK_8)
-            return selected(AimInput::select(c, static_cast<std::size_t>(key - SDLK_1)));
+        if (key >= SDLK_1 && key <= SDLK_8) {
+            // A weapon's own number, whatever the level's list (docs/weapons.md's order).
+            std::string why;
+            const auto weapon = weaponByKey(c, static_cast<int>(key - SDLK_1) + 1, why);
+            if (!weapon && message) *message = why;
+            return selected(weapon ? AimInput::select(c, *weapon) : std::nullopt);
+        }
         return std::nullopt;
     }
 }

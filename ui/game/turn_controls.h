@@ -10,7 +10,10 @@
 //                        power set
 //   Enter, F             fire at the aim set
 //   E                    end the turn
-//   Tab, 1-8             the next projectile, or projectile n
+//   1-8                  a weapon by its own number (docs/weapons.md's order: cluster,
+//                        bouncer, roller, grenade, mortar, airburst, digger, sticky);
+//                        one the level lacks is refused with a message
+//   Tab                  the next ball
 //
 // The gestures live in AimInput (no SDL); this is the SDL side of it.
 #pragma once
@@ -28,9 +31,10 @@ namespace ui {
 
 /// A turn key pressed in one's own turn: the commands it makes (none for Space, whose
 /// release fires), or nullopt for a key that is not a turn key. A charge starts only
-/// while no shell flies.
+/// while no shell flies. A weapon key the level has no weapon for says so in `message`.
 std::optional<std::vector<game::Command>> pressTurnKey(SDL_Keycode key, AimInput& aim,
-                                                       const game::Match& m);
+                                                       const game::Match& m,
+                                                       std::string* message = nullptr);
 
 /// Space released after a charge: aim, power, fire (nothing without a charge).
 std::vector<game::Command> releaseTurnKey(SDL_Keycode key, AimInput& aim, const game::Match& m);

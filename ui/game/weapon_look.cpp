@@ -3,10 +3,13 @@
 #include "game/weapon_text.h"
 #include "game/weapons.h"
 
+#include "ui/platform/imgui_layer.h"
+
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <numbers>
 
@@ -107,26 +110,133 @@ std::string weaponHudLine(const game::Ammo& ammo) {
     return w ? w->summary : "";
 }
 
-std::optional<std::size_t> projectilePicker(const game::CannonState& c) {
-    std::optional<std::size_t> chosen;
-    const std::string current = game::projectileLabel(c, c.projectile);
-    if (ImGui::BeginCombo("projectile", current.c_str())) {
-        for (std::size_t i = 0; i < c.def.projectiles.size(); ++i) {
-            const bool spent = i < c.ammoLeft.size() && c.ammoLeft[i] == 0;
-            ImGui::BeginDisabled(spent);
-            if (ImGui::Selectable(game::projectileLabel(c, i).c_str(), i == c.projectile) &&
-                i != c.projectile)
-                chosen = i;
-            ImGui::EndDisabled();
-            if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-                ImGui::SetTooltip("%s", game::projectileDescription(c.def.projectiles[i]).c_str());
+namespace {
+
+/// A ball's paint on its icon, by preset.
+Color ballColour(const std::string& name) {
+    if (name == "golf-ball") return Color::hex(0xf4f4f4);
+    if (name == "tennis-ball") return Color::hex(0xd7e84a);
+    if (name == "baseball") return Color::hex(0xf0ebe0);
+    if (name == "billiard-ball") return Color::hex(0xd8322e);
+    if (name == "steel-ball") return Color::hex(0xb8c0c8);
+    if (name == "glass-marble") return Color::hex(0x7fc8e8);
+    if (name == "hand-ball") return Color::hex(0x2f5fd0);
+    if (name == "wooden-ball") return Color::hex(0x9a6b3f);
+    return Color::hex(0x3a3f47); // the cannonball
+}
+
+ImU32 imColour(Color c, float alpha = 1.0f) {
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a * alpha));
+}
+
+/// One projectile's icon in a square at `lo`, `size` across: the shell in its paint with
+/// its mark, as it flies.
+void icon(ImDrawList* draw, ImVec2 lo, float size, const std::string& name, bool spent) {
+    const ImVec2 c(lo.x + 0.5f * size, lo.y + 0.45f * size);
+    const float r = 0.28f * size;
+    const float alpha = spent ? 0.35f : 1.0f;
+    const Look* look = lookOf(name.c_str());
+    draw->AddCircleFilled(c, r, imColour(look ? look->body : ballColour(name), alpha), 24);
+    draw->AddCircle(c, r, IM_COL32(0, 0, 0, 140), 24, 1.5f);
+    if (!look) return;
+    const ImU32 mark = IM_COL32(255, 255, 255, static_cast<int>(200 * alpha));
+    switch (look->mark) {
+    case Mark::Dots:
+        for (int k = 0; k < 4; ++k) {
+            const float a = static_cast<float>(std::numbers::pi * (0.25 + 0.5 * k));
+            draw->AddCircleFilled(ImVec2(c.x + 0.45f * r * std::cos(a), c.y + 0.45f * r * std::sin(a)),
+                                  0.2f * r, mark);
         }
-        ImGui::EndCombo();
+        break;
+    case Mark::Ring: draw->AddCircle(c, 1.25f * r, mark, 24, 2.0f); break;
+    case Mark::Band: draw->AddLine(ImVec2(c.x, c.y - r), ImVec2(c.x, c.y + r), mark, 2.5f); break;
+    case Mark::Fuse: draw->AddLine(ImVec2(c.x + 0.6f * r, c.y - 0.6f * r), ImVec2(c.x + r, c.y - 1.3f * r), IM_COL32(255, 170, 50, 255), 2.5f); break;
+    case Mark::Fins:
+        draw->AddLine(ImVec2(c.x - r, c.y), ImVec2(c.x - 1.7f * r, c.y - 0.8f * r), mark, 2.0f);
+        draw->AddLine(ImVec2(c.x - r, c.y), ImVec2(c.x - 1.7f * r, c.y + 0.8f * r), mark, 2.0f);
+        break;
+    case Mark::Skirt: draw->AddLine(ImVec2(c.x - 1.3f * r, c.y + r), ImVec2(c.x + 1.3f * r, c.y + r), mark, 2.5f); break;
+    case Mark::Tip: draw->AddTriangleFilled(ImVec2(c.x + 1.7f * r, c.y), ImVec2(c.x + 0.7f * r, c.y - 0.7f * r), ImVec2(c.x + 0.7f * r, c.y + 0.7f * r), mark); break;
+    case Mark::Glue: draw->AddCircle(c, 1.3f * r, IM_COL32(63, 191, 106, static_cast<int>(160 * alpha)), 24, 3.0f); break;
     }
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("%s",
-                          game::projectileDescription(c.def.projectiles[c.projectile]).c_str());
+}
+
+/// The bar's key for projectile `name`: its weapon's fixed number ("1" .. "8"), or Tab
+/// for a ball.
+std::string barKey(const std::string& name) {
+    const auto all = game::weapons();
+    for (std::size_t k = 0; k < all.size(); ++k)
+        if (name == all[k].name) return std::to_string(k + 1);
+    return "Tab";
+}
+
+} // namespace
+
+std::optional<std::size_t> projectileBar(const game::CannonState& c) {
+    std::optional<std::size_t> chosen;
+    const float size = panelPx(44);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    for (std::size_t i = 0; i < c.def.projectiles.size(); ++i) {
+        const std::string& name = c.def.projectiles[i];
+        const int left = i < c.ammoLeft.size() ? c.ammoLeft[i] : -1;
+        const bool spent = left == 0;
+        if (i > 0) ImGui::SameLine(0.0f, panelPx(4));
+        ImGui::PushID(static_cast<int>(i));
+        const ImVec2 lo = ImGui::GetCursorScreenPos();
+        ImGui::BeginDisabled(spent);
+        if (ImGui::InvisibleButton("projectile", ImVec2(size, size)) && i != c.projectile) chosen = i;
+        ImGui::EndDisabled();
+        const bool hovered = ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled);
+        const ImVec2 hi(lo.x + size, lo.y + size);
+        draw->AddRectFilled(lo, hi, i == c.projectile ? IM_COL32(60, 70, 96, 255)
+                                    : hovered        ? IM_COL32(44, 52, 72, 255)
+                                                     : IM_COL32(28, 34, 48, 255),
+                            panelPx(5));
+        if (i == c.projectile) draw->AddRect(lo, hi, IM_COL32(255, 201, 60, 255), panelPx(5), 0, 2.0f);
+        icon(draw, lo, size, name, spent);
+        // The key in the corner, the shots left in the other.
+        draw->AddText(ImVec2(lo.x + panelPx(3), lo.y + size - ImGui::GetFontSize()), IM_COL32(185, 194, 207, 255),
+                      barKey(name).c_str());
+        if (left >= 0) {
+            char count[16];
+            std::snprintf(count, sizeof count, "x%d", left);
+            const float w = ImGui::CalcTextSize(count).x;
+            draw->AddText(ImVec2(hi.x - w - panelPx(3), lo.y + panelPx(1)), IM_COL32(243, 239, 230, 255), count);
+        }
+        if (hovered) {
+            ImGui::BeginTooltip();
+            ImGui::PushTextWrapPos(panelPx(380));
+            ImGui::TextUnformatted(game::projectileLabel(c, i).c_str());
+            ImGui::TextUnformatted(game::projectileDescription(name).c_str());
+            ImGui::PopTextWrapPos();
+            ImGui::EndTooltip();
+        }
+        ImGui::PopID();
+    }
     return chosen;
+}
+
+std::optional<std::size_t> weaponByKey(const game::CannonState& c, int number, std::string& why) {
+    const auto all = game::weapons();
+    if (number < 1 || number > static_cast<int>(all.size())) return std::nullopt;
+    const std::string name = all[static_cast<std::size_t>(number - 1)].name;
+    for (std::size_t i = 0; i < c.def.projectiles.size(); ++i)
+        if (c.def.projectiles[i] == name) return i;
+    why = "no " + name + " in this level";
+    return std::nullopt;
+}
+
+std::optional<std::size_t> nextBall(const game::CannonState& c) {
+    const std::size_t n = c.def.projectiles.size();
+    bool anyBall = false;
+    for (const std::string& name : c.def.projectiles) anyBall = anyBall || !game::weaponFromName(name);
+    for (std::size_t k = 1; k <= n; ++k) {
+        const std::size_t i = (c.projectile + k) % n;
+        const bool ball = !game::weaponFromName(c.def.projectiles[i]);
+        const bool spent = i < c.ammoLeft.size() && c.ammoLeft[i] == 0;
+        if ((ball || !anyBall) && !spent && i != c.projectile) return i;
+    }
+    return std::nullopt;
 }
 
 } // namespace ui

@@ -147,7 +147,7 @@ void turnEvent(NetDuel& duel, const SDL_Event& e, AimInput& aim, phys::Vec2 pivo
     if (e.type == SDL_KEYDOWN && !e.key.repeat) {
         if (e.key.keysym.sym == SDLK_p) preview = !preview;
         if (mine)
-            if (auto commands = pressTurnKey(e.key.keysym.sym, aim, m))
+            if (auto commands = pressTurnKey(e.key.keysym.sym, aim, m, &status))
                 submitAll(duel, *commands, status);
     } else if (e.type == SDL_KEYUP) {
         submitAll(duel, releaseTurnKey(e.key.keysym.sym, aim, m), status);

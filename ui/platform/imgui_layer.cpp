@@ -112,6 +112,11 @@ bool ImGuiLayer::processEvent(const SDL_Event& event) {
     return ImGui_ImplSDL2_ProcessEvent(&event);
 }
 
+ImFont* largeFont() {
+    ImFontAtlas* fonts = ImGui::GetIO().Fonts;
+    return fonts->Fonts.Size > 1 ? fonts->Fonts[1] : ImGui::GetFont();
+}
+
 float panelPx(float designPixels) {
     return designPixels * gPanelScale;
 }
@@ -142,6 +147,9 @@ void ImGuiLayer::setPanelScale(float scale) {
         throw std::runtime_error(std::string("the font ") + kFontPath +
                                  " is missing: install the package fonts-dejavu-core");
     io.Fonts->AddFontFromFileTTF(kFontPath, kFontPixels * scale, nullptr, kRanges);
+    // The same face twice as large, for what is read from across the room: a lesson's
+    // formula, a banner.
+    io.Fonts->AddFontFromFileTTF(kFontPath, 2.0f * kFontPixels * scale, nullptr, kRanges);
     ImGui::GetStyle() = designStyle();
     ImGui::GetStyle().ScaleAllSizes(scale);
     if (io.Fonts->TexID) { // else the backend's first frame builds it

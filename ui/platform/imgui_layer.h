@@ -16,6 +16,8 @@
 
 union SDL_Event;
 
+struct ImFont;
+
 namespace ui {
 
 class SdlWindow;
@@ -23,6 +25,9 @@ class SdlWindow;
 /// Where the ImGui window `name` was drawn open (not folded) in the last frame, in
 /// framebuffer pixels, or nothing: what a panel covers, for what the game draws beside it.
 std::optional<PixelRect> openWindowRect(const char* name);
+/// The panels' font at twice its size (a lesson's formula), for ImGui::PushFont.
+ImFont* largeFont();
+
 /// Every window drawn in the last frame (folded ones by their title bar; tooltips and
 /// pop-ups too), by its ImGui name, in framebuffer pixels: what the panels cover.
 std::vector<std::pair<std::string, PixelRect>> drawnWindowRects();

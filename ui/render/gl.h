@@ -65,6 +65,12 @@ using ProcAddressFn = void* (*)(const char* name);
     X(void, RenderbufferStorage, (GLenum, GLenum, GLsizei, GLsizei))                               \
     X(void, RenderbufferStorageMultisample, (GLenum, GLsizei, GLenum, GLsizei, GLsizei))           \
     X(void, FramebufferRenderbuffer, (GLenum, GLenum, GLenum, GLuint))                             \
+    X(void, GenTextures, (GLsizei, GLuint*))                                                       \
+    X(void, DeleteTextures, (GLsizei, const GLuint*))                                              \
+    X(void, BindTexture, (GLenum, GLuint))                                                         \
+    X(void, TexImage2D, (GLenum, GLint, GLint, GLsizei, GLsizei, GLint, GLenum, GLenum, const void*)) \
+    X(void, TexParameteri, (GLenum, GLenum, GLint))                                                \
+    X(void, FramebufferTexture2D, (GLenum, GLenum, GLenum, GLuint, GLint))                         \
     X(void, BlitFramebuffer,                                                                       \
       (GLint, GLint, GLint, GLint, GLint, GLint, GLint, GLint, GLbitfield, GLenum))
 
