@@ -38,7 +38,7 @@
 // the rods every tick); a Baumgarte bias beta max(d - slop, 0) / dt removes the depth d.
 #pragma once
 
-#include "physics/collision/constraints.h"
+#include "physics/constraints/rods_and_cables.h"
 #include "physics/materials.h"
 #include "physics/particles.h"
 #include "physics/rigid/rigid_world.h"

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "physics/collision/collision_def.h"
-#include "physics/collision/constraints.h"
+#include "physics/constraints/rods_and_cables.h"
 #include "physics/collision/particle_collisions.h"
 #include "physics/collision/shapes.h"
 #include "physics/diagnostics.h"

@@ -1,7 +1,7 @@
 // artillery drop: the notes' drop experiment (001): bounce apexes against e^(2k) H.
 #include "game/cli/verbs.h"
 
-#include "physics/collision/drop.h"
+#include "physics/experiments/drop.h"
 #include "physics/materials.h"
 #include "physics/rigid/rigid_drop.h"
 

@@ -22,7 +22,7 @@
 // The wakes take effect at the end of the tick (wakeHeldSleepers, from updateSleep), not
 // where they are found: a sub-step works on the particles it selected at its start, and
 // every particle sees the same sleepers until the tick ends, whichever it works on.
-#include "physics/collision/pair_filter.h"
+#include "physics/collision/simd/pair_filter.h"
 #include "physics/collision/particle_collisions.h"
 
 #include <algorithm>

@@ -1,8 +1,8 @@
 #include "physics/collision/particle_collisions.h"
 
-#include "physics/collision/contact_resolver.h"
-#include "physics/collision/pair_filter.h"
-#include "physics/collision/settled_scan.h"
+#include "physics/collision/contact_impulse.h"
+#include "physics/collision/simd/pair_filter.h"
+#include "physics/collision/simd/settled_scan.h"
 
 #include <algorithm>
 #include <bit>
@@ -140,7 +140,7 @@ void ParticleCollisions::beginSubstep(const ParticleSet& set) {
     std::copy(set.vy.begin(), set.vy.end(), vy0_.begin());
 }
 
-// The parabola through the start and the end of the integrator's step (narrowphase.h).
+// The parabola through the start and the end of the integrator's step (time_of_impact.h).
 void ParticleCollisions::buildPaths(const ParticleSet& set, double h) {
     const std::size_t n = set.slots();
     growTo(path_, n), growTo(sv_, n), growTo(sa_, n), growTo(touched_, n), growTo(resting_, n);

@@ -4,7 +4,7 @@
 //
 // One sub-step, after the integrator has moved every particle from S0 to S1:
 //   paths    each particle's path over the step, the parabola through S0 and S1
-//            (narrowphase.h); for a particle that nothing touches, S1 stands as it is
+//            (time_of_impact.h); for a particle that nothing touches, S1 stands as it is
 //   passes   up to maxPasses times: broad phase on the boxes of the remaining paths,
 //            narrow phase to each pair's time of impact, then in time order: move the
 //            particles to that time, apply the impulse (equation 4 with the pair's
@@ -51,11 +51,11 @@
 
 #include "physics/collision/broadphase.h"
 #include "physics/collision/collision_def.h"
-#include "physics/collision/contact_columns.h"
-#include "physics/collision/narrowphase.h"
-#include "physics/collision/pair_filter.h"
-#include "physics/collision/pair_starts.h"
-#include "physics/collision/path_boxes.h"
+#include "physics/collision/simd/contact_rows.h"
+#include "physics/collision/time_of_impact.h"
+#include "physics/collision/simd/pair_filter.h"
+#include "physics/collision/simd/pair_starts.h"
+#include "physics/collision/simd/path_boxes.h"
 #include "physics/collision/shapes.h"
 #include "physics/collision/time_order.h"
 #include "physics/collision/wavefronts.h"
@@ -462,7 +462,7 @@ class ParticleCollisions {
         if (c.support == -1 && level_[c.a] < band) wa = 0.0;
         return {wa, wb};
     }
-    /// The slots of the sweeps' copies past the particles (contact_columns.h): still, at
+    /// The slots of the sweeps' copies past the particles (simd/contact_rows.h): still, at
     /// rest, and sink, which takes the push on an immovable side.
     std::uint32_t stillSlot() const {
         return static_cast<std::uint32_t>(sweepVelocity_.size() - 2);
@@ -485,7 +485,7 @@ class ParticleCollisions {
     void joinBandsIntoRuns();
     /// The rows of every sweep, in contactOrder_'s order (in its wavefronts when the lanes
     /// run, with padding rows); each band's from rowStart_[band].
-    ContactColumns rows_;
+    ContactRows rows_;
     std::vector<std::uint32_t> rowStart_;
     Wavefronts wavefronts_;
     std::vector<Vec2> sweepVelocity_, sweepPosition_; ///< the particles', then still, sink

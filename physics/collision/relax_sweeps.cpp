@@ -2,7 +2,7 @@
 // start, velocity sweeps over all contacts and then band by band, position sweeps the
 // same way. Each contact is visited some twenty times a sub-step, so the sweeps run on a
 // layout made for the loop, built once:
-//   rows        one row per contact, as columns (contact_columns.h), holding what a visit
+//   rows        one row per contact, as columns (simd/contact_rows.h), holding what a visit
 //               of either step reads (normal, closing speed, friction, reach, the
 //               inverse and the effective masses, each side's share of a push); the
 //               banded masses of shock propagation are worked out once per contact, not
@@ -135,8 +135,8 @@ void ParticleCollisions::layOutRows(const ParticleSet& set) {
     std::array<Known, 4> known;
     known.fill({~std::uint64_t{0}, ~std::uint64_t{0}, 0.0, 0.0, 0.0}); // a NaN's bits
     std::size_t replace = 0;
-    ContactColumns& rows = rows_;
-    auto setMasses = [&](ContactColumns::Masses& m, std::size_t at, double wa, double wb,
+    ContactRows& rows = rows_;
+    auto setMasses = [&](ContactRows::Masses& m, std::size_t at, double wa, double wb,
                          std::uint32_t b) {
         const auto ka = std::bit_cast<std::uint64_t>(wa), kb = std::bit_cast<std::uint64_t>(wb);
         std::size_t i = 0;
@@ -238,14 +238,14 @@ void ParticleCollisions::joinBandsIntoRuns() {
 void ParticleCollisions::sweepImpulses(const CollisionDef& def) {
     Vec2* const v = sweepVelocity_.data();
     std::uint8_t* const touched = touched_.data();
-    ContactColumns& rows = rows_;
+    ContactRows& rows = rows_;
     const std::size_t bands = bandStart_.size() - 1;
     for (int sweep = 0; sweep < def.relaxVelocitySweeps; ++sweep)
         for (const SweepRun& run : sweepRuns_)
-            sweepImpulseColumns(rows, rows.all, run.from, run.to, v, touched, run.lanes);
+            sweepImpulseRows(rows, rows.all, run.from, run.to, v, touched, run.lanes);
     for (std::size_t band = 1; band + 1 < bands; ++band)
         for (int sweep = 0; sweep < kShockSweeps; ++sweep)
-            sweepImpulseColumns(rows, rows.band, rowStart_[band], rowStart_[band + 1], v, touched,
+            sweepImpulseRows(rows, rows.band, rowStart_[band], rowStart_[band + 1], v, touched,
                                 bandLanes_[band] != 0);
     const auto count = static_cast<std::uint32_t>(contacts_.size());
     for (std::size_t at = 0; at < rows.size(); ++at) {
@@ -266,10 +266,10 @@ void ParticleCollisions::sweepImpulses(const CollisionDef& def) {
 void ParticleCollisions::sweepProjections(const StaticShapes& shapes, const CollisionDef& def) {
     Vec2* const p = sweepPosition_.data();
     std::uint8_t* const touched = touched_.data();
-    ContactColumns& rows = rows_;
+    ContactRows& rows = rows_;
     // A contact with a shape: push the centre out along the shape's normal, at most a
     // fifth of the radius at a time; how far it pushed tells whether the push was deep.
-    auto shapeStep = [&](const ContactColumns::Masses& m) {
+    auto shapeStep = [&](const ContactRows::Masses& m) {
         return [&, p, touched](std::size_t k) {
             const std::uint32_t a = rows.a[k];
             const RelaxContact& c = contacts_[rows.contact[k]];
@@ -296,14 +296,14 @@ void ParticleCollisions::sweepProjections(const StaticShapes& shapes, const Coll
     for (int sweep = 0; sweep < def.relaxPositionSweeps; ++sweep) {
         bool deep = false;
         for (const SweepRun& run : sweepRuns_)
-            deep = sweepProjectColumns(rows, rows.all, run.from, run.to, p, touched, run.lanes,
+            deep = sweepProjectRows(rows, rows.all, run.from, run.to, p, touched, run.lanes,
                                        kDeepPush, shapeStep(rows.all)) ||
                    deep;
         if (!deep) break;
     }
     for (std::size_t band = 1; band + 1 < bands; ++band)
         for (int sweep = 0; sweep < kShockSweeps; ++sweep)
-            sweepProjectColumns(rows, rows.band, rowStart_[band], rowStart_[band + 1], p, touched,
+            sweepProjectRows(rows, rows.band, rowStart_[band], rowStart_[band + 1], p, touched,
                                 bandLanes_[band] != 0, kDeepPush, shapeStep(rows.band));
     if (lanes_) markTouched(rows, touched, rows.all.pushB, rows.band.pushB);
 }

@@ -1,7 +1,7 @@
 // Piles, stacks and heaps: the contact solver at the end of the step (particle_collisions.h)
 // against exact answers: a column stands exactly still, a heap settles without overlaps,
 // with nothing pushed through a wall, and falls asleep; resting pairs are still reported.
-#include "physics/collision/contact_columns.h"
+#include "physics/collision/simd/contact_rows.h"
 #include "physics/diagnostics.h"
 #include "physics/world.h"
 

@@ -2,7 +2,7 @@
 // passes: on slots that fail it each way it can (flags not as recorded, awake, a -0 or a
 // tiny velocity, a place or radius one bit off, -0 against +0), it stops at the first
 // such slot, clears the marks of the slots it passed and counts the alive among them.
-#include "physics/collision/settled_scan.h"
+#include "physics/collision/simd/settled_scan.h"
 #include "physics/particles.h"
 
 #include <gtest/gtest.h>

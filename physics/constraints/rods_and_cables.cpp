@@ -1,4 +1,4 @@
-#include "physics/collision/constraints.h"
+#include "physics/constraints/rods_and_cables.h"
 
 #include <algorithm>
 #include <cmath>

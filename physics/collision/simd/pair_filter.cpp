@@ -1,6 +1,6 @@
-#include "physics/collision/pair_filter.h"
+#include "physics/collision/simd/pair_filter.h"
 
-#include "physics/collision/narrowphase.h"
+#include "physics/collision/time_of_impact.h"
 #include "physics/cpu_features.h"
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
@@ -61,7 +61,7 @@ std::size_t keepOverlappingScalar(std::span<const ProxyPair> pairs, std::span<co
 #pragma GCC target("avx2")
 namespace {
 
-#include "physics/collision/lanes.inc"
+#include "physics/collision/simd/avx2_loads.inc"
 
 std::size_t keepOverlappingAvx2(std::span<const ProxyPair> pairs, std::span<const Aabb> particles,
                                 std::span<const Aabb> statics, ProxyPair* out) {

@@ -1,8 +1,8 @@
-// The contact solver's lane sweeps (contact_columns.h) against its one-row steps: the same
+// The contact solver's lane sweeps (simd/contact_rows.h) against its one-row steps: the same
 // rows, swept four at a time and one at a time, end in the same bits, signed zeros and
 // rows that do nothing included. Each run of four rows shares no particle, as in a
 // wavefront, so the order within a run does not matter and the two must agree exactly.
-#include "physics/collision/contact_columns.h"
+#include "physics/collision/simd/contact_rows.h"
 
 #include <gtest/gtest.h>
 
@@ -74,11 +74,11 @@ std::vector<Vec2> randomState(std::mt19937_64& rng) {
 
 } // namespace
 
-TEST(ContactColumns, FourImpulseRowsAtOnceGiveTheBitsOfOneAtATime) {
+TEST(ContactRows, FourImpulseRowsAtOnceGiveTheBitsOfOneAtATime) {
     if (!contactLanesAvailable()) std::printf("no AVX2 here: both sweeps run one row at a time\n");
     std::mt19937_64 rng(11);
     for (int trial = 0; trial < 300; ++trial) {
-        ContactColumns rows;
+        ContactRows rows;
         fillRuns(rng, rows, [&](std::size_t k, std::uint32_t a, std::uint32_t b) {
             const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
             rows.a[k] = a;
@@ -86,7 +86,7 @@ TEST(ContactColumns, FourImpulseRowsAtOnceGiveTheBitsOfOneAtATime) {
             const double angle = pick(rng, 3.0);
             rows.nx[k] = std::cos(angle), rows.ny[k] = std::sin(angle);
             rows.closing[k] = pick(rng, 0.5), rows.friction[k] = std::abs(pick(rng, 0.6));
-            for (ContactColumns::Masses* m : {&rows.all, &rows.band}) {
+            for (ContactRows::Masses* m : {&rows.all, &rows.band}) {
                 const bool bMoves = kind >= 2;
                 m->wa[k] = kind == 3 ? 0.0 : 10.0, m->wb[k] = bMoves ? 10.0 : 0.0;
                 const double sum = m->wa[k] + m->wb[k];
@@ -96,13 +96,13 @@ TEST(ContactColumns, FourImpulseRowsAtOnceGiveTheBitsOfOneAtATime) {
             rows.normalImpulse[k] = std::abs(pick(rng, 0.2));
             rows.tangentImpulse[k] = pick(rng, 0.1);
         });
-        ContactColumns one = rows;
+        ContactRows one = rows;
         std::vector<Vec2> v = randomState(rng), w = v;
         std::vector<std::uint8_t> touchedLanes(kParticles + 2), touchedOne(kParticles + 2);
         for (int sweep = 0; sweep < 3; ++sweep) {
-            sweepImpulseColumns(rows, rows.all, 0, rows.size(), v.data(), touchedLanes.data(),
+            sweepImpulseRows(rows, rows.all, 0, rows.size(), v.data(), touchedLanes.data(),
                                 contactLanesAvailable());
-            sweepImpulseColumns(one, one.all, 0, one.size(), w.data(), touchedOne.data(), false);
+            sweepImpulseRows(one, one.all, 0, one.size(), w.data(), touchedOne.data(), false);
         }
         if (contactLanesAvailable()) markTouched(rows, touchedLanes.data(), rows.all.pushB);
         ASSERT_TRUE(sameBits(v, w)) << trial;
@@ -116,22 +116,22 @@ TEST(ContactColumns, FourImpulseRowsAtOnceGiveTheBitsOfOneAtATime) {
     }
 }
 
-TEST(ContactColumns, FourProjectionRowsAtOnceGiveTheBitsOfOneAtATime) {
+TEST(ContactRows, FourProjectionRowsAtOnceGiveTheBitsOfOneAtATime) {
     std::mt19937_64 rng(12);
     int deepSweeps[2] = {0, 0}; // sweeps that did not push deep, and that did
     for (int trial = 0; trial < 300; ++trial) {
-        ContactColumns rows;
+        ContactRows rows;
         fillRuns(rng, rows, [&](std::size_t k, std::uint32_t a, std::uint32_t b) {
             const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
             const bool bMoves = kind > 0, still = kind == 3 && k % 4 == 1; // no mass: no step
             rows.a[k] = a, rows.readB[k] = b;
             rows.reach[k] = std::abs(pick(rng, 1.5)), rows.cap[k] = std::abs(pick(rng, 0.3));
-            ContactColumns::Masses& m = rows.all;
+            ContactRows::Masses& m = rows.all;
             m.pushB[k] = bMoves ? b : kSink;
             m.mass[k] = still ? 0.0 : bMoves ? 0.05 : 0.1;
             m.fa[k] = still ? 0.0 : bMoves ? 0.5 : 1.0, m.fb[k] = still || !bMoves ? 0.0 : 0.5;
         });
-        ContactColumns one = rows;
+        ContactRows one = rows;
         std::vector<Vec2> p = randomState(rng), q = p;
         // Some pairs on top of each other: the normal is then straight up.
         for (std::size_t k = 0; k < rows.size(); k += 5)
@@ -145,9 +145,9 @@ TEST(ContactColumns, FourProjectionRowsAtOnceGiveTheBitsOfOneAtATime) {
         const double deepShare = std::array{0.0, 0.5, 0.99, 1.0}[trial % 4];
         for (int sweep = 0; sweep < 3; ++sweep) {
             const bool deepLanes =
-                sweepProjectColumns(rows, rows.all, 0, rows.size(), p.data(), touchedLanes.data(),
+                sweepProjectRows(rows, rows.all, 0, rows.size(), p.data(), touchedLanes.data(),
                                     contactLanesAvailable(), deepShare, noShapes);
-            const bool deepOne = sweepProjectColumns(one, one.all, 0, one.size(), q.data(),
+            const bool deepOne = sweepProjectRows(one, one.all, 0, one.size(), q.data(),
                                                      touchedOne.data(), false, deepShare, noShapes);
             ASSERT_EQ(deepLanes, deepOne) << trial << ", sweep " << sweep;
             ++deepSweeps[deepOne];
@@ -164,24 +164,24 @@ TEST(ContactColumns, FourProjectionRowsAtOnceGiveTheBitsOfOneAtATime) {
 // A sweep says whether it pushed deep: a pair 0.375 inside each other, with a cap of
 // 0.25, moves 0.25 apart in the first sweep (deeper than half the cap) and the last 0.125
 // in the second (not deeper), and the third pushes nothing. (Binary fractions: exact.)
-TEST(ContactColumns, ASweepSaysWhetherItPushedDeeperThanItsShareOfTheCap) {
+TEST(ContactRows, ASweepSaysWhetherItPushedDeeperThanItsShareOfTheCap) {
     for (const bool lanes : {false, true}) {
         if (lanes && !contactLanesAvailable()) continue;
         // The pair's row, then (for the lanes) three padding rows: at the sink against
         // still, with no mass.
-        ContactColumns rows;
+        ContactRows rows;
         rows.resize(4);
         for (std::size_t k = 0; k < 4; ++k)
             rows.a[k] = kSink, rows.readB[k] = kStill, rows.all.pushB[k] = kSink;
         rows.a[0] = 0, rows.readB[0] = 1, rows.reach[0] = 1.0, rows.cap[0] = 0.25;
-        ContactColumns::Masses& m = rows.all;
+        ContactRows::Masses& m = rows.all;
         m.wa[0] = m.wb[0] = 1.0, m.mass[0] = 0.5, m.fa[0] = m.fb[0] = 0.5, m.pushB[0] = 1;
         std::vector<Vec2> p(kParticles + 2);
         p[0] = {0.0, 0.625}, p[1] = {0.0, 0.0};
         std::vector<std::uint8_t> touched(kParticles + 2);
         auto noShapes = [](std::size_t) { return 0.0; };
         auto sweep = [&](double deepShare) {
-            return sweepProjectColumns(rows, rows.all, 0, lanes ? 4 : 1, p.data(), touched.data(),
+            return sweepProjectRows(rows, rows.all, 0, lanes ? 4 : 1, p.data(), touched.data(),
                                        lanes, deepShare, noShapes);
         };
         EXPECT_TRUE(sweep(0.5)) << lanes;

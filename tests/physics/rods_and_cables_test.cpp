@@ -1,5 +1,5 @@
 // Rods and cables (Millington's contact-style constraints) against their definitions.
-#include "physics/collision/constraints.h"
+#include "physics/constraints/rods_and_cables.h"
 #include "physics/world.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "physics/collision/drop.h"
+#include "physics/experiments/drop.h"
 
 #include "physics/world.h"
 

@@ -27,7 +27,7 @@ namespace phys {
 /// current normal, at most `cap` at once, `fa` and `fb` of it to each side). Each row has
 /// two sets of masses: those of the sweeps over all contacts, and those of the sweeps over
 /// its band alone (shock propagation: what holds it up may be immovable).
-struct ContactColumns {
+struct ContactRows {
     /// Inverse masses, the effective mass 1 / (wa + wb) (0: the row does nothing in these
     /// sweeps), each side's share of a push (wa and wb over wa + wb), where b's push goes
     /// (b, or the sink).
@@ -57,7 +57,7 @@ bool contactLanesAvailable();
 /// the wavefronts' runs multiples of 4) or one row at a time. `touched[k]` becomes 1 for
 /// each slot a step changed: at once one row at a time, by markTouched after the lanes
 /// (which keep what changed in `changed`, not to scatter flags at every step).
-void sweepImpulseColumns(ContactColumns& rows, const ContactColumns::Masses& masses,
+void sweepImpulseRows(ContactRows& rows, const ContactRows::Masses& masses,
                          std::size_t from, std::size_t to, Vec2* velocity, std::uint8_t* touched,
                          bool lanes);
 
@@ -67,7 +67,7 @@ void sweepImpulseColumns(ContactColumns& rows, const ContactColumns::Masses& mas
 /// apart by more than `deepShare` of its cap (the most it moves at once): deep overlap is
 /// left.
 template <class ShapeStep>
-bool sweepProjectColumns(ContactColumns& rows, const ContactColumns::Masses& masses,
+bool sweepProjectRows(ContactRows& rows, const ContactRows::Masses& masses,
                          std::size_t from, std::size_t to, Vec2* position, std::uint8_t* touched,
                          bool lanes, double deepShare, ShapeStep&& shapeStep);
 
@@ -83,21 +83,21 @@ void markTouched(Columns& rows, std::uint8_t* touched, const Pushes&... pushes) 
         }
 }
 
-// The parts of sweepProjectColumns that are not templates.
+// The parts of sweepProjectRows that are not templates.
 namespace detail {
 /// Whether the push was deep.
-bool projectPair(const ContactColumns& rows, const ContactColumns::Masses& masses, std::size_t k,
+bool projectPair(const ContactRows& rows, const ContactRows::Masses& masses, std::size_t k,
                  Vec2* position, std::uint8_t* touched, double deepShare);
 /// The runs of four pair rows from `from` on, each four at once, up to `to` or the first
 /// run of shape rows, where it stops (contactLanesAvailable() only); `deep` becomes true
 /// where a push was deep.
-std::size_t projectPairRuns(ContactColumns& rows, const ContactColumns::Masses& masses,
+std::size_t projectPairRuns(ContactRows& rows, const ContactRows::Masses& masses,
                             std::size_t from, std::size_t to, Vec2* position, double deepShare,
                             bool& deep);
 } // namespace detail
 
 template <class ShapeStep>
-bool sweepProjectColumns(ContactColumns& rows, const ContactColumns::Masses& masses,
+bool sweepProjectRows(ContactRows& rows, const ContactRows::Masses& masses,
                          std::size_t from, std::size_t to, Vec2* position, std::uint8_t* touched,
                          bool lanes, double deepShare, ShapeStep&& shapeStep) {
     bool deep = false;

@@ -1,4 +1,4 @@
-#include "physics/collision/path_boxes.h"
+#include "physics/collision/simd/path_boxes.h"
 
 #include "physics/cpu_features.h"
 
@@ -44,7 +44,7 @@ void pathBoxesScalar(std::span<const std::uint32_t> which, std::span<const PathM
 #pragma GCC target("avx2")
 namespace {
 
-#include "physics/collision/lanes.inc"
+#include "physics/collision/simd/avx2_loads.inc"
 
 void pathBoxesAvx2(std::span<const std::uint32_t> which, std::span<const PathMotion> paths,
                    std::span<const double> radius, const PathBoxing& b, Aabb* boxes) {

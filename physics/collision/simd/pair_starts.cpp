@@ -1,4 +1,4 @@
-#include "physics/collision/pair_starts.h"
+#include "physics/collision/simd/pair_starts.h"
 
 #include "physics/cpu_features.h"
 
@@ -37,7 +37,7 @@ void classifyPairStartsScalar(std::span<const ProxyPair> pairs, const PathDiscs&
 #pragma GCC target("avx2")
 namespace {
 
-#include "physics/collision/lanes.inc"
+#include "physics/collision/simd/avx2_loads.inc"
 
 // PathMotion::position(t) and velocity(t) from the later t0, as relativeTo takes them.
 void advanceTo(const PathLanes& m, __m256d t, __m256d& x, __m256d& y, __m256d& vx, __m256d& vy) {

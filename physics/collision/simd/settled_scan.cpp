@@ -1,4 +1,4 @@
-#include "physics/collision/settled_scan.h"
+#include "physics/collision/simd/settled_scan.h"
 
 #include "physics/cpu_features.h"
 

@@ -1,4 +1,4 @@
-#include "physics/collision/contact_columns.h"
+#include "physics/collision/simd/contact_rows.h"
 
 #include "physics/cpu_features.h"
 
@@ -12,7 +12,7 @@
 
 namespace phys {
 
-void ContactColumns::resize(std::size_t n) {
+void ContactRows::resize(std::size_t n) {
     for (auto* c : {&a, &readB, &contact, &all.pushB, &band.pushB})
         c->resize(n);
     shape.resize(n);
@@ -27,7 +27,7 @@ void ContactColumns::resize(std::size_t n) {
 namespace {
 
 // One velocity row: the reference the lanes reproduce.
-inline void impulseRow(ContactColumns& r, const ContactColumns::Masses& m, std::size_t k, Vec2* v,
+inline void impulseRow(ContactRows& r, const ContactRows::Masses& m, std::size_t k, Vec2* v,
                        std::uint8_t* touched) {
     const double mass = m.mass[k];
     if (!(mass > 0.0)) return;
@@ -54,7 +54,7 @@ inline void impulseRow(ContactColumns& r, const ContactColumns::Masses& m, std::
 
 namespace detail {
 
-bool projectPair(const ContactColumns& r, const ContactColumns::Masses& m, std::size_t k, Vec2* p,
+bool projectPair(const ContactRows& r, const ContactRows::Masses& m, std::size_t k, Vec2* p,
                  std::uint8_t* touched, double deepShare) {
     if (!(m.mass[k] > 0.0)) return false;
     const std::uint32_t a = r.a[k], pushB = m.pushB[k];
@@ -135,7 +135,7 @@ struct Lanes {
     const double *wa, *wb, *mass, *fa, *fb;
     double *normalImpulse, *tangentImpulse;
     std::uint64_t* changed;
-    Lanes(ContactColumns& r, const ContactColumns::Masses& m)
+    Lanes(ContactRows& r, const ContactRows::Masses& m)
         : a(r.a.data()), readB(r.readB.data()), pushB(m.pushB.data()), shape(r.shape.data()),
           nx(r.nx.data()), ny(r.ny.data()), closing(r.closing.data()), friction(r.friction.data()),
           reach(r.reach.data()), cap(r.cap.data()), wa(m.wa.data()), wb(m.wb.data()),
@@ -197,7 +197,7 @@ inline void impulseRows4(const Lanes& r, std::size_t k, Vec2* v) {
     keepChanged(r.changed, k, changed);
 }
 
-void impulseSweep(ContactColumns& rows, const ContactColumns::Masses& m, std::size_t from,
+void impulseSweep(ContactRows& rows, const ContactRows::Masses& m, std::size_t from,
                   std::size_t to, Vec2* v) {
     const Lanes r(rows, m);
     for (std::size_t k = from; k < to; k += 4)
@@ -235,7 +235,7 @@ inline __m256d projectPairs4(const Lanes& r, std::size_t k, Vec2* p, __m256d dee
     return _mm256_and_pd(changed, _mm256_cmp_pd(depth, _mm256_mul_pd(deepShare, cap), _CMP_GT_OQ));
 }
 
-std::size_t projectPairRuns(ContactColumns& rows, const ContactColumns::Masses& m, std::size_t from,
+std::size_t projectPairRuns(ContactRows& rows, const ContactRows::Masses& m, std::size_t from,
                             std::size_t to, Vec2* p, double deepShare, bool& deep) {
     const Lanes r(rows, m);
     const __m256d share = _mm256_set1_pd(deepShare);
@@ -259,7 +259,7 @@ bool contactLanesAvailable() {
 #endif
 }
 
-void sweepImpulseColumns(ContactColumns& rows, const ContactColumns::Masses& masses,
+void sweepImpulseRows(ContactRows& rows, const ContactRows::Masses& masses,
                          std::size_t from, std::size_t to, Vec2* velocity, std::uint8_t* touched,
                          bool lanes) {
 #if defined(ARTILLERY_CONTACT_AVX2)
@@ -276,7 +276,7 @@ void sweepImpulseColumns(ContactColumns& rows, const ContactColumns::Masses& mas
 
 namespace detail {
 
-std::size_t projectPairRuns(ContactColumns& rows, const ContactColumns::Masses& masses,
+std::size_t projectPairRuns(ContactRows& rows, const ContactRows::Masses& masses,
                             std::size_t from, std::size_t to, Vec2* position, double deepShare,
                             bool& deep) {
 #if defined(ARTILLERY_CONTACT_AVX2)

@@ -9,7 +9,7 @@
 // boxes are the same bits.
 #pragma once
 
-#include "physics/collision/narrowphase.h"
+#include "physics/collision/time_of_impact.h"
 
 #include <cstdint>
 #include <span>

@@ -11,7 +11,7 @@
 #pragma once
 
 #include "physics/collision/broadphase.h"
-#include "physics/collision/narrowphase.h"
+#include "physics/collision/time_of_impact.h"
 
 #include <cstdint>
 #include <span>

@@ -1,4 +1,4 @@
-#include "physics/collision/contact_resolver.h"
+#include "physics/collision/contact_impulse.h"
 
 #include <algorithm>
 #include <cmath>

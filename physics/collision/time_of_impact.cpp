@@ -1,4 +1,4 @@
-#include "physics/collision/narrowphase.h"
+#include "physics/collision/time_of_impact.h"
 
 #include <limits>
 

@@ -45,7 +45,7 @@ struct DropResult {
 };
 
 /// Runs the drop. Apexes are the top of the path the integrator followed within the
-/// tick (the parabola through the tick's start and end, narrowphase.h), not just the
+/// tick (the parabola through the tick's start and end, time_of_impact.h), not just the
 /// sampled positions, so the sampling of dt does not hide or add error. Once the ball
 /// rests on the floor every further apex is 0.
 DropResult simulateDrop(const DropDef& def);
