@@ -1,5 +1,7 @@
-// Contact response: the impulse of one contact (notes 001, equation 4, with Coulomb
-// friction), and the penalty spring of the gradual model (notes 000).
+// Contact response: the impulse of one contact (the collision response with a coefficient
+// of restitution of Claypool's "Game Physics" lecture, its equation 4, with Coulomb
+// friction), and the penalty spring of the gradual model (Rabin, Introduction to Game
+// Development, 4.3 "Real-time Game Physics").
 #pragma once
 
 #include "physics/materials.h"
@@ -18,7 +20,7 @@ struct ContactImpulse {
 /// Frictional impulse response at a contact with unit normal n (from b to a), relative
 /// velocity vrel = v_a - v_b and inverse masses wa, wb (0: immovable):
 ///   j_n = -(1 + e) (vrel . n) / (wa + wb)
-/// which is the notes' equation 4, I = -m1 m2 (1 + e) (v1 - v2).n / (m1 + m2) n, written
+/// which is that equation 4, I = -m1 m2 (1 + e) (v1 - v2).n / (m1 + m2) n, written
 /// with inverse masses so an immovable body (w = 0) needs no special case. Nothing
 /// happens when the contact is separating (vrel . n >= 0) and no support is given.
 /// Coulomb friction along the tangent t (the direction of sliding): the impulse that

@@ -9,10 +9,10 @@
 // symplectic Euler (a = 2g) it reproduces their own positions at any fraction of the
 // step, so their error stays visible instead of being corrected away.
 //
-// Two ways to find the time of impact (notes 002, "Collision detection"):
+// Two ways to find the time of impact (Claypool, "Basic Game Physics", collision detection):
 // - overlap testing (continuous detection off): test only where the step ends; if
 //   the particle overlaps, bisect in time, moving the particle back and forth by
-//   halves (the notes: five halvings are usually enough), then place the time inside
+//   halves (five halvings are usually enough, says the lecture), then place the time inside
 //   the last bracket with secant steps on the signed gap, so the bounce happens where
 //   the gap is zero rather than up to dt/32 early or late. A thin wall crossed within
 //   one step is never seen: it tunnels.
@@ -52,7 +52,7 @@ struct PathMotion {
 /// Settings of the time-of-impact search (WorldDef::collision holds them).
 struct ToiSettings {
     bool continuous = true; ///< swept-sphere + conservative advancement; off: overlap at step end
-    int bisectionHalvings = 5; ///< halvings of the overlap bracket (notes: 5), 0..60
+    int bisectionHalvings = 5; ///< halvings of the overlap bracket, 0..60
     double tolerance = 1e-9;   ///< m: a gap this small counts as touching
     int maxAdvanceIterations =
         64; ///< conservative-advancement steps before falling back to bisection

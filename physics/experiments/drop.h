@@ -1,4 +1,5 @@
-// The drop experiment of notes 001: a ball dropped from rest at height H onto a floor
+// The drop experiment of Claypool's "Game Physics" lecture: a ball dropped from rest at
+// height H onto a floor
 // bounces to e^2 H, then e^4 H, ..., e^(2k) H (e = sqrt(h/H) is how e was measured).
 // The `drop` verb and the drop tests run it through the whole world step, so it tests
 // detection, time of impact and response together, with any integrator and step.

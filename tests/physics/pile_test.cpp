@@ -389,7 +389,7 @@ TEST(Pile, FallingAsleepCostsNoBroadPhase) {
 }
 
 // A pass after the first detects again only what the pass before it changed (the paths
-// it bounced, the resting pairs it left to the solver: later_passes.cpp), and every tick
+// it bounced, the resting pairs it left to the solver: toi_passes.h), and every tick
 // ends bit for bit as when every pass detects over every particle: the same world hash
 // and the same contacts, field for field. The scenes have all that a pass can leave:
 //   heap     1,500 balls dropped in columns (impacts, resting pairs, balls falling

@@ -1,5 +1,5 @@
 // The contact solver's rows as columns, and the sweeps over them (the velocity and the
-// position steps of ParticleCollisions::relaxContacts).
+// position steps of the contact solver, contact_solver.h).
 //
 // A sweep's rows are laid out in its wavefronts (wavefronts.h): each wavefront's rows
 // share no particle, so four of them at a time go through AVX2 lanes where the processor

@@ -1,5 +1,5 @@
 // The kept pairs whose exact boxes overlap: what every pass and the contact solver ask of
-// the pair cache (ParticleCollisions::findPairs), thousands of pairs at a time.
+// the pair cache (PairCache::findPairs), thousands of pairs at a time.
 //
 // Which pairs pass is a coin toss, so neither way branches on it: each pair is written
 // and the count moves on only if it passes. Where the processor has AVX2 the test of

@@ -1,5 +1,5 @@
 // Where the first pass's times of impact need no search. In a resting pile nearly every
-// pair the first pass tests (four in five in the 4,000-ball pile) starts touching, and
+// pair the first pass tests starts touching, and
 // timeOfImpact then answers from the start of the path alone (touchingTime): a contact
 // now, one when the pair falls back together, or none. That answer is worked out here
 // for pairs of particles four at a time, where the processor has AVX2; the pairs that

@@ -1,5 +1,5 @@
 // The boxes of the particles' paths over a step: what each detection boxes before it
-// asks the pair cache (ParticleCollisions::buildProxies), every active particle of a pile
+// asks the pair cache (Proxies::build), every active particle of a pile
 // twice a sub-step. A quadratic path lies in the triangle of its Bezier control points
 // (start, start + v T/2, end), so its box is theirs, grown by the particle's reach.
 //

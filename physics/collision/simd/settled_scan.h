@@ -1,13 +1,13 @@
-// The settled sleepers of selectActive, skipped four slots at a time.
+// The settled sleepers of AwakeSet::select (awake_set.h), skipped four slots at a time.
 //
-// Each sub-step selectActive tests every slot: a slot is settled when it is empty or
+// Each sub-step the awake set tests every slot: a slot is settled when it is empty or
 // asleep at rest (velocity +0), and its flags, place and radius are the ones recorded
 // when a sub-step last worked on it, bit for bit. In a pile that has mostly fallen asleep
-// nearly every slot passes, and the test, a dozen loads and branches a slot, was a tenth
-// of such a tick. skipSettled runs the same test on four slots at a time with AVX2 where
+// nearly every slot passes, and the test, a dozen loads and branches a slot, ran over
+// every slot of such a tick. skipSettled runs the same test on four slots at a time with AVX2 where
 // the processor has it: integer comparisons of the flags and of the doubles' bits, so it
 // passes exactly the slots the one-slot test passes, and stops at the first slot that
-// does not pass, for selectActive to take that slot itself.
+// does not pass, for the awake set to take that slot itself.
 #pragma once
 
 #include <cstddef>
