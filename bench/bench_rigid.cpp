@@ -3,7 +3,7 @@
 //      (sleeping bodies must cost under 5 % of awake ones), with Box2D still
 //      stepped while asleep and with quiescent steps skipped (the default);
 //   2. the rigid drop: Box2D's bounce apexes against e^(2k) H for every restitution
-//      preset (the lecture notes' presets), at dt = 1/120 s with 1 and 4 sub-steps.
+//      preset (Claypool's measured presets), at dt = 1/120 s with 1 and 4 sub-steps.
 // Usage: bench_rigid [--csv] [--ticks N]. Times are wall clock, so they vary from run
 // to run; the ratio is the figure to read.
 #include "bench/options.h"

@@ -104,8 +104,9 @@ void ContactSolver::buildContacts(const Substep& sub, const SubstepPaths& paths)
 // shape too far away or a gap that closes faster than a resting contact would.
 // (Always inlined, as the next one is: each is the body of the build's loop, named, and
 // a call per contact would pass the build's state back and forth thousands of times.)
-[[gnu::always_inline]] inline bool ContactSolver::addContact(const NearPair& near, double wa, double wb, const Substep& sub,
-                               const SubstepPaths& paths) {
+[[gnu::always_inline]] inline bool ContactSolver::addContact(const NearPair& near, double wa,
+                                                             double wb, const Substep& sub,
+                                                             const SubstepPaths& paths) {
     const ParticleSet& set = sub.set;
     const StaticShapes& shapes = sub.shapes;
     const auto slots = static_cast<std::uint32_t>(set.slots());
@@ -215,8 +216,16 @@ void ContactSolver::reportDeferred(std::vector<DeferredPair>& deferred, const Pa
             ++k;
         if (k < contacts_.size() && contacts_[k].key() == e.key)
             impulse = contacts_[k].normalImpulse;
-        events.push_back(
-            {a, b, {}, e.time, e.normal, e.closingSpeed, impulse, true, e.position, set.velocity(a)});
+        events.push_back({a,
+                          b,
+                          {},
+                          e.time,
+                          e.normal,
+                          e.closingSpeed,
+                          impulse,
+                          true,
+                          e.position,
+                          set.velocity(a)});
     }
 }
 

@@ -44,15 +44,7 @@ namespace phys {
 
 class ContactSolver {
   public:
-    /// The stages the solver reads and tells.
-    struct Stages {
-        AwakeSet& awake;
-        SubstepPaths& paths;
-        Proxies& proxies;
-        PairCache& cache;
-        Sleep& sleep;
-        HeldSleepers& held;
-    };
+    using Stages = SubstepStages;
     /// Settles the contacts of the sub-step's end state.
     void solve(const Substep& sub, const Stages& st);
     /// No solve this sub-step: nothing to warm the next one with.
@@ -114,7 +106,7 @@ class ContactSolver {
     std::vector<std::uint8_t> bodyMark_;
     SweepOrder order_;
     ContactRows rows_;
-    bool lanes_ = false; ///< this solve's sweeps run in wavefronts of four lanes
+    bool lanes_ = false;                    ///< this solve's sweeps run in wavefronts of four lanes
     std::vector<Vec2> velocity_, position_; ///< the particles', then still, sink
     std::vector<std::uint8_t> moved_;       ///< by the sweeps, per slot of the copies
 };

@@ -47,8 +47,8 @@ void HeldSleepers::sortHolds() {
                 held_.end());
 }
 
-void HeldSleepers::holdsOfWoken(const ParticleSet& set, const CollisionDef& def,
-                                AwakeSet& awake, PairCache& cache) {
+void HeldSleepers::holdsOfWoken(const ParticleSet& set, const CollisionDef& def, AwakeSet& awake,
+                                PairCache& cache) {
     if (awake.wokeOrGone().empty()) return;
     const std::size_t before = held_.size();
     for (const std::uint32_t a : awake.wokeOrGone()) {
@@ -97,8 +97,7 @@ void HeldSleepers::wakeWhereHoldersMoved(const ParticleSet& set, const Collision
         const Hold h = held_[i++];
         const bool contact = now && heldNow_[j].key() == h.key(); // held still
         if (contact) ++j;
-        if (h.held >= set.slots() || !(set.flags[h.held] & kAlive) ||
-            !wakeableSleeper(set, h.held))
+        if (h.held >= set.slots() || !(set.flags[h.held] & kAlive) || !wakeableSleeper(set, h.held))
             continue; // woke, or the set was cleared since
         if (!contact) {
             const bool gone = h.holder >= set.slots() || !(set.flags[h.holder] & kAlive);

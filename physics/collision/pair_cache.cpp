@@ -74,7 +74,7 @@ void PairCache::findPairs(const Substep& sub, const std::vector<std::uint32_t>& 
                           Proxies& proxies, const SubstepPaths& paths) {
     staticIndex_.update(sub.shapes);
     staticHits_.reserve(sub.shapes.count()); // the most a query can return: no growth later
-    for (const std::uint32_t i : strays_) // the cache check below covers them
+    for (const std::uint32_t i : strays_)    // the cache check below covers them
         strayMark_[i] = 0;
     strays_.clear();
     switch (check(sub.def, active, proxies)) {
@@ -109,8 +109,7 @@ PairCache::CacheState PairCache::check(const CollisionDef& def,
     for (const std::uint32_t i : active) {
         const ProxyKind k = proxies.kind(i), f0 = fat_.kind(i);
         const bool fewerPairs = k == f0 || k == ProxyKind::None || f0 == ProxyKind::Moving;
-        if (fewerPairs && (k == ProxyKind::None || fat_.box(i).contains(proxies.box(i))))
-            continue;
+        if (fewerPairs && (k == ProxyKind::None || fat_.box(i).contains(proxies.box(i)))) continue;
         if (!def.patchPairs || escaped_.size() == kMostPatched) return CacheState::Rebuild;
         escaped_.push_back(i);
     }

@@ -36,8 +36,7 @@ namespace phys {
 class FatBoxes {
   public:
     /// Every proxy's fat box, from its exact box and its path.
-    void build(const ParticleSet& set, const Proxies& proxies, const SubstepPaths& paths,
-               double h);
+    void build(const ParticleSet& set, const Proxies& proxies, const SubstepPaths& paths, double h);
     /// Proxy i's fat box anew, from its exact box (it escaped).
     void refit(const ParticleSet& set, const Proxies& proxies, const SubstepPaths& paths,
                std::uint32_t i, double h);
@@ -60,8 +59,8 @@ class FatBoxes {
 
   private:
     /// Particle i's box grown by kPlay radii and a step of its path's motion.
-    static Aabb fatBox(const ParticleSet& set, const Proxies& proxies,
-                       const SubstepPaths& paths, std::size_t i, double h);
+    static Aabb fatBox(const ParticleSet& set, const Proxies& proxies, const SubstepPaths& paths,
+                       std::size_t i, double h);
     static constexpr double kPlay = 0.5; ///< radii of play in a fat box
     /// The grid is built when first needed after the boxes are, and again when many moved.
     static constexpr std::size_t kMostMovedInGrid = 128;
@@ -80,7 +79,8 @@ class KeptPairIndex {
     /// The places in the cache of particle i's pairs (with shapes, and with particles on
     /// either side of the pair).
     std::span<const std::uint32_t> of(std::uint32_t i) const {
-        return std::span<const std::uint32_t>(pairsOf_).subspan(start_[i], start_[i + 1] - start_[i]);
+        return std::span<const std::uint32_t>(pairsOf_).subspan(start_[i],
+                                                                start_[i + 1] - start_[i]);
     }
 
   private:
@@ -93,8 +93,8 @@ class PairCache {
     /// pairs(): the pairs of the proxies (and of the moving proxies with the static
     /// shapes) whose exact boxes overlap, sorted, from the kept pairs (mended or rebuilt
     /// first where they no longer cover the proxies).
-    void findPairs(const Substep& sub, const std::vector<std::uint32_t>& active,
-                   Proxies& proxies, const SubstepPaths& paths);
+    void findPairs(const Substep& sub, const std::vector<std::uint32_t>& active, Proxies& proxies,
+                   const SubstepPaths& paths);
     /// pairs(): the overlapping pairs of the `changed` particles (their proxies rebuilt
     /// first), sorted, each once; false when too many left what the kept pairs cover (the
     /// full detection, findPairs, is then due).
@@ -140,8 +140,8 @@ class PairCache {
     void takeCachedPairsAsLive(Proxies& proxies);
     void indexCachedPairs(std::uint32_t n) { index_.update(cachedPairs_, n, cachedPairsVersion_); }
     // The later passes' pairs (changedPairs).
-    bool noteStrays(const Substep& sub, const std::vector<std::uint32_t>& changed,
-                    Proxies& proxies, const SubstepPaths& paths);
+    bool noteStrays(const Substep& sub, const std::vector<std::uint32_t>& changed, Proxies& proxies,
+                    const SubstepPaths& paths);
     bool markKeptPairs(const std::vector<std::uint32_t>& changed, const Proxies& proxies);
     void pairsOfChanged(std::uint32_t i, const Proxies& proxies);
     void pairsOfStray(std::uint32_t i, const Proxies& proxies);

@@ -18,7 +18,7 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
     paths_.build(set, awake_.active(), h);
     // Passes: detect, then resolve each impact at its time of impact, in time order,
     // until a pass resolves nothing or maxPasses ran.
-    const bool converged = passes_.run(sub, {awake_, paths_, proxies_, cache_, narrow_, sleep_});
+    const bool converged = passes_.run(sub, stages());
     // Finish: a particle a contact changed takes the end of its new path as its state.
     paths_.finish(set, awake_.active(), h);
     // Solve: the resting contacts the passes left (all, if they ran out), at once.
@@ -29,7 +29,7 @@ void ParticleCollisions::impulsePhase(ParticleSet& set, const StaticShapes& shap
 
 void ParticleCollisions::solveRestingContacts(const Substep& sub, bool converged) {
     if (!converged || !passes_.deferred().empty()) {
-        solver_.solve(sub, {awake_, paths_, proxies_, cache_, sleep_, held_});
+        solver_.solve(sub, stages());
         solver_.reportDeferred(passes_.deferred(), sub.set, events_);
     } else {
         solver_.forgetWarmStart(); // nothing to carry over to the next sub-step

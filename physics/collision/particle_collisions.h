@@ -77,6 +77,7 @@ class ParticleCollisions {
 
   private:
     void solveRestingContacts(const Substep& sub, bool converged);
+    SubstepStages stages() { return {awake_, paths_, proxies_, cache_, narrow_, sleep_, held_}; }
 
     AwakeSet awake_;
     SubstepPaths paths_;

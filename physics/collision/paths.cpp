@@ -68,8 +68,8 @@ void SubstepPaths::build(const ParticleSet& set, const std::vector<std::uint32_t
 }
 
 // A settled particle's path is this one too: at rest where it started.
-void SubstepPaths::straightenToEnd(const ParticleSet& set,
-                                   const std::vector<std::uint32_t>& active, double h) {
+void SubstepPaths::straightenToEnd(const ParticleSet& set, const std::vector<std::uint32_t>& active,
+                                   double h) {
     for (const std::uint32_t i : active) {
         const Vec2 start{x0_[i], y0_[i]};
         const Vec2 moved = set.position(static_cast<ParticleId>(i)) - start;

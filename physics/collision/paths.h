@@ -62,8 +62,7 @@ class SubstepPaths {
                  std::uint32_t surface);
 
   private:
-    void supportAlong(std::size_t i, Vec2 n, Vec2 vNew, const PairProperties& pp,
-                      double remaining);
+    void supportAlong(std::size_t i, Vec2 n, Vec2 vNew, const PairProperties& pp, double remaining);
     // Start of the sub-step (S0).
     std::vector<double> x0_, y0_, vx0_, vy0_;
     // Paths: position, path velocity, path acceleration at t0, and the path's start time;

@@ -31,9 +31,8 @@ void Proxies::rebuild(const ParticleSet& set, const SubstepPaths& paths, const C
         boxes_[i] = pathBox(paths.path(i), set.radius[i], {h, 0.0, def.toiTolerance, false});
 }
 
-void Proxies::boxSettlingForSolver(const ParticleSet& set, const CollisionDef& def,
-                                   AwakeSet& awake, const SubstepPaths& paths,
-                                   const FatBoxes& fat) {
+void Proxies::boxSettlingForSolver(const ParticleSet& set, const CollisionDef& def, AwakeSet& awake,
+                                   const SubstepPaths& paths, const FatBoxes& fat) {
     solverBoxes_.resize(set.slots());
     for (const std::uint32_t i : awake.active()) {
         if (!awake.mayStaySettled(i) || kinds_[i] == ProxyKind::None) continue;

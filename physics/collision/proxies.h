@@ -36,8 +36,8 @@ class Proxies {
                  std::size_t i, double h);
     /// The solver's boxes of the particles that may be settled in the next sub-step, when
     /// this one ran no solver; one whose box is not inside its fat box is not settled.
-    void boxSettlingForSolver(const ParticleSet& set, const CollisionDef& def,
-                              AwakeSet& awake, const SubstepPaths& paths, const FatBoxes& fat);
+    void boxSettlingForSolver(const ParticleSet& set, const CollisionDef& def, AwakeSet& awake,
+                              const SubstepPaths& paths, const FatBoxes& fat);
     /// The solver's boxes in place of the passes' (and back).
     void swapForSolver() { std::swap(boxes_, solverBoxes_); }
 
@@ -70,8 +70,8 @@ class Proxies {
     std::vector<Aabb> boxes_, solverBoxes_; ///< each keeps a settled particle's
     std::vector<ProxyKind> kinds_, liveKinds_;
     std::vector<std::uint32_t> boxed_; ///< the active particles with a proxy
-    bool kindsChanged_ = true; ///< a kind may differ from liveKinds_
-    bool kindsRose_ = true;    ///< a kind may pair with more than in liveKinds_
+    bool kindsChanged_ = true;         ///< a kind may differ from liveKinds_
+    bool kindsRose_ = true;            ///< a kind may pair with more than in liveKinds_
 };
 
 } // namespace phys

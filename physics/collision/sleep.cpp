@@ -19,7 +19,7 @@ void Sleep::update(ParticleSet& set, const CollisionDef& def, double dt,
             if (!(set.flags[i] & kSleeping)) restartWindow(i);
         timersStale_ = false;
     }
-    const double stray = def.sleepSpeed * def.sleepTime; // m: the window's allowed drift
+    const double stray = def.sleepSpeed * def.sleepTime;  // m: the window's allowed drift
     int asleep = static_cast<int>(awake.settledAsleep()); // settled: asleep, and stays so
     const std::size_t holds = held.holds();
     for (const std::uint32_t i : awake.active()) {
@@ -27,8 +27,8 @@ void Sleep::update(ParticleSet& set, const CollisionDef& def, double dt,
             asleep += (set.flags[i] & kAlive) ? 1 : 0;
             continue;
         }
-        const bool resting = def.sleep && rested_[i] && !(i < tethered.size() && tethered[i]) &&
-                             movable(set, i);
+        const bool resting =
+            def.sleep && rested_[i] && !(i < tethered.size() && tethered[i]) && movable(set, i);
         rested_[i] = 0;
         const bool slow = lengthSquared(set.velocity(i)) < def.sleepSpeed * def.sleepSpeed;
         const bool stayed = lengthSquared(set.position(i) - anchor_[i]) <= stray * stray;

@@ -67,6 +67,25 @@ struct Substep {
     DetectClock& detect;
 };
 
+class AwakeSet;
+class SubstepPaths;
+class Proxies;
+class PairCache;
+class NarrowPhase;
+class Sleep;
+class HeldSleepers;
+
+/// The stages of the sub-step (particle_collisions.h), for those that drive or tell others.
+struct SubstepStages {
+    AwakeSet& awake;
+    SubstepPaths& paths;
+    Proxies& proxies;
+    PairCache& cache;
+    NarrowPhase& narrow;
+    Sleep& sleep;
+    HeldSleepers& held;
+};
+
 /// The flags of the multi-step integrators' history: a particle a contact moved
 /// restarts them from its new state.
 inline constexpr std::uint32_t kHistory = kVerletPrimed | kLeapfrogPrimed;

@@ -89,9 +89,8 @@ void SweepOrder::sortIntoBands(const std::vector<SolverContact>& contacts,
 // each band, the contacts with something immovable after the others), laid out in the
 // wavefronts of that order when the lanes run, with a barrier before each band: one
 // layout, which every sweep takes, those over all contacts and those over a band.
-const std::vector<std::uint32_t>& SweepOrder::layOut(bool lanes,
-                                                     const std::vector<SolverContact>& contacts,
-                                                     std::uint32_t still) {
+const std::vector<std::uint32_t>&
+SweepOrder::layOut(bool lanes, const std::vector<SolverContact>& contacts, std::uint32_t still) {
     const std::vector<std::uint32_t>* rows = &order_;
     if (lanes) {
         wavefronts_.begin(still); // still and sink order nothing

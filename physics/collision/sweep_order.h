@@ -79,7 +79,8 @@ class SweepOrder {
                     const std::vector<std::uint32_t>& bodyIndex);
     void sortIntoBands(const std::vector<SolverContact>& contacts,
                        const std::vector<std::uint32_t>& bodies);
-    const std::vector<std::uint32_t>& keepLanesWhereTheyFill(const std::vector<std::uint32_t>& wavefronts);
+    const std::vector<std::uint32_t>&
+    keepLanesWhereTheyFill(const std::vector<std::uint32_t>& wavefronts);
     void joinBandsIntoRuns();
     /// A band whose wavefronts take more rows than this a contact is swept one row at a
     /// time (on a staggered heap, 1.5 was slower and 3 no faster).
@@ -87,7 +88,7 @@ class SweepOrder {
     std::vector<std::uint32_t> level_; ///< by particle
     /// Who holds whom up among the movable particles, one entry per such contact, in the
     /// contacts' order (the build lists them; the levels read these, not the contacts).
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> holds_; ///< holder, held
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> holds_;              ///< holder, held
     std::vector<std::uint32_t> adjacencyStart_, adjacency_, fill_, frontier_; ///< the search
     std::vector<std::uint32_t> keyStart_, contactKey_;                        ///< the sort
     std::vector<std::uint32_t> order_, bandStart_; ///< the contacts by band

@@ -105,12 +105,12 @@ ToiPasses::Resolution ToiPasses::resolveStatic(const Candidate& c, const Substep
     const double r = set.radius[i];
     // The path may have changed since detection (an earlier contact in this pass); if it
     // has not, the time found then is the time (the same function of the same path).
-    const auto toi = pathChanged_[i] != pass_
-                         ? std::optional<double>(c.time)
-                         : withShape(sub.shapes, c.shape, [&](const auto& shape) {
-                               return timeOfImpact(shape, r, paths.path(i), sub.h,
-                                                   st.narrow.settings());
-                           });
+    const auto toi =
+        pathChanged_[i] != pass_
+            ? std::optional<double>(c.time)
+            : withShape(sub.shapes, c.shape, [&](const auto& shape) {
+                  return timeOfImpact(shape, r, paths.path(i), sub.h, st.narrow.settings());
+              });
     if (!toi) return Resolution::None;
     markChanged(i, sub, st);
     paths.rebase(i, *toi);
@@ -138,8 +138,8 @@ ToiPasses::Resolution ToiPasses::resolveStatic(const Candidate& c, const Substep
     paths.touch(i);
     st.sleep.noteContact(i, resting);
     set.flags[i] &= ~kSleeping;
-    sub.events.push_back({static_cast<ParticleId>(i), kNoParticle, c.shape, sub.tickTime + *toi,
-                          n, -vn, ci.normal, resting, m.p, vNew});
+    sub.events.push_back({static_cast<ParticleId>(i), kNoParticle, c.shape, sub.tickTime + *toi, n,
+                          -vn, ci.normal, resting, m.p, vNew});
     return resting ? Resolution::Resting : Resolution::Impact;
 }
 
@@ -167,8 +167,7 @@ std::optional<double> ToiPasses::pairTime(const Candidate& c, bool unchanged, co
     if (unchanged) return c.time;
     const SubstepPaths& paths = st.paths;
     return timeOfImpact(Circle{{0.0, 0.0}, sub.set.radius[c.b]}, sub.set.radius[c.a],
-                        paths.path(c.a).relativeTo(paths.path(c.b)), sub.h,
-                        st.narrow.settings());
+                        paths.path(c.a).relativeTo(paths.path(c.b)), sub.h, st.narrow.settings());
 }
 
 // Classified at the time of impact before anything changes: a resting contact between two
@@ -229,7 +228,8 @@ ToiPasses::Resolution ToiPasses::bounce(const Candidate& c, double toi, double w
     // An impact wakes a sleeper it would move faster than sleepSpeed; resting on one
     // does not (it carries what rests on it, as a sleeping pile carries its top layer).
     for (const std::size_t k : {i, j}) {
-        if (wakeableSleeper(set, k) && !resting && ci.normal * set.invMass[k] > sub.def.sleepSpeed) {
+        if (wakeableSleeper(set, k) && !resting &&
+            ci.normal * set.invMass[k] > sub.def.sleepSpeed) {
             set.flags[k] &= ~kSleeping;
             (k == i ? wi : wj) = set.invMass[k];
             ci = contactImpulse(vrel, n, wi, wj, e, pp);
@@ -247,8 +247,15 @@ ToiPasses::Resolution ToiPasses::bounce(const Candidate& c, double toi, double w
     if (resting) carryResting(i, j, n, wi, wj, pp, sub.h - toi, paths);
     if (wi > 0.0) paths.touch(i), st.sleep.noteContact(i, resting);
     if (wj > 0.0) paths.touch(j), st.sleep.noteContact(j, resting);
-    sub.events.push_back({static_cast<ParticleId>(i), static_cast<ParticleId>(j), {},
-                          sub.tickTime + toi, n, -vn, ci.normal, resting, mi.p,
+    sub.events.push_back({static_cast<ParticleId>(i),
+                          static_cast<ParticleId>(j),
+                          {},
+                          sub.tickTime + toi,
+                          n,
+                          -vn,
+                          ci.normal,
+                          resting,
+                          mi.p,
                           paths.velocity(i)});
     return resting ? Resolution::Resting : Resolution::Impact;
 }

@@ -59,15 +59,7 @@ struct DeferredPair {
 
 class ToiPasses {
   public:
-    /// The stages the passes drive.
-    struct Stages {
-        AwakeSet& awake;
-        SubstepPaths& paths;
-        Proxies& proxies;
-        PairCache& cache;
-        NarrowPhase& narrow;
-        Sleep& sleep;
-    };
+    using Stages = SubstepStages;
     /// Up to def.maxPasses passes over the active particles' paths; whether the last one
     /// resolved nothing (converged).
     bool run(const Substep& sub, const Stages& st);
@@ -91,8 +83,8 @@ class ToiPasses {
                                    const Stages& st) const;
     /// A resting pair of free particles, or a sleeper lying on a free one, at `toi`: left
     /// to the contact solver (true).
-    bool leaveToSolver(const Candidate& c, double toi, double wi, double wj,
-                       const Substep& sub, const Stages& st);
+    bool leaveToSolver(const Candidate& c, double toi, double wi, double wj, const Substep& sub,
+                       const Stages& st);
     /// The impulse of a pair of particles at `toi` and what follows from it.
     Resolution bounce(const Candidate& c, double toi, double wi, double wj, const Substep& sub,
                       const Stages& st);

@@ -1,4 +1,5 @@
-// Closed-form ballistics and the firing solution against the lecture notes' numbers.
+// Closed-form ballistics and the firing solution against the worked numbers of Rabin's
+// "Real-time Game Physics" (Introduction to Game Development, 4.3).
 #include "physics/ballistics.h"
 #include "physics/world.h"
 
@@ -11,7 +12,7 @@ using namespace phys;
 
 namespace {
 
-// Angles (degrees) for a shot; the notes give them to 0.1 degree.
+// Angles (degrees) for a shot; the chapter gives them to 0.1 degree.
 std::vector<double> angles(Vec2 from, Vec2 to, double speed, double g = 9.81) {
     std::vector<double> out;
     for (const auto& s : solveFiring(from, to, speed, g)) out.push_back(s.angleDeg);
@@ -49,7 +50,7 @@ TEST(ClosedForm, ApexRangeAndTimeToHeight) {
     EXPECT_TRUE(timeToHeight({0, 0}, v0, g, -5.0, false).has_value());
 }
 
-// Notes 000, "target practice": from (10, 2) to (50, 20) at 30 m/s: 39.1 or 75.2 deg.
+// Rabin 4.3, "target practice": from (10, 2) to (50, 20) at 30 m/s: 39.1 or 75.2 deg.
 TEST(FiringSolution, NotesTargetAboveTheCannon) {
     const auto a = angles({10, 2}, {50, 20}, 30.0);
     ASSERT_EQ(a.size(), 2u);
@@ -57,7 +58,7 @@ TEST(FiringSolution, NotesTargetAboveTheCannon) {
     EXPECT_NEAR(a[1], 75.2, 0.05);
 }
 
-// Notes 000: a target 40 m away at the same height.
+// Rabin 4.3: a target 40 m away at the same height.
 // As g -> 0 the direct shot tends to the straight line at constant speed, and stays a
 // finite number even where g^2/4 underflows to zero (g = 1e-200): t = |d| / s to rounding.
 TEST(FiringSolution, VanishingGravityGivesTheStraightShot) {
@@ -125,7 +126,7 @@ TEST(FiringSolution, NoGravityMeansOneStraightShot) {
     EXPECT_NEAR(s[0].angleDeg, std::atan2(4.0, 3.0) * 180 / std::numbers::pi, 1e-12);
 }
 
-// Notes 000, explicit Euler worked example: m = 2.5 kg, S = <mV, p> with
+// Rabin 4.3, explicit Euler worked example: m = 2.5 kg, S = <mV, p> with
 // mV = (19.2, 72.5) kg m/s and p = (10, 2) m, g = 9.81. One step of dt gives the
 // numerical height; the closed form gives the exact one.
 TEST(ExplicitEulerTable, OneStepReproducesTheNotes) {

@@ -1,4 +1,4 @@
-// No allocation per step (STYLE.md, habit 3): once its buffers are warm, World::step
+// No allocation per step: once its buffers are warm, World::step
 // with collisions, the broad phase, resting contact, sleep and rods allocates nothing,
 // except that a buffer meeting a new peak (more contacts, or grid cells, than ever
 // before) grows geometrically: a handful of times in a world's life, never per step.

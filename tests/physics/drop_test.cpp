@@ -1,4 +1,4 @@
-// The drop experiment (notes 001): apex k of a ball dropped from H is e^(2k) H. With
+// The drop experiment (Claypool, "Game Physics"): apex k of a ball dropped from H is e^(2k) H. With
 // the time-of-impact response and an integrator exact under constant acceleration,
 // that holds at any step size; the Euler methods show their own error.
 #include "physics/experiments/drop.h"
@@ -26,7 +26,7 @@ DropResult drop(MaterialId m, Integrator method, double dt, double H = 0.92, int
 } // namespace
 
 // Every preset, both steps, the three exact integrators: the first three apexes within
-// 0.5 % of e^(2k) H (H = 0.92 m, the notes' drop height).
+// 0.5 % of e^(2k) H (H = 0.92 m, the lecture's drop height).
 TEST(Drop, EveryPresetMatchesESquaredKHAtBothSteps) {
     for (const RestitutionPreset& p : kRestitutionPresets)
         for (const double dt : {1.0 / 60.0, 1.0 / 240.0})

@@ -1,4 +1,4 @@
-// Every integrator against something exact: the notes' claims, measured convergence
+// Every integrator against something exact: the textbooks' claims, measured convergence
 // orders, and the energy behaviour theory predicts on an undamped spring.
 #include "physics/ballistics.h"
 #include "physics/oscillator.h"
@@ -127,7 +127,7 @@ INSTANTIATE_TEST_SUITE_P(Integrators, EveryIntegrator,
                                            Integrator::RK4, Integrator::ImplicitEuler),
                          nameOf);
 
-// Notes 000: "For constant acceleration, Verlet integration produces results identical
+// Rabin 4.3: "For constant acceleration, Verlet integration produces results identical
 // to those of explicit Euler" (Verlet bootstrapped by one Euler step).
 TEST(Verlet, EqualsExplicitEulerUnderConstantAcceleration) {
     auto run = [](Integrator m) {

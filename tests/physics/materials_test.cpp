@@ -1,4 +1,4 @@
-// The material table: the notes' measured presets, the combine rule, pair overrides,
+// The material table: the measured presets, the combine rule, pair overrides,
 // and the projectile presets built on them.
 #include "physics/materials.h"
 #include "physics/projectiles.h"
@@ -9,7 +9,7 @@
 
 using namespace phys;
 
-// Notes 001: restitution of balls dropped from 92 cm onto a floor.
+// Claypool, "Game Physics": restitution of balls dropped from 92 cm onto a floor.
 TEST(Materials, NotesPresetsAgainstTheFloor) {
     const MaterialTable t;
     const struct {

@@ -113,8 +113,7 @@ inline StartLanes touchingTimes(const RelativeLanes& m, __m256d ra, __m256d rb, 
     // touchingTime.
     const __m256d vn = _mm256_add_pd(_mm256_mul_pd(nx, m.vx), _mm256_mul_pd(ny, m.vy));
     const __m256d an = _mm256_add_pd(_mm256_mul_pd(nx, m.ax), _mm256_mul_pd(ny, m.ay));
-    const __m256d vEps =
-        _mm256_mul_pd(_mm256_set1_pd(kVelocityRounding), atLeastOne(m.vx, m.vy));
+    const __m256d vEps = _mm256_mul_pd(_mm256_set1_pd(kVelocityRounding), atLeastOne(m.vx, m.vy));
     const __m256d aEps = _mm256_mul_pd(_mm256_set1_pd(kAccelRounding), atLeastOne(m.ax, m.ay));
     const __m256d slop = _mm256_max_pd(_mm256_mul_pd(_mm256_set1_pd(kOverlapSlop), ra), tolerance);
     const __m256d minusVEps = _mm256_xor_pd(vEps, signBit);
