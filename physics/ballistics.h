@@ -1,5 +1,5 @@
-// Closed-form ballistics under uniform gravity (notes 000, "Closed-form Projectile
-// Equations of Motion"):
+// Closed-form ballistics under uniform gravity (Rabin, Introduction to Game Development,
+// 4.3, "Closed-form Equations of Motion"):
 //   v(t) = v0 + g t,   p(t) = p0 + v0 t + 1/2 g t^2,
 // exact for any t >= 0 while gravity is the only force. The world uses it to move
 // projectiles in flight at O(1) cost and zero integration error, and the verbs and
@@ -45,7 +45,7 @@ struct FiringSolution {
 };
 
 /// Launch angles that take a projectile from `from` to `to` at muzzle speed `speed`
-/// under gravity g (magnitude, down), after Millington 3.5.3 (notes 002):
+/// under gravity g (magnitude, down), after Millington, Game Physics Engine Development, 3.5.3:
 ///   |g|^2/4 t^4 - (s^2 + g.d) t^2 + |d|^2 = 0,  v = d/t - g t/2.
 /// Returns none (out of range), one (grazing the edge of range, or g = 0) or two
 /// solutions, shortest flight (the low, direct shot) first.

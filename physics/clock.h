@@ -1,4 +1,4 @@
-// Fixed-step clock (notes 002, "frame-rate independence"): wall time is poured into an
+// Fixed-step clock (frame-rate independence, as in Claypool, "Basic Game Physics"): wall time is poured into an
 // accumulator and drained in whole ticks of a fixed length, so the world's result after
 // N ticks never depends on the frame rate. The left-over fraction is the interpolation
 // factor the renderer blends the last two states with.

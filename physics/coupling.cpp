@@ -106,31 +106,57 @@ void ParticleBodyCoupling::detachParticle(ParticleId particle) {
 }
 
 CouplingStats ParticleBodyCoupling::exchange(World& world, RigidWorld& rigid) {
-    ParticleSet& set = world.particles;
     const double dt = world.def().tickSeconds;
     settle(world, rigid);
     CouplingStats stats;
     events_.clear();
     contacts_.clear();
     jointRows_.clear();
-
-    // Particles held by rods, cables or springs: 1 rods or cables, 2 springs only.
-    const bool rods = !world.constraints.empty();
-    const bool tethers = rods || !world.springs.empty();
-    if (tethers) {
-        linked_.assign(set.slots(), 0);
-        for (const Spring& sp : world.springs)
-            if (!sp.broken)
-                for (const ParticleId id : {sp.a, sp.b})
-                    if (id < set.slots()) linked_[id] = 2;
-        for (const DistanceConstraint& c : world.constraints)
-            for (const ParticleId id : {c.a, c.b})
-                if (id < set.slots()) linked_[id] = 1;
+    const bool tethers = markLinked(world);
+    Links links;
+    gatherContacts(world, rigid, tethers, links, stats);
+    gatherJoints(world, rigid, tethers, links);
+    stats.joints = static_cast<int>(jointRows_.size());
+    // A body carried or held by tethered particles takes this tick's gravity before the
+    // exchange and gives it back after: the exchange then balances its weight this tick,
+    // instead of one tick late once Box2D has moved it g dt^2 into its support.
+    kicked_.clear();
+    if (links.any) lendGravity(rigid, dt);
+    stats.passes = exchangeImpulses(world, rigid, links);
+    for (const auto& [body, g] : kicked_) {
+        const RigidBodyState st = rigid.state(body);
+        rigid.setVelocity(body, st.linearVelocity - g, st.angularVelocity);
     }
-    bool anyRodLinked = false;
-    bool anyLinked = false;
+    for (const ContactRow& row : contacts_)
+        if (row.event != ContactRow::kNoEvent) {
+            ++stats.impulses;
+            stats.impulseSum += length(events_[row.event].impulse);
+        }
+    return stats;
+}
 
-    // Gather the contacts; free particles are moved out of the body at once.
+// Particles held by rods, cables or springs (linked_: 1 rods or cables, 2 springs only);
+// whether any spring, rod or cable exists.
+bool ParticleBodyCoupling::markLinked(const World& world) {
+    const ParticleSet& set = world.particles;
+    const bool tethers = !world.constraints.empty() || !world.springs.empty();
+    if (!tethers) return false;
+    linked_.assign(set.slots(), 0);
+    for (const Spring& sp : world.springs)
+        if (!sp.broken)
+            for (const ParticleId id : {sp.a, sp.b})
+                if (id < set.slots()) linked_[id] = 2;
+    for (const DistanceConstraint& c : world.constraints)
+        for (const ParticleId id : {c.a, c.b})
+            if (id < set.slots()) linked_[id] = 1;
+    return true;
+}
+
+// The contacts of every free, awake particle with the bodies; free particles are moved
+// out of the body at once.
+void ParticleBodyCoupling::gatherContacts(World& world, RigidWorld& rigid, bool tethers,
+                                          Links& links, CouplingStats& stats) {
+    const ParticleSet& set = world.particles;
     for (std::size_t i = 0; i < set.slots(); ++i) {
         const std::uint32_t flags = set.flags[i];
         if (!(flags & kAlive) || (flags & (kNoCollide | kSleeping)) || set.invMass[i] <= 0.0)
@@ -142,38 +168,53 @@ CouplingStats ParticleBodyCoupling::exchange(World& world, RigidWorld& rigid) {
                 std::find(mirrors_.begin(), mirrors_.end(), c.body) != mirrors_.end())
                 continue;
             ++stats.contacts;
-            const Vec2 n = c.normal;
-            const double wb = rigid.inverseEffectiveMass(c.body, c.point, n);
-            const bool linked = tethers && linked_[i] && wb > 0.0;
-            const bool byRods = linked && linked_[i] == 1;
-            anyLinked = anyLinked || linked;
-            anyRodLinked = anyRodLinked || byRods;
-            double bias = 0.0;
-            // On (or pushed into) the ground: not moved by position; a free particle is
-            // immovable there, one on springs keeps its mass (lumped with its springs).
-            const bool onGround = !byRods && grounded(world, id, n, std::max(-c.separation, 0.0));
-            if (byRods || onGround) {
-                bias = def_.baumgarte * std::max(-c.separation - def_.slop, 0.0) / dt;
-            } else {
-                set.px[i] -= c.separation * n.x;
-                set.py[i] -= c.separation * n.y;
-            }
-            const double wp = onGround && !linked ? 0.0 : set.invMass[i];
-            const Material& pm = world.materials[set.material[i]];
-            ContactRow& row = contacts_.emplace_back();
-            row.particle = id;
-            row.body = c.body;
-            row.point = c.point;
-            row.normal = n;
-            row.restitution = pm.restitution * c.restitution;
-            row.friction = std::sqrt(pm.dynamicFriction * c.friction);
-            row.wp = wp;
-            row.wn = wp + wb;
-            row.bias = bias;
-            row.linked = linked;
-            row.springHeld = linked && !byRods;
+            addContactRow(world, rigid, id, c, tethers, links);
         }
     }
+}
+
+void ParticleBodyCoupling::addContactRow(World& world, const RigidWorld& rigid, ParticleId id,
+                                         const RigidCircleContact& c, bool tethers, Links& links) {
+    ParticleSet& set = world.particles;
+    const double dt = world.def().tickSeconds;
+    const std::size_t i = id;
+    const Vec2 n = c.normal;
+    const double wb = rigid.inverseEffectiveMass(c.body, c.point, n);
+    const bool linked = tethers && linked_[i] && wb > 0.0;
+    const bool byRods = linked && linked_[i] == 1;
+    links.any = links.any || linked;
+    links.rods = links.rods || byRods;
+    double bias = 0.0;
+    // On (or pushed into) the ground: not moved by position; a free particle is immovable
+    // there, one on springs keeps its mass (lumped with its springs).
+    const bool onGround = !byRods && grounded(world, id, n, std::max(-c.separation, 0.0));
+    if (byRods || onGround) {
+        bias = def_.baumgarte * std::max(-c.separation - def_.slop, 0.0) / dt;
+    } else {
+        set.px[i] -= c.separation * n.x;
+        set.py[i] -= c.separation * n.y;
+    }
+    const double wp = onGround && !linked ? 0.0 : set.invMass[i];
+    const Material& pm = world.materials[set.material[i]];
+    ContactRow& row = contacts_.emplace_back();
+    row.particle = id;
+    row.body = c.body;
+    row.point = c.point;
+    row.normal = n;
+    row.restitution = pm.restitution * c.restitution;
+    row.friction = std::sqrt(pm.dynamicFriction * c.friction);
+    row.wp = wp;
+    row.wn = wp + wb;
+    row.bias = bias;
+    row.linked = linked;
+    row.springHeld = linked && !byRods;
+}
+
+// The particles joined to dynamic bodies, each a row driving its anchor together.
+void ParticleBodyCoupling::gatherJoints(World& world, RigidWorld& rigid, bool tethers,
+                                        Links& links) {
+    ParticleSet& set = world.particles;
+    const double dt = world.def().tickSeconds;
     for (const ParticleBodyJoint& j : joints_) {
         if (j.particle >= set.slots() || !(set.flags[j.particle] & kAlive)) continue;
         if (rigid.state(j.body).type != BodyType::Dynamic) continue;
@@ -185,53 +226,43 @@ CouplingStats ParticleBodyCoupling::exchange(World& world, RigidWorld& rigid) {
         row.point = point;
         row.target = C * (-def_.baumgarte / dt);
         set.flags[j.particle] &= ~kSleeping;
-        if (tethers && linked_[j.particle]) anyLinked = true;
-        if (tethers && linked_[j.particle] == 1) anyRodLinked = true;
+        if (tethers && linked_[j.particle]) links.any = true;
+        if (tethers && linked_[j.particle] == 1) links.rods = true;
     }
-    stats.joints = static_cast<int>(jointRows_.size());
+}
 
-    // A body carried or held by tethered particles takes this tick's gravity before the
-    // exchange and gives it back after: the exchange then balances its weight this tick,
-    // instead of one tick late once Box2D has moved it g dt^2 into its support.
-    kicked_.clear();
-    if (anyLinked) {
-        auto kick = [&](BodyId body) {
-            for (const auto& [b, v] : kicked_)
-                if (b == body) return;
-            const Vec2 g = rigid.gravityKick(body, dt);
-            const RigidBodyState st = rigid.state(body);
-            rigid.setVelocity(body, st.linearVelocity + g, st.angularVelocity);
-            kicked_.emplace_back(body, g);
-        };
-        for (const ContactRow& row : contacts_)
-            if (row.linked) kick(row.body);
-        for (const JointRow& row : jointRows_) kick(row.body);
-    }
+void ParticleBodyCoupling::lendGravity(RigidWorld& rigid, double dt) {
+    auto kick = [&](BodyId body) {
+        for (const auto& [b, v] : kicked_)
+            if (b == body) return;
+        const Vec2 g = rigid.gravityKick(body, dt);
+        const RigidBodyState st = rigid.state(body);
+        rigid.setVelocity(body, st.linearVelocity + g, st.angularVelocity);
+        kicked_.emplace_back(body, g);
+    };
+    for (const ContactRow& row : contacts_)
+        if (row.linked) kick(row.body);
+    for (const JointRow& row : jointRows_)
+        kick(row.body);
+}
 
-    const int passes = anyLinked ? std::max(def_.iterations, 1) : 1;
+// Passes of contacts and joints, and the rods between them while links exist, until the
+// rods hardly change what the contacts left; the passes taken.
+int ParticleBodyCoupling::exchangeImpulses(World& world, RigidWorld& rigid, const Links& links) {
+    ParticleSet& set = world.particles;
+    const int passes = links.any ? std::max(def_.iterations, 1) : 1;
     int pass = 0;
     while (pass < passes) {
         contactPass(set, rigid, pass == 0);
         jointPass(set, rigid);
         ++pass;
-        // Stop once the rods hardly change what the contacts left (converged).
-        if (anyRodLinked && rodPass(world, rigid) < def_.tolerance) break;
+        if (links.rods && rodPass(world, rigid) < def_.tolerance) break; // converged
     }
-    if (anyLinked) { // end on the contacts: no body is left approaching a link
+    if (links.any) { // end on the contacts: no body is left approaching a link
         contactPass(set, rigid, false);
         jointPass(set, rigid);
     }
-    for (const auto& [body, g] : kicked_) {
-        const RigidBodyState st = rigid.state(body);
-        rigid.setVelocity(body, st.linearVelocity - g, st.angularVelocity);
-    }
-    stats.passes = pass;
-    for (const ContactRow& row : contacts_)
-        if (row.event != ContactRow::kNoEvent) {
-            ++stats.impulses;
-            stats.impulseSum += length(events_[row.event].impulse);
-        }
-    return stats;
+    return pass;
 }
 
 void ParticleBodyCoupling::contactPass(ParticleSet& set, RigidWorld& rigid, bool first) {

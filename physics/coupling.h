@@ -1,4 +1,5 @@
-// Two-way coupling between the particle layer and Box2D bodies (DESIGN.md, tick phase 5):
+// Two-way coupling between the particle layer and Box2D bodies (once a tick, after the
+// particles' step: docs/architecture.md, "One tick"):
 // a particle touching a body exchanges an impulse with it, with restitution and Coulomb
 // friction, so a cannonball topples a tower and bounces off by the right amount; a
 // body lands on a rope or a spring net and stays there; a rope holds a body it is tied to.
@@ -38,7 +39,7 @@
 // the rods every tick); a Baumgarte bias beta max(d - slop, 0) / dt removes the depth d.
 #pragma once
 
-#include "physics/collision/constraints.h"
+#include "physics/constraints/rods_and_cables.h"
 #include "physics/materials.h"
 #include "physics/particles.h"
 #include "physics/rigid/rigid_world.h"
@@ -140,6 +141,19 @@ class ParticleBodyCoupling {
         Vec2 target; ///< relative velocity wanted: -beta C / dt
         double lumpMass = 0.0;
     };
+    /// What the tethered particles among the contacts and joints bring: a link to a
+    /// dynamic body (springs, rods or cables), and by rods or cables.
+    struct Links {
+        bool any = false, rods = false;
+    };
+    bool markLinked(const World& world);
+    void gatherContacts(World& world, RigidWorld& rigid, bool tethers, Links& links,
+                        CouplingStats& stats);
+    void addContactRow(World& world, const RigidWorld& rigid, ParticleId id,
+                       const RigidCircleContact& c, bool tethers, Links& links);
+    void gatherJoints(World& world, RigidWorld& rigid, bool tethers, Links& links);
+    void lendGravity(RigidWorld& rigid, double dt);
+    int exchangeImpulses(World& world, RigidWorld& rigid, const Links& links);
     bool tiedTo(ParticleId particle, BodyId body) const;
     bool grounded(const World& world, ParticleId particle, Vec2 push, double depth) const;
     void settle(World& world, RigidWorld& rigid);

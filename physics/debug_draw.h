@@ -1,5 +1,5 @@
 // The debug-draw interface: how physics describes what to draw without knowing how
-// (DESIGN.md, "Layers"; the idea is Box2D's b2Draw). ui/ implements it with OpenGL; a
+// (docs/architecture.md, "Layers"; the idea is Box2D's b2Draw). ui/ implements it with OpenGL; a
 // test can implement it with a recorder. Everything is in world units (m, y up) except
 // where a size says pixels, so a shape drawn here lands on the same spot at any zoom.
 //

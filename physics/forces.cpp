@@ -201,30 +201,42 @@ void Dynamics::forceJacobianProduct(const double* px, const double* py, const do
     const std::size_t n = set_.slots();
     std::fill(dfx, dfx + n, 0.0);
     std::fill(dfy, dfy + n, 0.0);
-    const auto& flags = set_.flags;
+    const JacobianTerms d{px, py, vx, vy, wx, wy, ux, uy, dfx, dfy};
+    dragJacobian(d);
+    springJacobian(d);
+    if (def_.pointGravity) pointGravityJacobian(d);
+    if (def_.water) waterJacobian(d);
+}
 
+void Dynamics::dragJacobian(const JacobianTerms& d) const {
+    const std::size_t n = set_.slots();
+    const auto& flags = set_.flags;
     if (def_.drag == DragModel::Linear) {
         for (std::size_t i = 0; i < n; ++i) {
             if (flags[i] & kNoDrag) continue;
-            dfx[i] -= def_.linearDrag * ux[i];
-            dfy[i] -= def_.linearDrag * uy[i];
+            d.dfx[i] -= def_.linearDrag * d.ux[i];
+            d.dfy[i] -= def_.linearDrag * d.uy[i];
         }
     } else if (def_.drag == DragModel::Quadratic) {
         // d/du (-k|u|u) = -k (|u| I + u u^T / |u|)
         const double halfRhoPi = 0.5 * def_.airDensity * std::numbers::pi;
         for (std::size_t i = 0; i < n; ++i) {
             if (flags[i] & kNoDrag) continue;
-            const double rx = vx[i] - def_.wind.x, ry = vy[i] - def_.wind.y;
+            const double rx = d.vx[i] - def_.wind.x, ry = d.vy[i] - def_.wind.y;
             const double s = std::sqrt(rx * rx + ry * ry);
             if (s <= 0.0) continue;
             const double r = set_.radius[i];
             const double k = halfRhoPi * set_.dragCd[i] * r * r;
-            const double proj = (rx * ux[i] + ry * uy[i]) / s;
-            dfx[i] -= k * (s * ux[i] + rx * proj);
-            dfy[i] -= k * (s * uy[i] + ry * proj);
+            const double proj = (rx * d.ux[i] + ry * d.uy[i]) / s;
+            d.dfx[i] -= k * (s * d.ux[i] + rx * proj);
+            d.dfy[i] -= k * (s * d.uy[i] + ry * proj);
         }
     }
+}
 
+void Dynamics::springJacobian(const JacobianTerms& d) const {
+    const double *px = d.px, *py = d.py, *wx = d.wx, *wy = d.wy, *ux = d.ux, *uy = d.uy;
+    double *dfx = d.dfx, *dfy = d.dfy;
     for (const Spring& sp : springs_) {
         if (sp.broken) continue;
         const bool toAnchor = sp.b == kNoParticle;
@@ -235,29 +247,22 @@ void Dynamics::forceJacobianProduct(const double* px, const double* py, const do
         const double rwy = wy[sp.a] - (toAnchor ? 0.0 : wy[sp.b]);
         const double rux = ux[sp.a] - (toAnchor ? 0.0 : ux[sp.b]);
         const double ruy = uy[sp.a] - (toAnchor ? 0.0 : uy[sp.b]);
+        double jx, jy;
         if (sp.restLength == 0.0) {
             // Vector form: dF_a/dx_a = -k I, dF_a/dv_a = -c I, at every length.
-            const double jx = sp.stiffness * rwx + sp.damping * rux;
-            const double jy = sp.stiffness * rwy + sp.damping * ruy;
-            dfx[sp.a] -= jx;
-            dfy[sp.a] -= jy;
-            if (!toAnchor) {
-                dfx[sp.b] += jx;
-                dfy[sp.b] += jy;
-            }
-            continue;
+            jx = sp.stiffness * rwx + sp.damping * rux;
+            jy = sp.stiffness * rwy + sp.damping * ruy;
+        } else {
+            const double len = std::sqrt(dx * dx + dy * dy);
+            if (len <= 0.0) continue;
+            const double nx = dx / len, ny = dy / len;
+            // dF_a/dx_a = -k [n n^T + max(0, 1 - L0/L) (I - n n^T)]; dF_a/dv_a = -c n n^T.
+            const double transverse = std::max(0.0, 1.0 - sp.restLength / len);
+            const double wn = rwx * nx + rwy * ny;
+            const double un = rux * nx + ruy * ny;
+            jx = sp.stiffness * (wn * nx + transverse * (rwx - wn * nx)) + sp.damping * un * nx;
+            jy = sp.stiffness * (wn * ny + transverse * (rwy - wn * ny)) + sp.damping * un * ny;
         }
-        const double len = std::sqrt(dx * dx + dy * dy);
-        if (len <= 0.0) continue;
-        const double nx = dx / len, ny = dy / len;
-        // dF_a/dx_a = -k [n n^T + max(0, 1 - L0/L) (I - n n^T)]; dF_a/dv_a = -c n n^T.
-        const double transverse = std::max(0.0, 1.0 - sp.restLength / len);
-        const double wn = rwx * nx + rwy * ny;
-        const double un = rux * nx + ruy * ny;
-        const double jx = sp.stiffness * (wn * nx + transverse * (rwx - wn * nx)) +
-                          sp.damping * un * nx;
-        const double jy = sp.stiffness * (wn * ny + transverse * (rwy - wn * ny)) +
-                          sp.damping * un * ny;
         dfx[sp.a] -= jx;
         dfy[sp.a] -= jy;
         if (!toAnchor) {
@@ -265,56 +270,61 @@ void Dynamics::forceJacobianProduct(const double* px, const double* py, const do
             dfy[sp.b] += jy;
         }
     }
+}
 
-    // Point gravity: F_i = G m_i m_j d / |d|^3 with d = p_j - p_i, so
-    // dF_i/dp_j = G m_i m_j (I / r^3 - 3 d d^T / r^5) = K and dF_i/dp_i = -K.
-    // (K is not negative definite: gravity stretches along d. The solver's CG guards
-    // against a direction of non-positive curvature, which only very large dt reach.)
-    if (def_.pointGravity) {
-        const double eps2 = def_.pointGravitySoftening * def_.pointGravitySoftening;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!(flags[i] & kAttractor) || !(flags[i] & kAlive)) continue;
-            const double mi = set_.mass(static_cast<ParticleId>(i));
-            for (std::size_t j = i + 1; j < n; ++j) {
-                if (!(flags[j] & kAttractor) || !(flags[j] & kAlive)) continue;
-                const double mj = set_.mass(static_cast<ParticleId>(j));
-                const double dx = px[j] - px[i], dy = py[j] - py[i];
-                const double r2 = dx * dx + dy * dy + eps2, r = std::sqrt(r2);
-                const double g = def_.gravitationalConstant * mi * mj / (r2 * r);
-                const double rwx = wx[j] - wx[i], rwy = wy[j] - wy[i]; // w_j - w_i
-                const double dw = (dx * rwx + dy * rwy) / r2;
-                const double kx = g * (rwx - 3.0 * dx * dw), ky = g * (rwy - 3.0 * dy * dw);
-                dfx[i] += kx;
-                dfy[i] += ky;
-                dfx[j] -= kx;
-                dfy[j] -= ky;
-            }
+// Point gravity: F_i = G m_i m_j d / |d|^3 with d = p_j - p_i, so
+// dF_i/dp_j = G m_i m_j (I / r^3 - 3 d d^T / r^5) = K and dF_i/dp_i = -K.
+// (K is not negative definite: gravity stretches along d. The solver's CG guards
+// against a direction of non-positive curvature, which only very large dt reach.)
+void Dynamics::pointGravityJacobian(const JacobianTerms& d) const {
+    const std::size_t n = set_.slots();
+    const auto& flags = set_.flags;
+    const double eps2 = def_.pointGravitySoftening * def_.pointGravitySoftening;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!(flags[i] & kAttractor) || !(flags[i] & kAlive)) continue;
+        const double mi = set_.mass(static_cast<ParticleId>(i));
+        for (std::size_t j = i + 1; j < n; ++j) {
+            if (!(flags[j] & kAttractor) || !(flags[j] & kAlive)) continue;
+            const double mj = set_.mass(static_cast<ParticleId>(j));
+            const double dx = d.px[j] - d.px[i], dy = d.py[j] - d.py[i];
+            const double r2 = dx * dx + dy * dy + eps2, r = std::sqrt(r2);
+            const double g = def_.gravitationalConstant * mi * mj / (r2 * r);
+            const double rwx = d.wx[j] - d.wx[i], rwy = d.wy[j] - d.wy[i]; // w_j - w_i
+            const double dw = (dx * rwx + dy * rwy) / r2;
+            const double kx = g * (rwx - 3.0 * dx * dw), ky = g * (rwy - 3.0 * dy * dw);
+            d.dfx[i] += kx;
+            d.dfy[i] += ky;
+            d.dfx[j] -= kx;
+            d.dfy[j] -= ky;
         }
     }
+}
 
-    // Buoyancy: lift rho_w g V(h) with h = level - (y - r), so dLift/dy = -rho_w g pi h (2r - h);
-    // water drag as quadratic drag on the submerged fraction (its dependence on y is left out).
-    if (def_.water) {
-        const double g = length(def_.gravity);
-        const Vec2 up = g > 0.0 ? def_.gravity * (-1.0 / g) : Vec2{0.0, 1.0};
-        const double halfRhoPi = 0.5 * def_.waterDensity * std::numbers::pi;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!(flags[i] & kAlive)) continue;
-            const double r = set_.radius[i];
-            const double h = submergedDepth(py[i], r, def_.waterLevel);
-            if (h <= 0.0) continue;
-            if (h < 2.0 * r) { // partly submerged: the lift changes with depth
-                const double dLift = -def_.waterDensity * g * std::numbers::pi * h * (2.0 * r - h);
-                dfx[i] += dLift * wy[i] * up.x;
-                dfy[i] += dLift * wy[i] * up.y;
-            }
-            const double s = std::sqrt(vx[i] * vx[i] + vy[i] * vy[i]);
-            if (s <= 0.0) continue;
-            const double k = halfRhoPi * set_.dragCd[i] * r * r * (h / (2.0 * r));
-            const double proj = (vx[i] * ux[i] + vy[i] * uy[i]) / s;
-            dfx[i] -= k * (s * ux[i] + vx[i] * proj);
-            dfy[i] -= k * (s * uy[i] + vy[i] * proj);
+// Buoyancy: lift rho_w g V(h) with h = level - (y - r), so dLift/dy = -rho_w g pi h (2r - h);
+// water drag as quadratic drag on the submerged fraction (its dependence on y is left out).
+void Dynamics::waterJacobian(const JacobianTerms& d) const {
+    const std::size_t n = set_.slots();
+    const auto& flags = set_.flags;
+    const double g = length(def_.gravity);
+    const Vec2 up = g > 0.0 ? def_.gravity * (-1.0 / g) : Vec2{0.0, 1.0};
+    const double halfRhoPi = 0.5 * def_.waterDensity * std::numbers::pi;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!(flags[i] & kAlive)) continue;
+        const double r = set_.radius[i];
+        const double h = submergedDepth(d.py[i], r, def_.waterLevel);
+        if (h <= 0.0) continue;
+        if (h < 2.0 * r) { // partly submerged: the lift changes with depth
+            const double dLift = -def_.waterDensity * g * std::numbers::pi * h * (2.0 * r - h);
+            d.dfx[i] += dLift * d.wy[i] * up.x;
+            d.dfy[i] += dLift * d.wy[i] * up.y;
         }
+        const double vx = d.vx[i], vy = d.vy[i];
+        const double s = std::sqrt(vx * vx + vy * vy);
+        if (s <= 0.0) continue;
+        const double k = halfRhoPi * set_.dragCd[i] * r * r * (h / (2.0 * r));
+        const double proj = (vx * d.ux[i] + vy * d.uy[i]) / s;
+        d.dfx[i] -= k * (s * d.ux[i] + vx * proj);
+        d.dfy[i] -= k * (s * d.uy[i] + vy * proj);
     }
 }
 

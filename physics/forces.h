@@ -233,6 +233,15 @@ class Dynamics {
   private:
     void springForces(const double* px, const double* py, const double* vx, const double* vy,
                       double* fx, double* fy) const;
+    /// The arguments of forceJacobianProduct, for its terms.
+    struct JacobianTerms {
+        const double *px, *py, *vx, *vy, *wx, *wy, *ux, *uy;
+        double *dfx, *dfy;
+    };
+    void dragJacobian(const JacobianTerms& d) const;
+    void springJacobian(const JacobianTerms& d) const;
+    void pointGravityJacobian(const JacobianTerms& d) const;
+    void waterJacobian(const JacobianTerms& d) const;
     const ForceDef& def_;
     const std::vector<Spring>& springs_;
     const SpringTerms* terms_;

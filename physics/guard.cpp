@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace phys {
@@ -22,9 +23,10 @@ double stableOmegaDt(Integrator m) {
     return 0.0;
 }
 
-GuardReport guardWorld(World& w, const GuardDef& def) {
-    GuardReport r;
-    ParticleSet& s = w.particles;
+namespace {
+
+// The alive particles whose state is not finite or has run away, counted into r.
+std::vector<ParticleId> offenders(const ParticleSet& s, const GuardDef& def, GuardReport& r) {
     std::vector<ParticleId> bad;
     for (std::size_t i = 0; i < s.slots(); ++i) {
         if (!(s.flags[i] & kAlive)) continue;
@@ -41,27 +43,34 @@ GuardReport guardWorld(World& w, const GuardDef& def) {
         }
         bad.push_back(static_cast<ParticleId>(i));
     }
-    if (bad.empty()) return r;
+    return bad;
+}
 
-    // Diagnose before cutting: the stiffest spring on an offender, in units of w dt.
-    const double h = w.def().tickSeconds / w.def().substeps;
-    std::vector<char> isBad(s.slots(), 0);
-    for (ParticleId id : bad) isBad[id] = 1;
-    double worstOmegaDt = 0.0, worstK = 0.0;
+// The stiffest spring on an offender, in units of w dt (and its stiffness).
+struct StiffestSpring {
+    double omegaDt = 0.0, stiffness = 0.0;
+};
+
+StiffestSpring stiffestSpring(const World& w, const std::vector<char>& isBad, double h) {
+    const ParticleSet& s = w.particles;
+    StiffestSpring worst;
     for (const Spring& sp : w.springs) {
         if (sp.broken) continue;
         const bool touches = isBad[sp.a] || (sp.b != kNoParticle && isBad[sp.b]);
         if (!touches) continue;
         const double im = s.invMass[sp.a] + (sp.b != kNoParticle ? s.invMass[sp.b] : 0.0);
         const double wdt = std::sqrt(sp.stiffness * im) * h;
-        if (wdt > worstOmegaDt || !std::isfinite(wdt)) {
-            worstOmegaDt = wdt;
-            worstK = sp.stiffness;
-        }
+        if (wdt > worst.omegaDt || !std::isfinite(wdt)) worst = {wdt, sp.stiffness};
     }
+    return worst;
+}
+
+// What caused the blow-up, and what to change, diagnosed before anything is cut.
+std::string cause(const World& w, const StiffestSpring& worst, std::size_t bad, bool nonFinite,
+                  double h) {
     const Integrator m = w.def().integrator;
     char buf[400];
-    if (worstK > 0.0 && !(worstOmegaDt < stableOmegaDt(m))) {
+    if (worst.stiffness > 0.0 && !(worst.omegaDt < stableOmegaDt(m))) {
         char limit[80];
         if (stableOmegaDt(m) > 0.0)
             std::snprintf(limit, sizeof limit, "it needs w dt < %.3g", stableOmegaDt(m));
@@ -70,25 +79,39 @@ GuardReport guardWorld(World& w, const GuardDef& def) {
         std::snprintf(buf, sizeof buf,
                       "%s with springs of %g N/m is unstable at dt = %.3g ms (w dt = %.3g; %s): "
                       "add sub-steps, lower the stiffness or use implicit-euler",
-                      info(m).name, worstK, 1e3 * h, worstOmegaDt, limit);
+                      info(m).name, worst.stiffness, 1e3 * h, worst.omegaDt, limit);
     } else if (w.def().collision.model == ContactModel::Penalty) {
         std::snprintf(buf, sizeof buf,
                       "penalty contacts at %g Hz are too stiff for dt = %.3g ms with %s: lower "
                       "the contact frequency, add sub-steps or use impulse contacts",
                       w.def().collision.penaltyHertz, 1e3 * h, info(m).name);
-    } else if (worstK > 0.0) {
+    } else if (worst.stiffness > 0.0) {
         std::snprintf(buf, sizeof buf,
                       "springs of %g N/m blew up with %s at dt = %.3g ms (w dt = %.3g): add "
                       "sub-steps or use implicit-euler",
-                      worstK, info(m).name, 1e3 * h, worstOmegaDt);
+                      worst.stiffness, info(m).name, 1e3 * h, worst.omegaDt);
     } else {
         std::snprintf(buf, sizeof buf,
                       "%d particle(s) became %s with %s at dt = %.3g ms: lower the time step or "
                       "the forces acting on them",
-                      static_cast<int>(bad.size()), r.nonFinite ? "non-finite" : "too fast",
-                      info(m).name, 1e3 * h);
+                      static_cast<int>(bad), nonFinite ? "non-finite" : "too fast", info(m).name,
+                      1e3 * h);
     }
-    r.cause = buf;
+    return buf;
+}
+
+} // namespace
+
+GuardReport guardWorld(World& w, const GuardDef& def) {
+    GuardReport r;
+    ParticleSet& s = w.particles;
+    const std::vector<ParticleId> bad = offenders(s, def, r);
+    if (bad.empty()) return r;
+
+    const double h = w.def().tickSeconds / w.def().substeps;
+    std::vector<char> isBad(s.slots(), 0);
+    for (ParticleId id : bad) isBad[id] = 1;
+    r.cause = cause(w, stiffestSpring(w, isBad, h), bad.size(), r.nonFinite != 0, h);
 
     // Cut what held the offenders, then remove them.
     const auto before = w.springs.size() + w.constraints.size();

@@ -69,13 +69,13 @@ void symplecticEuler(const Dynamics& dyn, ParticleSet& s, double dt, IntegratorS
     }
 }
 
-// --- position Verlet (notes 000): S = <p>, p(t+dt) = 2 p(t) - p(t-dt) + dt^2 a(t).
+// --- position Verlet (Rabin, Introduction to Game Development, 4.3): S = <p>, p(t+dt) = 2 p(t) - p(t-dt) + dt^2 a(t).
 // It needs two prior states, so a particle's first step (and the first after anything
 // changed its velocity from outside) is one explicit Euler step. The velocity it
 // reports is (p' - p)/dt + dt/2 a, which is second-order accurate at the new time.
 // The recursion itself is second order, but the Euler start puts an O(dt^2) error in
 // p(dt), which is an O(dt) error in the initial velocity the recursion implies: so as
-// the notes build it, Verlet converges with order 1 (measured: the error halves with
+// that chapter builds it, Verlet converges with order 1 (measured: the error halves with
 // dt). Under constant acceleration it reproduces explicit Euler's positions exactly.
 void verlet(const Dynamics& dyn, ParticleSet& s, double dt, IntegratorScratch& w) {
     const std::size_t n = s.slots();
@@ -224,83 +224,106 @@ void rk4(const Dynamics& dyn, ParticleSet& s, double dt, IntegratorScratch& w) {
 // conjugate gradients, matrix-free (the force model multiplies by its Jacobian).
 // Fixed and sleeping particles are filtered out (dv = 0). Unconditionally stable:
 // on an undamped spring the energy decays by 1/(1 + (w dt)^2) per step.
-void implicitEuler(const Dynamics& dyn, ParticleSet& s, double dt, IntegratorScratch& w,
-                   const ImplicitDef& def) {
-    const std::size_t n = s.slots();
-    const double dt2 = dt * dt;
-    auto mass = [&](std::size_t i) { return dyn.active(i) ? 1.0 / s.invMass[i] : 0.0; };
-    auto dot2 = [&](const std::vector<double>& ax_, const std::vector<double>& ay_,
-                    const std::vector<double>& bx_, const std::vector<double>& by_) {
-        double sum = 0.0;
-        for (std::size_t i = 0; i < n; ++i) sum += ax_[i] * bx_[i] + ay_[i] * by_[i];
-        return sum;
-    };
-    // out = A z for the active entries (inactive entries 0).
-    auto applyA = [&](const std::vector<double>& zx, const std::vector<double>& zy,
-                      std::vector<double>& outx, std::vector<double>& outy) {
-        for (std::size_t i = 0; i < n; ++i) {
-            w.tpx[i] = dt2 * zx[i];
-            w.tpy[i] = dt2 * zy[i];
-            w.tvx[i] = dt * zx[i];
-            w.tvy[i] = dt * zy[i];
+// The linear system of one implicit Euler step, A dv = b with A = M - dt dF/dv - dt^2
+// dF/dx, solved matrix-free: A is applied through the force model's Jacobian product.
+class ImplicitSystem {
+  public:
+    ImplicitSystem(const Dynamics& dyn, ParticleSet& s, double dt, IntegratorScratch& w)
+        : dyn_(dyn), s_(s), w_(w), n_(s.slots()), dt_(dt), dt2_(dt * dt) {}
+
+    // b = dt F + dt^2 dF/dx v, stored in r (the residual of dv = 0), with z = 0, q = r.
+    void rightHandSide() {
+        IntegratorScratch& w = w_;
+        dyn_.nonGravityForces(s_.px.data(), s_.py.data(), s_.vx.data(), s_.vy.data(), w.ax.data(),
+                              w.ay.data());
+        for (std::size_t i = 0; i < n_; ++i) {
+            w.tpx[i] = dt2_ * s_.vx[i];
+            w.tpy[i] = dt2_ * s_.vy[i];
+            w.tvx[i] = 0.0;
+            w.tvy[i] = 0.0;
         }
-        dyn.forceJacobianProduct(s.px.data(), s.py.data(), s.vx.data(), s.vy.data(),
-                                 w.tpx.data(), w.tpy.data(), w.tvx.data(), w.tvy.data(),
-                                 outx.data(), outy.data());
-        for (std::size_t i = 0; i < n; ++i) {
+        dyn_.forceJacobianProduct(s_.px.data(), s_.py.data(), s_.vx.data(), s_.vy.data(),
+                                  w.tpx.data(), w.tpy.data(), w.tvx.data(), w.tvy.data(),
+                                  w.bx.data(), w.by.data());
+        for (std::size_t i = 0; i < n_; ++i) {
+            const double m = mass(i);
+            const Vec2 g = dyn_.gravityOn(i);
+            w.rx[i] = m > 0.0 ? dt_ * (w.ax[i] + m * g.x) + w.bx[i] : 0.0;
+            w.ry[i] = m > 0.0 ? dt_ * (w.ay[i] + m * g.y) + w.by[i] : 0.0;
+            w.zx[i] = w.zy[i] = 0.0;
+            w.qx[i] = w.rx[i];
+            w.qy[i] = w.ry[i];
+        }
+    }
+
+    // Conjugate gradients on A dv = b, into z; the iterations taken.
+    int solve(const ImplicitDef& def) {
+        IntegratorScratch& w = w_;
+        double rr = dot2(w.rx, w.ry, w.rx, w.ry);
+        const double stop = rr * def.tolerance * def.tolerance;
+        int it = 0;
+        for (; it < def.maxIterations && rr > stop && rr > 0.0; ++it) {
+            applyA(w.qx, w.qy, w.sx, w.sy);
+            const double qAq = dot2(w.qx, w.qy, w.sx, w.sy);
+            if (!(qAq > 0.0)) break; // not positive definite along q: stop with what we have
+            const double alpha = rr / qAq;
+            for (std::size_t i = 0; i < n_; ++i) {
+                w.zx[i] += alpha * w.qx[i];
+                w.zy[i] += alpha * w.qy[i];
+                w.rx[i] -= alpha * w.sx[i];
+                w.ry[i] -= alpha * w.sy[i];
+            }
+            const double rrNew = dot2(w.rx, w.ry, w.rx, w.ry);
+            const double beta = rrNew / rr;
+            rr = rrNew;
+            for (std::size_t i = 0; i < n_; ++i) {
+                w.qx[i] = w.rx[i] + beta * w.qx[i];
+                w.qy[i] = w.ry[i] + beta * w.qy[i];
+            }
+        }
+        return it;
+    }
+
+  private:
+    double mass(std::size_t i) const { return dyn_.active(i) ? 1.0 / s_.invMass[i] : 0.0; }
+    double dot2(const std::vector<double>& ax, const std::vector<double>& ay,
+                const std::vector<double>& bx, const std::vector<double>& by) const {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < n_; ++i) sum += ax[i] * bx[i] + ay[i] * by[i];
+        return sum;
+    }
+    // out = A z for the active entries (inactive entries 0).
+    void applyA(const std::vector<double>& zx, const std::vector<double>& zy,
+                std::vector<double>& outx, std::vector<double>& outy) {
+        IntegratorScratch& w = w_;
+        for (std::size_t i = 0; i < n_; ++i) {
+            w.tpx[i] = dt2_ * zx[i];
+            w.tpy[i] = dt2_ * zy[i];
+            w.tvx[i] = dt_ * zx[i];
+            w.tvy[i] = dt_ * zy[i];
+        }
+        dyn_.forceJacobianProduct(s_.px.data(), s_.py.data(), s_.vx.data(), s_.vy.data(),
+                                  w.tpx.data(), w.tpy.data(), w.tvx.data(), w.tvy.data(),
+                                  outx.data(), outy.data());
+        for (std::size_t i = 0; i < n_; ++i) {
             const double m = mass(i);
             outx[i] = m > 0.0 ? m * zx[i] - outx[i] : 0.0;
             outy[i] = m > 0.0 ? m * zy[i] - outy[i] : 0.0;
         }
-    };
-
-    // Right-hand side b = dt F + dt^2 dF/dx v, stored in r (the residual of dv = 0).
-    dyn.nonGravityForces(s.px.data(), s.py.data(), s.vx.data(), s.vy.data(), w.ax.data(),
-                         w.ay.data());
-    for (std::size_t i = 0; i < n; ++i) {
-        w.tpx[i] = dt2 * s.vx[i];
-        w.tpy[i] = dt2 * s.vy[i];
-        w.tvx[i] = 0.0;
-        w.tvy[i] = 0.0;
     }
-    dyn.forceJacobianProduct(s.px.data(), s.py.data(), s.vx.data(), s.vy.data(), w.tpx.data(),
-                             w.tpy.data(), w.tvx.data(), w.tvy.data(), w.bx.data(), w.by.data());
-    for (std::size_t i = 0; i < n; ++i) {
-        const double m = mass(i);
-        const Vec2 g = dyn.gravityOn(i);
-        w.rx[i] = m > 0.0 ? dt * (w.ax[i] + m * g.x) + w.bx[i] : 0.0;
-        w.ry[i] = m > 0.0 ? dt * (w.ay[i] + m * g.y) + w.by[i] : 0.0;
-        w.zx[i] = w.zy[i] = 0.0;
-        w.qx[i] = w.rx[i];
-        w.qy[i] = w.ry[i];
-    }
+    const Dynamics& dyn_;
+    ParticleSet& s_;
+    IntegratorScratch& w_;
+    std::size_t n_;
+    double dt_, dt2_;
+};
 
-    // Conjugate gradients on A dv = b.
-    double rr = dot2(w.rx, w.ry, w.rx, w.ry);
-    const double stop = rr * def.tolerance * def.tolerance;
-    int it = 0;
-    for (; it < def.maxIterations && rr > stop && rr > 0.0; ++it) {
-        applyA(w.qx, w.qy, w.sx, w.sy);
-        const double qAq = dot2(w.qx, w.qy, w.sx, w.sy);
-        if (!(qAq > 0.0)) break; // not positive definite along q: stop with what we have
-        const double alpha = rr / qAq;
-        for (std::size_t i = 0; i < n; ++i) {
-            w.zx[i] += alpha * w.qx[i];
-            w.zy[i] += alpha * w.qy[i];
-            w.rx[i] -= alpha * w.sx[i];
-            w.ry[i] -= alpha * w.sy[i];
-        }
-        const double rrNew = dot2(w.rx, w.ry, w.rx, w.ry);
-        const double beta = rrNew / rr;
-        rr = rrNew;
-        for (std::size_t i = 0; i < n; ++i) {
-            w.qx[i] = w.rx[i] + beta * w.qx[i];
-            w.qy[i] = w.ry[i] + beta * w.qy[i];
-        }
-    }
-    w.lastSolverIterations = it;
-
-    for (std::size_t i = 0; i < n; ++i) {
+void implicitEuler(const Dynamics& dyn, ParticleSet& s, double dt, IntegratorScratch& w,
+                   const ImplicitDef& def) {
+    ImplicitSystem system(dyn, s, dt, w);
+    system.rightHandSide();
+    w.lastSolverIterations = system.solve(def);
+    for (std::size_t i = 0; i < s.slots(); ++i) {
         s.vx[i] += w.zx[i];
         s.vy[i] += w.zy[i];
         s.px[i] += dt * s.vx[i];

@@ -11,7 +11,8 @@
 //   rk4                4      4                             stable for w dt < 2 sqrt(2)
 //   implicit-euler     1      2 + CG iterations             backward Euler, stable at any dt
 //
-// * the recursion is order 2; the notes' Euler bootstrap makes the result order 1.
+// * the recursion is order 2; the Euler bootstrap of Rabin's "Real-time Game Physics"
+//   (Introduction to Game Development, 4.3) makes the result order 1.
 //
 // Toggling the integrator is a value (Integrator), not a subclass.
 #pragma once

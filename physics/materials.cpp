@@ -8,12 +8,12 @@ namespace {
 
 // Built-in materials, in the order of the ids in materials.h.
 //
-// Restitution: notes 001, "measured restitution of balls dropped from 92 cm onto a
-// floor", e = sqrt(h/H). Baseball is not in the notes: 0.546 is the centre of the
+// Restitution: Claypool's "Game Physics" lecture, the measured restitution of balls
+// dropped from 92 cm onto a floor, e = sqrt(h/H). Baseball is not in its table: 0.546 is the centre of the
 // Major League Baseball specification (0.546 +- 0.032, ball fired at 58 mi/h against
 // a wall of ash boards). "earth" (packed soil, the terrain of the game) is a game
 // value, not a measurement.
-// Friction: the notes give none. The values are typical textbook magnitudes for the
+// Friction: the lecture gives none. The values are typical textbook magnitudes for the
 // surface against a hard floor (rubber high, polished steel and glass low), chosen so
 // static >= dynamic; they are game values, not measurements.
 const Material kBuiltIn[] = {

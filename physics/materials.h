@@ -1,8 +1,8 @@
 // Materials: what a surface is made of, and the restitution and friction of a PAIR.
 //
-// Restitution belongs to a pair of materials (notes 001: e = sqrt(h/H) is measured by
+// Restitution belongs to a pair of materials (Claypool, "Game Physics": e = sqrt(h/H) is measured by
 // dropping a ball on a floor, so it describes ball AND floor). Each material stores
-// its coefficient of restitution against the reference floor the notes measured on,
+// its coefficient of restitution against the reference floor it was measured on,
 // so against "floor" (e = 1, the rigid reference) a ball bounces with its own
 // measured value.
 //
@@ -109,7 +109,8 @@ inline constexpr MaterialId kBaseball = 13;
 inline constexpr MaterialId kEarth = 14;
 } // namespace material
 
-/// The notes' measured restitution presets (001, balls dropped from 92 cm on a floor),
+/// The measured restitution presets (Claypool, "Game Physics": balls dropped from 92 cm
+/// on a floor),
 /// plus "perfectly elastic" and "perfectly plastic": the ids a player picks from.
 struct RestitutionPreset {
     MaterialId id;

@@ -155,8 +155,8 @@ struct Lanes {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define ARTILLERY_FLIGHT_AVX2 1
 // Four lanes (AVX2), compiled for AVX2 here only and chosen at run time where the
-// processor has it: half the instructions per particle of the SSE2 sweep, which lets
-// the sweep keep up with memory. Flags are zero-extended into 64-bit lanes.
+// processor has it: fewer instructions per particle than the SSE2 sweep, which lets the
+// sweep keep up with memory. Flags are zero-extended into 64-bit lanes.
 #pragma GCC push_options
 #pragma GCC target("avx2")
 namespace avx2 {

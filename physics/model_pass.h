@@ -1,5 +1,5 @@
-// The model pass: which model moves each particle this tick ("model no more than a scene
-// needs", DESIGN.md), the closed form's launch and advance, and the count of each model,
+// The model pass: which model moves each particle this tick (model no more than a scene
+// needs), the closed form's launch and advance, and the count of each model,
 // per particle so that the world can run them fused with the integrator in one sweep.
 //
 // The same sweep fuses velocity Verlet (the game's default integrator) the same way.

@@ -1,7 +1,7 @@
 // The particle set: structure of arrays, one slot per particle.
 //
-// A particle is a sphere of finite radius with no rotation (notes 000, "What is a
-// Particle?"). Slots are stable: removing a particle marks its slot dead and puts it
+// A particle is a sphere of finite radius with no rotation (Rabin, Introduction to
+// Game Development, 4.3). Slots are stable: removing a particle marks its slot dead and puts it
 // on a free list that the next add reuses, so indices held by springs, rods and the
 // game stay valid and the arrays are never reallocated during a step. A dead slot
 // has inverse mass 0 and velocity 0, so every whole-array kernel may run over it

@@ -7,7 +7,7 @@ namespace {
 // Sources (published specifications and measurements):
 // - cannonball: a 12-pounder round shot, 12 lb = 5.443 kg of cast iron; at 7200 kg/m^3
 //   that is a 113 mm sphere (historical 12-pdr shot: 4.4-4.5 in). Its material is the
-//   notes' steel bearing (the nearest measured hard metal ball). Cd 0.47: smooth
+//   lecture's steel bearing (the nearest measured hard metal ball). Cd 0.47: smooth
 //   sphere, subcritical Reynolds number (Hoerner, Fluid-Dynamic Drag, 1965); it rises
 //   towards ~0.9 near Mach 1, which the game does not model.
 // - golf ball: Rules of Golf (USGA/R&A): mass <= 45.93 g, diameter >= 42.67 mm.
@@ -26,7 +26,7 @@ namespace {
 // - hand ball: USHA (American handball) ball, 1 7/8 in (47.6 mm), 2.3 oz (65 g).
 //   Cd 0.47.
 // - wooden ball: a 2 in (50.8 mm) hardwood ball, maple 700 kg/m^3 -> 48.0 g; its
-//   material is the notes' wooden ball. Cd 0.47. Last in the table, so the materials
+//   material is the lecture's wooden ball. Cd 0.47. Last in the table, so the materials
 //   made per preset before it keep their ids.
 constexpr ProjectilePreset kPresets[] = {
     {"cannonball", material::kSteelBearing, 12.0 * 0.45359237, 0.113, 0.47}, // 12 lb

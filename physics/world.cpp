@@ -91,19 +91,9 @@ ModelCounts World::countModels() const {
 
 void World::step() {
     const auto t0 = clock_.now();
-    const double h = def_.tickSeconds / def_.substeps;
     springTerms_.build(springs); // before markTethered, which reads it
     const Dynamics dynamics(def_.forces, springs, particles, &springTerms_);
-    const bool colliding = def_.collision.model != ContactModel::None;
-    // Symplectic Euler or velocity Verlet with forces that act on each particle alone (a
-    // sky full of shells under drag): model choice, closed form, integration and the
-    // model count are one sweep per sub-step (model_pass.h) instead of five.
-    const bool fused = (def_.integrator == Integrator::SymplecticEuler ||
-                        def_.integrator == Integrator::VelocityVerlet) &&
-                       dynamics.onlyLocalForces();
-    const FlightScheme scheme = def_.integrator == Integrator::VelocityVerlet
-                                    ? FlightScheme::VelocityVerlet
-                                    : FlightScheme::SymplecticEuler;
+    const TickPlan plan = planTick(dynamics);
     profile_ = {};
     collisions_.clearEvents();
 
@@ -113,43 +103,18 @@ void World::step() {
     const ModelRule rule(def_.forces, def_.model == ModelPolicy::Auto, def_.tickSeconds,
                          tethered_.empty() ? nullptr : tethered_.data());
     ModelCounts counts;
-    if (!fused) counts = chooseModels(rule);
+    if (!plan.fused) counts = chooseModels(rule);
     profile_.integrateUs += clock_.microsSince(t);
 
-    for (int s = 0; s < def_.substeps; ++s) {
-        // 1-2. Forces and integration: the integrator evaluates the force generators at
-        // every stage it needs; closed-form particles are set from their parabola. The
-        // start of the sub-step is kept for the collide phase.
-        t = clock_.now();
-        const double start = time_ + s * h, end = time_ + (s + 1) * h;
-        if (colliding) collisions_.beginSubstep(particles);
-        if (fused) {
-            counts = flightPass(particles, def_.forces, s == 0 ? &rule : nullptr, h, start, end,
-                                scheme);
-        } else {
-            const bool closedForm = counts.closedForm > 0; // else no kBallistic this tick
-            if (closedForm) launchBallistic(start);
-            integrate(def_.integrator, dynamics, particles, h, scratch_, def_.implicit);
-            if (closedForm) advanceBallistic(end);
-        }
-        profile_.integrateUs += clock_.microsSince(t);
-
-        // 3-4. Collide and resolve: impacts at their time of impact, resting contact.
-        if (colliding) collideAndResolve(h, s * h);
-
-        // 4b. Constraints: rods and cables, by projection.
-        t = clock_.now();
-        constraintError_ =
-            solveConstraints(constraints, particles, constraintScratch_,
-                             def_.collision.constraintIterations, def_.collision.constraintTolerance);
-        profile_.constraintsUs += clock_.microsSince(t);
-    }
+    // 1-4. The sub-steps: forces, integration, collisions, rods and cables.
+    for (int s = 0; s < def_.substeps; ++s)
+        substep(s, dynamics, rule, plan, counts);
 
     // 5. Sleep: resting particles fall asleep; anything tied to a spring or constraint
     // stays awake (the other end may move). Without contacts nothing rests, so nothing
     // falls asleep and the sweep is skipped.
     t = clock_.now();
-    if (colliding)
+    if (plan.colliding)
         collisions_.updateSleep(particles, def_.collision, def_.tickSeconds, tethered_);
     else
         collisions_.noContactsThisTick(counts.asleep);
@@ -162,7 +127,7 @@ void World::step() {
 
     // What each model cost this tick is in the phases above; how many were in each (the
     // model sweep counted them, unless contacts woke or put particles to sleep since):
-    if (colliding) counts = countModels();
+    if (plan.colliding) counts = countModels();
     profile_.closedForm = counts.closedForm;
     profile_.integrated = counts.integrated;
     profile_.sleeping = counts.sleeping;
@@ -171,6 +136,51 @@ void World::step() {
     ++tick_;
     time_ += def_.tickSeconds;
     profile_.totalUs = clock_.microsSince(t0);
+}
+
+// Symplectic Euler or velocity Verlet with forces that act on each particle alone (a sky
+// full of shells under drag): model choice, closed form, integration and the model count
+// are one sweep per sub-step (model_pass.h) instead of five.
+World::TickPlan World::planTick(const Dynamics& dynamics) const {
+    TickPlan plan;
+    plan.colliding = def_.collision.model != ContactModel::None;
+    plan.fused = (def_.integrator == Integrator::SymplecticEuler ||
+                  def_.integrator == Integrator::VelocityVerlet) &&
+                 dynamics.onlyLocalForces();
+    plan.scheme = def_.integrator == Integrator::VelocityVerlet ? FlightScheme::VelocityVerlet
+                                                               : FlightScheme::SymplecticEuler;
+    return plan;
+}
+
+// Sub-step s of the tick: forces and integration (the integrator evaluates the force
+// generators at every stage it needs; closed-form particles are set from their parabola),
+// then collisions and rods and cables.
+void World::substep(int s, const Dynamics& dynamics, const ModelRule& rule, const TickPlan& plan,
+                    ModelCounts& counts) {
+    const double h = def_.tickSeconds / def_.substeps;
+    auto t = clock_.now();
+    const double start = time_ + s * h, end = time_ + (s + 1) * h;
+    if (plan.colliding) collisions_.beginSubstep(particles); // the start, for the collide phase
+    if (plan.fused) {
+        counts = flightPass(particles, def_.forces, s == 0 ? &rule : nullptr, h, start, end,
+                            plan.scheme);
+    } else {
+        const bool closedForm = counts.closedForm > 0; // else no kBallistic this tick
+        if (closedForm) launchBallistic(start);
+        integrate(def_.integrator, dynamics, particles, h, scratch_, def_.implicit);
+        if (closedForm) advanceBallistic(end);
+    }
+    profile_.integrateUs += clock_.microsSince(t);
+
+    // 3-4. Collide and resolve: impacts at their time of impact, resting contact.
+    if (plan.colliding) collideAndResolve(h, s * h);
+
+    // 4b. Constraints: rods and cables, by projection.
+    t = clock_.now();
+    constraintError_ =
+        solveConstraints(constraints, particles, constraintScratch_,
+                         def_.collision.constraintIterations, def_.collision.constraintTolerance);
+    profile_.constraintsUs += clock_.microsSince(t);
 }
 
 // Detection and response interleave (each pass detects what the previous pass's bounces

@@ -1,11 +1,11 @@
 // The world: particles, springs, rods and cables, static shapes, materials and the force
 // model, advanced by World::step in fixed ticks. The step reads top to bottom as its
-// phases (DESIGN.md, "Data flow of one tick"): per sub-step integrate, collide, resolve,
+// phases (docs/architecture.md, "One tick"): per sub-step integrate, collide, resolve,
 // constraints; per tick sleep and springs. Each phase is timed into StepProfile.
 #pragma once
 
 #include "physics/collision/collision_def.h"
-#include "physics/collision/constraints.h"
+#include "physics/constraints/rods_and_cables.h"
 #include "physics/collision/particle_collisions.h"
 #include "physics/collision/shapes.h"
 #include "physics/diagnostics.h"
@@ -22,7 +22,7 @@
 
 namespace phys {
 
-/// How particles are moved ("model no more than a scene needs", DESIGN.md).
+/// How particles are moved: model no more than a scene needs.
 enum class ModelPolicy {
     /// A particle that only uniform gravity acts on follows the closed form (exact at any
     /// dt, O(1)); drag, wind, water, springs, rods or point gravity hand it to the
@@ -103,6 +103,14 @@ class World {
 
   private:
     WorldDef def_;
+    /// How this tick runs: with collisions; through the fused flight sweep, and which.
+    struct TickPlan {
+        bool colliding = false, fused = false;
+        FlightScheme scheme = FlightScheme::VelocityVerlet;
+    };
+    TickPlan planTick(const Dynamics& dynamics) const;
+    void substep(int s, const Dynamics& dynamics, const ModelRule& rule, const TickPlan& plan,
+                 ModelCounts& counts);
     void collideAndResolve(double h, double tickTime);
     void markTethered();
     ModelCounts chooseModels(const ModelRule& rule);

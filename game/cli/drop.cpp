@@ -2,7 +2,7 @@
 // against e^(2k) H.
 #include "game/cli/verbs.h"
 
-#include "physics/collision/drop.h"
+#include "physics/experiments/drop.h"
 #include "physics/materials.h"
 #include "physics/rigid/rigid_drop.h"
 

@@ -1,6 +1,7 @@
 // Broad phase: which proxies (particles' swept boxes, static shapes' boxes) might touch.
 //
-// Uniform grid (the default, notes 002 "spatial partitioning"): every box is entered in
+// Uniform grid (the default; spatial partitioning, as in Claypool, "Basic Game Physics"):
+// every box is entered in
 // the cells it covers, the entries are bucketed by a hash of their cell with a counting
 // sort into flat arrays, and only boxes sharing a cell are tested. Each box then looks
 // up the cells it covers for partners of higher index (a partner met in several cells
@@ -9,7 +10,7 @@
 // neighbours: O(n) for n boxes spread over a level. Boxes too big for the grid (a long
 // floor segment) are kept aside and tested against every box.
 //
-// Sort and sweep (the notes' "plane sweep", 002): sort the boxes by their low end on
+// Sort and sweep (the plane sweep of the same lecture): sort the boxes by their low end on
 // one axis, sweep, and keep an active list of boxes whose interval is still open;
 // only boxes in the active list can overlap on that axis, and only those are tested
 // on the other. Cost O(n log n + k) for k overlapping pairs (the sort starts from the

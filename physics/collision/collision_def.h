@@ -1,5 +1,5 @@
 // Settings of particle collision detection and response, with defaults and units.
-// Every feature has a switch so its effect can be seen (STYLE.md, box2d-lite).
+// Every feature has a switch so its effect can be seen (as box2d-lite's demo toggles).
 #pragma once
 
 #include <string>
@@ -7,8 +7,8 @@
 namespace phys {
 
 enum class ContactModel {
-    Impulse, ///< instantaneous response at the time of impact (notes 001, equation 4)
-    Penalty, ///< gradual response: a stiff damped spring while overlapping (notes 000)
+    Impulse, ///< instantaneous response at the time of impact (contact_impulse.h)
+    Penalty, ///< gradual response: a stiff damped spring while overlapping (penalty.h)
     None,    ///< no collisions at all
 };
 
@@ -27,9 +27,9 @@ struct CollisionDef {
     /// every escape rebuilds them.
     bool patchPairs = true;
     /// Swept-sphere detection with conservative advancement (no tunnelling). Off: the
-    /// notes' overlap testing at the end of the step with bisection in time.
+    /// overlap testing at the end of the step with bisection in time (time_of_impact.h).
     bool continuous = true;
-    int bisectionHalvings = 5;     ///< halvings of an overlap bracket (notes: 5), 0..60
+    int bisectionHalvings = 5;     ///< halvings of an overlap bracket, 0..60
     double toiTolerance = 1e-9;    ///< m: a gap this small counts as touching, > 0
     int maxAdvanceIterations = 64; ///< conservative-advancement steps per pair, >= 1
     /// Detect-and-resolve passes per sub-step: each finds the impacts that the previous

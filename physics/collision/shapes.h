@@ -134,4 +134,17 @@ struct StaticShapes {
     std::uint64_t version_ = 0;
 };
 
+/// Calls f with the concrete shape behind a reference (no virtual call per contact).
+template <class F> auto withShape(const StaticShapes& shapes, ShapeRef ref, F&& f) {
+    switch (ref.kind) {
+    case ShapeKind::Circle:
+        return f(shapes.circles[ref.index]);
+    case ShapeKind::Polygon:
+        return f(shapes.polygons[ref.index]);
+    case ShapeKind::Segment:
+        break;
+    }
+    return f(shapes.segments[ref.index]);
+}
+
 } // namespace phys

@@ -8,8 +8,8 @@
 // A row's wavefront is one past the latest wavefront of the rows before it that share a
 // slot with it (a list schedule, as for the levels of a triangular solve). In a resting
 // pile the contacts, listed band by band from the ground up and by pair within a band
-// (those with something immovable last), fall into about a hundred wavefronts for 2,500
-// contacts: each wide enough for vector lanes.
+// (those with something immovable last), fall into far fewer wavefronts than
+// contacts: most of them wide enough for vector lanes.
 #pragma once
 
 #include <algorithm>

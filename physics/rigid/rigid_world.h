@@ -1,5 +1,5 @@
-// The rigid-body layer: what must rotate and stack is a Box2D body (DESIGN.md, "Model
-// no more than a scene needs"). RigidWorld owns one b2World and hands out stable ids
+// The rigid-body layer: what must rotate and stack is a Box2D body (model no
+// more than a scene needs). RigidWorld owns one b2World and hands out stable ids
 // instead of b2Body pointers, so the game, replays and the particle coupling never hold
 // a pointer Box2D may free.
 //
@@ -165,7 +165,7 @@ class RigidWorld {
     void step(double dt);
     /// Box2D's time of impact scans its whole contact list for each impact it resolves
     /// (up to eight a contact and step), so its cost grows as the square of the
-    /// contacts: 1,582 blocks 5 cm across under 100 g took seconds a tick. With more
+    /// contacts, and a heap of small blocks made a tick last seconds. With more
     /// dynamic bodies than this a step runs without it (def().continuousPhysics aside);
     /// the shipped levels have at most 24 blocks.
     static constexpr int kMostContinuousBodies = 256;

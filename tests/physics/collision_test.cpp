@@ -1,6 +1,6 @@
 // Collisions against exact answers: head-on impacts (equation 4), continuous detection
 // against tunnelling, shapes, friction, resting contact, penalty contacts.
-#include "physics/collision/narrowphase.h"
+#include "physics/collision/time_of_impact.h"
 #include "physics/diagnostics.h"
 #include "physics/world.h"
 

@@ -1,7 +1,7 @@
 // The drop experiment (Claypool, Game Physics (ch. 10)): apex k of a ball dropped from H is e^(2k) H. With
 // the time-of-impact response and an integrator exact under constant acceleration,
 // that holds at any step size; the Euler methods show their own error.
-#include "physics/collision/drop.h"
+#include "physics/experiments/drop.h"
 #include "physics/materials.h"
 
 #include <gtest/gtest.h>

@@ -15,7 +15,7 @@ TEST(Materials, MeasuredPresetsAgainstTheFloor) {
     const struct {
         const char* name;
         double e;
-    } notes[] = {{"golf", 0.858},
+    } measured[] = {{"golf", 0.858},
                  {"tennis", 0.712},
                  {"billiard", 0.804},
                  {"hand-ball", 0.752},
@@ -26,15 +26,15 @@ TEST(Materials, MeasuredPresetsAgainstTheFloor) {
                  {"hollow-hard-plastic", 0.688},
                  {"perfectly-elastic", 1.0},
                  {"perfectly-plastic", 0.0}};
-    ASSERT_EQ(std::size(kRestitutionPresets), std::size(notes));
-    for (std::size_t i = 0; i < std::size(notes); ++i) {
-        const auto id = t.find(notes[i].name);
-        ASSERT_TRUE(id) << notes[i].name;
+    ASSERT_EQ(std::size(kRestitutionPresets), std::size(measured));
+    for (std::size_t i = 0; i < std::size(measured); ++i) {
+        const auto id = t.find(measured[i].name);
+        ASSERT_TRUE(id) << measured[i].name;
         EXPECT_EQ(*id, kRestitutionPresets[i].id);
-        EXPECT_DOUBLE_EQ(t[*id].restitution, notes[i].e);
+        EXPECT_DOUBLE_EQ(t[*id].restitution, measured[i].e);
         // Against the rigid reference floor a ball bounces with its own measured e.
-        EXPECT_DOUBLE_EQ(t.pair(*id, material::kFloor).restitution, notes[i].e);
-        EXPECT_DOUBLE_EQ(t.pair(material::kFloor, *id).restitution, notes[i].e);
+        EXPECT_DOUBLE_EQ(t.pair(*id, material::kFloor).restitution, measured[i].e);
+        EXPECT_DOUBLE_EQ(t.pair(material::kFloor, *id).restitution, measured[i].e);
         EXPECT_EQ(validate(t[*id]), "");
     }
 }

@@ -2,7 +2,7 @@
 // exactly the pairs near enough to be contacts with its normal and depth to the bit, in
 // their order, with AVX2 lanes or without: edges that touch, signed zeros, NaNs and
 // static shapes included.
-#include "physics/collision/pair_filter.h"
+#include "physics/collision/simd/pair_filter.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Where the first pass's times of impact need no search: the four-lane classification and
 // the one-pair one agree to the bit, and both agree with timeOfImpact itself.
-#include "physics/collision/pair_starts.h"
+#include "physics/collision/simd/pair_starts.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The boxes of the particles' paths: four lanes and one path at a time give the same bits,
 // each box is the one of the path's control points grown by the reach, a path at rest is
 // boxed where it is, and only the listed particles' boxes are written.
-#include "physics/collision/path_boxes.h"
+#include "physics/collision/simd/path_boxes.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// skipSettled (settled_scan.h) passes exactly the slots selectActive's one-slot test
+// skipSettled (simd/settled_scan.h) passes exactly the slots AwakeSet::select's one-slot test
 // passes: on slots that fail it each way it can (flags not as recorded, awake, a -0 or a
 // tiny velocity, a place or radius one bit off, -0 against +0), it stops at the first
 // such slot, clears the marks of the slots it passed and counts the alive among them.
-#include "physics/collision/settled_scan.h"
+#include "physics/collision/simd/settled_scan.h"
 #include "physics/particles.h"
 
 #include <gtest/gtest.h>
@@ -26,7 +26,7 @@ struct Slots {
     }
 };
 
-// The one-slot test, written out as selectActive has it.
+// The one-slot test, written out as AwakeSet::select has it.
 bool settled(const Slots& s, std::size_t i) {
     auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
     const std::uint32_t f = s.flags[i];

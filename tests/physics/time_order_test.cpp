@@ -1,7 +1,7 @@
 // The candidates' order: by time, ties by index, whichever sort gives it. The radix sort
 // of a long list gives exactly what the comparison sort gives, ties, zeros of both signs,
 // negative times and times that share most of their bits included.
-#include "physics/collision/time_order.h"
+#include "physics/collision/narrowphase.h"
 
 #include <gtest/gtest.h>
 
