@@ -119,7 +119,8 @@ mouse: wheel zooms at the pointer, right drag pans, Home re-frames
 controller: left stick aims, triggers set power, A fires, B ends the turn
 
 Headless, frames advance 1/60 s each, so a run gives the same picture every time.
-Exit codes: 0 ok, 1 the frame could not be drawn or saved, 2 bad input.
+Exit codes: 0 ok, 2 bad input (a --screenshot that cannot be written included: refused
+before anything is drawn), 3 the frame could not be drawn or saved, or the game failed.
 )";
 
 struct PlayOptions {
@@ -176,6 +177,7 @@ PlayOptions parseOptions(const Args& args) {
     o.screenshot = args.text("screenshot", "");
     if (!o.screenshot.empty() && std::filesystem::path(o.screenshot).extension() != ".png")
         args.fail("--screenshot expects a file name ending in .png, got '" + o.screenshot + "'");
+    if (!o.screenshot.empty()) game::cli::requireWritableFile(args, "screenshot", o.screenshot);
     o.headless = args.flag("headless");
     const std::string context = args.text("context", "auto");
     if (context == "auto")
@@ -326,7 +328,7 @@ int runHeadless(const PlayOptions& o, RunReport& report) {
     auto context = createHeadlessContext(o.width, o.height, o.backend, error);
     if (!context) {
         std::cerr << "artillery play: no headless GL context: " << error << "\n";
-        return game::cli::kCheckFailed;
+        return game::cli::kWorkFailed;
     }
     report.context = context->name();
     const auto screenPtr = makeScreen(*context, nullptr, o);
@@ -341,7 +343,7 @@ int runHeadless(const PlayOptions& o, RunReport& report) {
         screen.setMeasuredFrameMs(ms);
         accumulate(report, ms);
     }
-    return saveIfAsked(screen, o, report) ? game::cli::kOk : game::cli::kCheckFailed;
+    return saveIfAsked(screen, o, report) ? game::cli::kOk : game::cli::kWorkFailed;
 }
 
 /// Returns -1 when no window could be opened (the caller falls back to headless).
@@ -373,7 +375,7 @@ int runWindow(const PlayOptions& o, RunReport& report) {
             if (screen.saveScreenshot(name).empty())
                 std::cout << "screenshot: " << absolute(name) << std::endl;
         }
-        if (lastFrame && !saveIfAsked(screen, o, report)) return game::cli::kCheckFailed;
+        if (lastFrame && !saveIfAsked(screen, o, report)) return game::cli::kWorkFailed;
         window->present();
         const double ms = msSince(now);
         screen.setMeasuredFrameMs(ms);
@@ -450,9 +452,12 @@ int play(PlayOptions o, std::ostream& out) {
             o = headlessDemo(o);
             code = runHeadless(o, report);
         }
+    } catch (const game::LoadError& e) { // a level or replay the game was given
+        std::cerr << "artillery play: " << e.what() << "\n";
+        return game::cli::kBadInput;
     } catch (const std::exception& e) {
         std::cerr << "artillery play: " << e.what() << "\n";
-        return game::cli::kCheckFailed;
+        return game::cli::kWorkFailed;
     }
     if (code == game::cli::kOk) printReport(out, report, o, o.json);
     return code;
