@@ -86,25 +86,16 @@ GameScreen::GameScreen(GLContext& context, SdlWindow* window, const GameScreenDe
     if (!tickBudget_ && window_) tickBudget_ = kWindowTickBudgetSeconds;
     samples_ = autoSamples(def_.msaaSamples);
     msaa_.resize(context.width(), context.height(), samples_);
-    if (!def_.settingsFolder.empty()) {
-        settingsFile_ = (std::filesystem::path(def_.settingsFolder) / "settings.json").string();
-        iniFile_ = (std::filesystem::path(def_.settingsFolder) / "imgui.ini").string();
-        std::string warning;
-        settings_ = loadPlayerSettings(settingsFile_, warning);
-        if (!warning.empty()) {
-            // Told on the terminal and in the window; the damaged file is kept as it is,
-            // so this run saves no settings over it.
-            std::cerr << "artillery: " << warning << "\n";
-            stats_.status = warning;
-            settingsFile_.clear();
-        }
-        std::error_code ec;
-        if (std::filesystem::exists(iniFile_, ec)) {
-            const std::string ini = game::readFile(iniFile_);
-            ImGui::LoadIniSettingsFromMemory(ini.data(), ini.size());
-        }
+    // The player's files (ui/game/player_files.h): read here, saved merged in persist().
+    files_ = PlayerFiles({def_.settingsFolder, def_.progressFile, def_.progressReadOnly});
+    settings_ = files_.loadSettings();
+    if (const std::string ini = files_.loadLayout(); !ini.empty())
+        ImGui::LoadIniSettingsFromMemory(ini.data(), ini.size());
+    progress_ = files_.loadProgress(settings_);
+    for (const std::string& notice : files_.takeNotices()) { // said once: terminal and window
+        std::cerr << "artillery: " << notice << "\n";
+        stats_.status = notice;
     }
-    if (!def_.settingsFolder.empty() || !def_.progressFile.empty()) loadProgress();
     view_ = openingView(def_.view, settings_.draw);
     matchView_.followGhosts(view_.draw.ghosts);
     if (def_.difficulty) settings_.difficulty = *def_.difficulty;
@@ -138,53 +129,12 @@ GameScreen::~GameScreen() {
     persist();
 }
 
-/// The progress file beside the settings. A damaged one is kept aside by the reader and
-/// the player is told once; results an older settings file kept move into it (saved
-/// before the settings, which no longer write them, are saved without them).
-void GameScreen::loadProgress() {
-    progressFile_ = !def_.progressFile.empty()
-                        ? def_.progressFile
-                        : (std::filesystem::path(def_.settingsFolder) / "progress.json").string();
-    std::error_code ec;
-    const bool existed = std::filesystem::exists(progressFile_, ec);
-    std::string warning;
-    if (def_.progressReadOnly) { // a check run: read, never move nor write
-        try {
-            if (existed)
-                progress_ = game::parseProgress(progressFile_, game::readFile(progressFile_));
-        } catch (const std::exception& e) {
-            warning = e.what();
-        }
-        if (!warning.empty()) std::cerr << "artillery: " << warning << "\n";
-        progressFile_.clear();
-        return;
-    }
-    progress_ = game::loadProgress(progressFile_, warning);
-    if (!warning.empty()) {
-        std::cerr << "artillery: " << warning << "\n";
-        stats_.status = warning;
-    }
-    if (game::adoptOlderResults(progress_, settings_.results)) {
-        if (const std::string err = game::saveProgress(progressFile_, progress_); !err.empty())
-            std::cerr << "artillery: progress not saved: " << err << "\n";
-    }
-}
-
 void GameScreen::persist() {
-    if (!progressFile_.empty())
-        if (const std::string err = game::saveProgress(progressFile_, progress_); !err.empty())
-            std::cerr << "artillery: progress not saved: " << err << "\n";
-    if (settingsFile_.empty()) return;
     settings_.draw = drawChoices(view_);
-    if (const std::string err = savePlayerSettings(settingsFile_, settings_); !err.empty())
-        std::cerr << "artillery: settings not saved: " << err << "\n";
     std::size_t size = 0;
     const char* ini = ImGui::SaveIniSettingsToMemory(&size);
-    try {
-        game::writeFileAtomically(iniFile_, std::string(ini, size));
-    } catch (const std::exception& e) {
-        std::cerr << "artillery: window layout not saved: " << e.what() << "\n";
-    }
+    for (const std::string& err : files_.save(progress_, settings_, std::string(ini, size)))
+        std::cerr << "artillery: " << err << "\n";
 }
 
 void GameScreen::openLevel(const std::string& file) {
@@ -196,15 +146,11 @@ void GameScreen::openLevel(const std::string& file) {
     overlay_ = Overlay::None;
 }
 
-std::string GameScreen::replaysFolder() const {
-    if (def_.settingsFolder.empty()) return "";
-    return (std::filesystem::path(def_.settingsFolder) / "replays").string();
-}
+std::string GameScreen::replaysFolder() const { return files_.replaysFolder(); }
 
 std::string GameScreen::recordFileFor(const std::string& name) const {
     const std::string folder = replaysFolder();
     if (folder.empty()) return "";
-    std::filesystem::create_directories(folder);
     return (std::filesystem::path(folder) / name).string();
 }
 
@@ -212,12 +158,18 @@ bool GameScreen::hotseatInUse() const {
     return settings_.hotseat && level_.mode == game::Mode::Duel;
 }
 
-game::SessionOptions GameScreen::liveOptions(const std::string& recordFile) const {
+game::SessionOptions GameScreen::liveOptions(const std::string& recordFile) {
     game::SessionOptions o;
     o.difficulty = settings_.difficulty;
     o.cpuSeed = level_.seed;
     // Every match is recorded; the session saves at each turn's end.
     o.recordFile = recordFile;
+    o.onSaveFailure = [this](const std::string& why) { // the game plays on, and says so once
+        if (const std::string said = files_.failedOnce("the replay", why); !said.empty()) {
+            std::cerr << "artillery: " << said << "\n";
+            stats_.status = said;
+        }
+    };
     return o;
 }
 

@@ -27,6 +27,7 @@
 #include "ui/game/game_menus.h"
 #include "ui/game/match_view.h"
 #include "ui/game/pad_input.h"
+#include "ui/game/player_files.h"
 #include "ui/game/player_settings.h"
 #include "ui/game/replay_view.h"
 #include "ui/game/sandbox_tools.h"
@@ -121,7 +122,7 @@ class GameScreen final : public Screen {
     void restart();
     /// Plays `session` from its current tick (a new match, or a replay taken over).
     void playSession(std::unique_ptr<game::Session> session);
-    game::SessionOptions liveOptions(const std::string& recordFile) const;
+    game::SessionOptions liveOptions(const std::string& recordFile);
     bool hotseatInUse() const;
     /// Where the game records replays ("" in check runs and headless: nowhere).
     std::string replaysFolder() const;
@@ -165,7 +166,6 @@ class GameScreen final : public Screen {
     void drawPlaying();
     void drawPanels();
     void persist();
-    void loadProgress();
     /// The sound: the synthesizer hears the match on screen (a live one after every
     /// tick, a replay once a frame) and the device plays it; nothing without a device.
     bool hearing() const;
@@ -186,12 +186,11 @@ class GameScreen final : public Screen {
     int samples_ = 1;
 
     PlayerSettings settings_;
-    std::string settingsFile_, iniFile_;
+    PlayerFiles files_; ///< where settings_ and progress_ are read and saved
     std::vector<LevelEntry> levels_;
     /// The levels in their chapters, and what the player has earned ("" file: not kept).
     CampaignMenu campaign_;
     game::Progress progress_;
-    std::string progressFile_;
     /// The lesson on screen (Overlay::Lesson) and the level its Play button opens.
     std::size_t lessonChapter_ = 0;
     std::string lessonThenLevel_;
