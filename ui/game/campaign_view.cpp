@@ -111,6 +111,10 @@ CampaignMenu campaignMenu(const std::string& folder, const std::vector<LevelEntr
     if (std::filesystem::exists(file, ec)) {
         try {
             menu.campaign = game::loadCampaign(file);
+            for (const game::MissingLevel& m : game::missingLevels(menu.campaign, folder)) {
+                menu.campaign.missing[m.file] = m.why;
+                menu.missing.push_back(game::describe(menu.campaign, m));
+            }
         } catch (const std::exception& e) {
             menu.error = e.what();
         }
@@ -181,6 +185,11 @@ void playNextButton(const CampaignMenu& menu, const game::Progress& progress, Me
 
 void campaignTable(const CampaignMenu& menu, const game::Progress& progress, MenuChoice& choice) {
     if (!menu.error.empty()) ImGui::TextColored(kError, "%s", menu.error.c_str());
+    for (const std::string& missing : menu.missing) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kError);
+        ImGui::TextWrapped("%s", missing.c_str());
+        ImGui::PopStyleColor();
+    }
     // When the screen opens, the list scrolls to the first open level not yet cleared:
     // where the player left off. Twice: on the first frame the list has no height yet.
     ImGuiStorage* storage = ImGui::GetStateStorage();

@@ -22,6 +22,9 @@ struct CampaignMenu {
     std::vector<std::vector<LevelEntry>> chapters; ///< entries of each chapter, in order
     std::vector<LevelEntry> outside;               ///< the sandbox, and unlisted files
     std::string error; ///< why campaign.json did not load ("" when it did or is absent)
+    /// Each level a chapter names that cannot be played, said (game::describe): the
+    /// levels after it open without it.
+    std::vector<std::string> missing;
 };
 
 /// Sorts `levels` (listLevels of `folder`) into the chapters of `folder`/campaign.json.
