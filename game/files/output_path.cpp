@@ -63,12 +63,15 @@ std::string probe(const std::string& folder) {
 
 std::string unwritableFolder(const std::string& folder, bool create) {
     if (folder.empty()) return "an empty folder name";
-    if (create) {
+    std::error_code made;
+    if (create) std::filesystem::create_directories(folder, made);
+    if (std::string why = notAFolder(folder); !why.empty()) {
+        // A folder that could not be made says why (read-only, permission, /proc).
         std::error_code ec;
-        std::filesystem::create_directories(folder, ec);
-        // Whatever stopped it is said below, by what the folder is (or is not).
+        if (made && !std::filesystem::exists(folder, ec) && why.ends_with("does not exist"))
+            return "the folder " + quoted(folder) + " cannot be made: " + made.message();
+        return why;
     }
-    if (std::string why = notAFolder(folder); !why.empty()) return why;
     return probe(folder);
 }
 
