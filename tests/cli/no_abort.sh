@@ -72,6 +72,8 @@ expect 0 "\"steps\":" -- spring --k 1e6 --mass 1e-6 --x0 1e6 --time 1 --integrat
 expect 0 "frames in" -- run "$LEVEL" --ticks 2 --png big --every 1000000 --size 16x16
 expect 2 "--ticks expects a whole number in \\[1, 432000\\]" -- run "$LEVEL" --ticks 432001
 expect 2 "expected a regular file" -- replay verify /dev/zero
+expect 1 "/dev/zero: \\$: expected a regular file" -- check /dev/zero
+expect 1 "plain.txt: .*line 1" -- check plain.txt
 expect 2 "expected a regular file, got a directory" -- run dir
 
 # --- a write that fails during the work: exit 3, one line (a file size limit makes each

@@ -174,10 +174,15 @@ std::string savePlayerSettingsMerged(const std::string& file, PlayerSettings& ba
         }
         merged = changedKeysOver(settingsJson(onDisk), settingsJson(base), merged);
     }
+    PlayerSettings whole;
+    try { // what the merge made is read back as the file will be: whole, or not written
+        whole = parsePlayerSettings(file, merged.dump());
+    } catch (const std::exception& e) {
+        return std::string(e.what()) + " (the merged settings; nothing written)";
+    }
     if (std::string err = writeSettings(file, merged); !err.empty()) return err;
-    const auto results = mine.results; // an older file's results are read once, never written
-    base = mine = parsePlayerSettings(file, merged.dump());
-    base.results = mine.results = results;
+    whole.results = mine.results; // an older file's results are read once, never written
+    base = mine = whole;
     return "";
 }
 
