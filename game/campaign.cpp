@@ -87,11 +87,41 @@ Campaign loadCampaign(const std::string& file) {
     return parseCampaign(file, readFile(file));
 }
 
+std::vector<MissingLevel> missingLevels(const Campaign& campaign, const std::string& levelsFolder) {
+    namespace fs = std::filesystem;
+    std::vector<MissingLevel> missing;
+    for (std::size_t c = 0; c < campaign.chapters.size(); ++c)
+        for (std::size_t l = 0; l < campaign.chapters[c].levels.size(); ++l) {
+            const std::string& name = campaign.chapters[c].levels[l];
+            const fs::path file = fs::path(levelsFolder) / name;
+            std::error_code ec;
+            if (!fs::exists(file, ec)) {
+                missing.push_back({c, l, name, "no such level file in " + levelsFolder});
+                continue;
+            }
+            try {
+                loadLevel(file.string());
+            } catch (const std::exception& e) {
+                missing.push_back({c, l, name, e.what()});
+            }
+        }
+    return missing;
+}
+
+std::string describe(const Campaign& campaign, const MissingLevel& m) {
+    return campaign.file + ": $.chapters[" + std::to_string(m.chapter) + "].levels[" +
+           std::to_string(m.level) + "]: names " + m.file + ", which cannot be played (" + m.why +
+           "): the levels after it open without it";
+}
+
 std::vector<std::string> campaignProblems(const Campaign& campaign,
                                           const std::string& levelsFolder) {
     namespace fs = std::filesystem;
     std::vector<std::string> problems;
     std::map<std::string, bool> listed;
+    std::map<std::string, std::string> unplayable;
+    for (const MissingLevel& m : missingLevels(campaign, levelsFolder))
+        unplayable[m.file] = m.why;
     for (std::size_t c = 0; c < campaign.chapters.size(); ++c) {
         const Chapter& ch = campaign.chapters[c];
         const std::string at = "$.chapters[" + std::to_string(c) + "]";
@@ -100,15 +130,15 @@ std::vector<std::string> campaignProblems(const Campaign& campaign,
             listed[ch.levels[l]] = true;
             const std::string where =
                 campaign.file + ": " + at + ".levels[" + std::to_string(l) + "]: ";
-            try {
-                const Level level = loadLevel((fs::path(levelsFolder) / ch.levels[l]).string());
-                if (level.mode == Mode::Sandbox)
-                    problems.push_back(where + "a sandbox has no result to unlock the next level; "
-                                               "list it in \"outside\"");
-                if (level.mode == Mode::Practice) ++practiceLevels;
-            } catch (const std::exception& e) {
-                problems.push_back(where + "the level does not load: " + e.what());
+            if (const auto it = unplayable.find(ch.levels[l]); it != unplayable.end()) {
+                problems.push_back(where + "the level does not load: " + it->second);
+                continue;
             }
+            const Level level = loadLevel((fs::path(levelsFolder) / ch.levels[l]).string());
+            if (level.mode == Mode::Sandbox)
+                problems.push_back(where + "a sandbox has no result to unlock the next level; "
+                                           "list it in \"outside\"");
+            if (level.mode == Mode::Practice) ++practiceLevels;
         }
         if (c + 1 < campaign.chapters.size() &&
             campaign.chapters[c + 1].starsToOpen > kStarsPerLevel * practiceLevels)
@@ -170,8 +200,13 @@ int chapterStars(const Chapter& chapter, const Progress& progress) {
 
 Lock chapterLock(const Campaign& campaign, std::size_t chapter, const Progress& progress) {
     if (chapter == 0) return {};
-    const int missing = campaign.chapters[chapter].starsToOpen -
-                        chapterStars(campaign.chapters[chapter - 1], progress);
+    const Chapter& before = campaign.chapters[chapter - 1];
+    // The stars a level that cannot be played could have given are not asked for.
+    int unplayable = 0;
+    for (const std::string& level : before.levels)
+        unplayable += static_cast<int>(campaign.missing.count(level));
+    const int missing = campaign.chapters[chapter].starsToOpen - kStarsPerLevel * unplayable -
+                        chapterStars(before, progress);
     if (missing <= 0) return {};
     return {false, std::to_string(missing) + " more star" + (missing == 1 ? "" : "s") +
                        " in Chapter " + std::to_string(chapter)};
@@ -180,10 +215,13 @@ Lock chapterLock(const Campaign& campaign, std::size_t chapter, const Progress& 
 Lock levelLock(const Campaign& campaign, std::size_t chapter, std::size_t level,
                const Progress& progress) {
     if (Lock l = chapterLock(campaign, chapter, progress); !l.open) return l;
-    if (level == 0) return {};
-    const std::string& before = campaign.chapters[chapter].levels[level - 1];
-    if (cleared(progress, before)) return {};
-    return {false, "clear " + std::to_string(chapter + 1) + "." + std::to_string(level) +
+    // The level before it that must be cleared: levels that cannot be played are passed.
+    const std::vector<std::string>& levels = campaign.chapters[chapter].levels;
+    std::size_t before = level;
+    while (before > 0 && campaign.missing.count(levels[before - 1])) --before;
+    if (before == 0) return {};
+    if (cleared(progress, levels[before - 1])) return {};
+    return {false, "clear " + std::to_string(chapter + 1) + "." + std::to_string(before) +
                        " first (one star, or win the duel)"};
 }
 

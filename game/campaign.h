@@ -14,6 +14,7 @@
 #include "game/progress.h"
 
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,7 +36,25 @@ struct Campaign {
     std::vector<Chapter> chapters;
     /// Shipped levels deliberately outside every chapter (the sandbox), always open.
     std::vector<std::string> outside;
+    /// The chapters' level files that the folder lacks or that do not load, by file name,
+    /// with why (from missingLevels): they cannot be played, so they lock nothing.
+    std::map<std::string, std::string> missing;
 };
+
+/// A level a chapter names that cannot be played: no such file in the levels folder, or
+/// a file that does not load. The campaign is still played (`check` refuses it), and
+/// the level select says which level is missing and why.
+struct MissingLevel {
+    std::size_t chapter = 0, level = 0;
+    std::string file; ///< the name the chapter gives
+    std::string why;  ///< "no such level file in levels", or the loader's message
+};
+/// The chapters' levels that `levelsFolder` lacks or cannot load, in play order.
+std::vector<MissingLevel> missingLevels(const Campaign& campaign, const std::string& levelsFolder);
+/// One line for the level select: "levels/campaign.json: $.chapters[0].levels[2]: names
+/// 03_gone.json, which cannot be played (no such level file in levels): the levels after
+/// it open without it".
+std::string describe(const Campaign& campaign, const MissingLevel& missing);
 
 /// Parses a campaign strictly; throws LoadError (file, JSON path, what was expected).
 Campaign parseCampaign(const std::string& file, const std::string& text);
@@ -64,7 +83,9 @@ int chapterStars(const Chapter& chapter, const Progress& progress);
 /// A level counts as cleared with at least one star, or a duel once won.
 bool cleared(const Progress& progress, const std::string& levelFile);
 
-/// Whether something is open, and if not, what the player must do ("" when open).
+/// Whether something is open, and if not, what the player must do ("" when open). A
+/// level in campaign.missing is passed over: the level after it opens as if it were
+/// cleared, and the stars it could have given are not asked of its chapter.
 struct Lock {
     bool open = true;
     std::string why;

@@ -1,5 +1,6 @@
 #include "game/progress.h"
 
+#include "game/files/file_lock.h"
 #include "game/files/json_reader.h"
 
 #include <nlohmann/json.hpp>
@@ -123,6 +124,52 @@ std::string saveProgress(const std::string& file, const Progress& p) {
     } catch (const std::exception& e) {
         return e.what();
     }
+    return "";
+}
+
+LevelResult bestOf(const LevelResult& a, const LevelResult& b) {
+    LevelResult r;
+    r.bestScore = std::max(a.bestScore, b.bestScore);
+    r.stars = std::max(a.stars, b.stars);
+    r.won = a.won || b.won;
+    r.assisted = a.stars != b.stars ? (a.stars > b.stars ? a.assisted : b.assisted)
+                                    : a.assisted && b.assisted;
+    r.plays = std::max(a.plays, b.plays);
+    return r;
+}
+
+Progress mergeProgress(const Progress& onDisk, const Progress& base, const Progress& mine) {
+    Progress merged = onDisk;
+    for (const auto& [name, result] : mine.results) {
+        const auto was = base.results.find(name);
+        const int before = was == base.results.end() ? 0 : was->second.plays;
+        const auto there = merged.results.find(name);
+        if (there == merged.results.end()) {
+            merged.results[name] = result; // the file has lost it, or never had it
+            continue;
+        }
+        // The file's plays already count this run's earlier ones (it saved them): only
+        // the plays since are added.
+        const int added = std::max(0, result.plays - before);
+        LevelResult best = bestOf(there->second, result);
+        best.plays = there->second.plays + added;
+        there->second = best;
+    }
+    merged.lessonsSeen.insert(mine.lessonsSeen.begin(), mine.lessonsSeen.end());
+    return merged;
+}
+
+std::string saveProgressMerged(const std::string& file, Progress& base, Progress& mine,
+                               std::string& warning) {
+    warning.clear();
+    std::error_code ec;
+    const std::filesystem::path parent = std::filesystem::path(file).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+    const FileLock lock(lockFileOf(file), 5.0);
+    if (!lock.locked()) return lock.why();
+    const Progress merged = mergeProgress(loadProgress(file, warning), base, mine);
+    if (std::string err = saveProgress(file, merged); !err.empty()) return err;
+    base = mine = merged;
     return "";
 }
 

@@ -1,7 +1,9 @@
 // The player's progress through the levels: the best result of each level and the
 // chapter lessons already read. Kept as its own file (progress.json) in the player's
 // settings folder, written atomically (temp file + rename). A damaged file is kept aside
-// as FILE.damaged, the game starts from no progress and says so once.
+// as FILE.damaged, the game starts from no progress and says so once. Two windows of the
+// game share the file: each saves what it added merged into what the other saved, under
+// a lock, so neither loses the other's results.
 #pragma once
 
 #include <map>
@@ -46,5 +48,23 @@ Progress parseProgress(const std::string& file, const std::string& text);
 Progress loadProgress(const std::string& file, std::string& warning);
 /// Writes atomically (temp file + rename), creating the folder. Returns "" or why it failed.
 std::string saveProgress(const std::string& file, const Progress& progress);
+
+/// Two results of one level as one: the best score and stars, won if either was, and
+/// assisted only when every result at the best stars was (the stars of an unassisted
+/// game are not taken back by an assisted one), and the larger count of plays (a merge
+/// counts them itself: mergeProgress).
+LevelResult bestOf(const LevelResult& a, const LevelResult& b);
+/// What a run added (`mine`, against `base`: the progress as the run last read or wrote
+/// it) merged into the progress another window left in the file meanwhile (`onDisk`):
+/// per level the best result, and the plays of the file plus this run's new ones; the
+/// lessons either has seen.
+Progress mergeProgress(const Progress& onDisk, const Progress& base, const Progress& mine);
+/// Saves a run's progress beside other windows': under an advisory lock on FILE.lock
+/// (game/files/file_lock.h) it reads the file again, merges (mergeProgress) and writes
+/// atomically. On success `base` and `mine` both become the merged whole, so results
+/// another window saved show here too. Returns "" or why nothing was saved; `warning`
+/// says when the file had been damaged meanwhile (it is kept aside, as loadProgress does).
+std::string saveProgressMerged(const std::string& file, Progress& base, Progress& mine,
+                               std::string& warning);
 
 } // namespace game

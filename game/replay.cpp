@@ -141,6 +141,17 @@ Level levelForReplay(const std::string& replayFile, const Replay& r) {
     return parseLevel(p.string(), text);
 }
 
+namespace {
+
+/// "tick 0: select 'nuke' refused: WHY": a command the match refused, for the warnings.
+std::string refusal(const Command& c, const std::string& why) {
+    std::string said = "tick " + std::to_string(c.tick) + ": " + commandName(c.kind);
+    if (!c.text.empty()) said += " '" + c.text + "'";
+    return said + " refused: " + why;
+}
+
+} // namespace
+
 VerifyResult verifyReplay(const Level& level, const Replay& r) {
     VerifyResult out;
     Match m(level);
@@ -158,7 +169,11 @@ VerifyResult verifyReplay(const Level& level, const Replay& r) {
         out.diverged = what.empty() ? "match" : what;
     };
     while (m.tick() < r.ticks) {
-        while (next < r.commands.size() && r.commands[next].tick <= m.tick()) m.apply(r.commands[next++]);
+        while (next < r.commands.size() && r.commands[next].tick <= m.tick()) {
+            const Command& c = r.commands[next++];
+            if (const std::string why = m.apply(c); !why.empty())
+                out.ignored.push_back(refusal(c, why));
+        }
         m.step();
         while (cp < r.checkpoints.size() && r.checkpoints[cp].tick == m.tick()) compare(r.checkpoints[cp++]);
     }

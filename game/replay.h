@@ -71,6 +71,10 @@ struct VerifyResult {
     std::optional<std::uint64_t> firstDivergentTick;
     std::string diverged;  ///< "particles", "bodies", "game" (or a combination)
     std::uint64_t finalHash = 0;
+    /// Commands the match refused as it re-ran them ("tick 120: select 'nuke' refused:
+    /// ..."): they changed nothing, so the replay may still verify, but they are not
+    /// what the recording seems to say.
+    std::vector<std::string> ignored;
 };
 
 /// Re-simulates the replay and compares every checkpoint and the final hash.

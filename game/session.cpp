@@ -42,7 +42,16 @@ void Session::step() {
         const EventKind k = m.events()[eventsSeen_].kind;
         turnEnded = turnEnded || k == EventKind::TurnOver || k == EventKind::MatchOver;
     }
-    if (turnEnded && !options_.recordFile.empty()) save(options_.recordFile);
+    if (turnEnded && !options_.recordFile.empty()) saveAtTurnEnd();
+}
+
+void Session::saveAtTurnEnd() {
+    if (!options_.onSaveFailure) return save(options_.recordFile);
+    try {
+        save(options_.recordFile);
+    } catch (const std::exception& e) {
+        options_.onSaveFailure(e.what());
+    }
 }
 
 Replay Session::finishedRecording() const {

@@ -8,6 +8,7 @@
 #include "game/match.h"
 #include "game/replay.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,6 +23,10 @@ struct SessionOptions {
     std::uint64_t checkpointEvery = kDefaultCheckpointEvery;
     /// Replay file written at the end of every turn and of the match ("" = none).
     std::string recordFile;
+    /// Told why, when a save at a turn's end fails; the match goes on (the recording is
+    /// kept in memory and saved again at the next turn's end). Without it such a failure
+    /// throws std::runtime_error out of step(), as a headless run wants.
+    std::function<void(const std::string& why)> onSaveFailure;
     /// The computer plays every cannon (demos, golden replays), not only "cpu" ones.
     bool autoplay = false;
     /// The computer plays no cannon: people take every turn ("cpu" cannons included), or
@@ -62,6 +67,7 @@ class Session {
     void continueAs(const SessionOptions& options);
 
   private:
+    void saveAtTurnEnd();
     std::unique_ptr<Match> match_;
     SessionOptions options_;
     ComputerPlayer cpu_;

@@ -97,6 +97,10 @@ void Args::fail(const std::string& message) const {
                      " --help)");
 }
 
+void Args::refuse(const std::string& message) const {
+    throw UsageError("artillery " + verb_ + ": " + message);
+}
+
 bool Args::flag(const std::string& name) const {
     asked_.insert(name);
     return flagsGiven_.count(name) != 0;

@@ -20,8 +20,15 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// Exit codes shared by every verb.
-enum Exit { kOk = 0, kCheckFailed = 1, kBadInput = 2 };
+/// A failure during the work, after the input was accepted (a disk that fills while a
+/// replay is written, a folder removed under a run): the verb prints what() and exits 3.
+struct WorkError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// Exit codes shared by every verb: 1 only ever means that a check the verb made failed
+/// (a bad level for `check`, a diverged replay), never that the program did.
+enum Exit { kOk = 0, kCheckFailed = 1, kBadInput = 2, kWorkFailed = 3 };
 
 /// Decimal notation only: [+-] digits [. digits] [e [+-] digits], at least one digit in
 /// the mantissa. strtod alone would also take "0x10", "inf", "nan" and leading spaces.
@@ -59,6 +66,9 @@ class Args {
     /// ("--sped") are reported instead of silently ignored.
     void rejectUnknown() const;
     [[noreturn]] void fail(const std::string& message) const;
+    /// The same refusal without pointing at --help: for what the help cannot fix (a
+    /// folder that does not take files).
+    [[noreturn]] void refuse(const std::string& message) const;
 
   private:
     double parseNumber(const std::string& name, const std::string& raw, double lo, double hi,

@@ -6,7 +6,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <filesystem>
 #include <ostream>
 
 namespace game::cli {
@@ -48,18 +47,16 @@ int runGenerate(const Args& args, std::ostream& out) {
     def.difficulty = *d;
     const std::string file = outputFile(args);
     args.rejectUnknown();
-    // Before the solver's games: a folder that is not there fails at once.
-    const std::filesystem::path folder = std::filesystem::path(file).parent_path();
-    if (!folder.empty() && !std::filesystem::is_directory(folder))
-        throw UsageError("artillery generate: " + file + ": the folder " + folder.string() +
-                         " does not exist");
+    // Before the solver's games: a file that cannot be written is refused at once.
+    requireWritableFile(args, "output", file);
 
     const generate::Generated g = generate::generateLevel(def);
     if (g.playable) {
         try {
             writeFileAtomically(file, g.text);
         } catch (const std::runtime_error& e) {
-            throw UsageError(std::string("artillery generate: ") + e.what());
+            throw WorkError(std::string("artillery generate: the level was not written: ") +
+                            e.what());
         }
     }
     const std::string verdict =

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <memory>
+#include <optional>
 #include <ostream>
 
 namespace game::cli {
@@ -51,7 +53,8 @@ int runReplayVerify(const Args& args, std::ostream& out) {
                          {"checkpoints", v.checkpoints},
                          {"first_divergent_tick", v.firstDivergentTick ? nlohmann::json(*v.firstDivergentTick)
                                                                       : nlohmann::json(nullptr)},
-                         {"final_hash", hex(v.finalHash)}};
+                         {"final_hash", hex(v.finalHash)},
+                         {"warnings", v.ignored}};
         if (!v.ok) j["diverged"] = v.diverged;
         out << j.dump() << "\n";
     } else if (v.ok) {
@@ -61,139 +64,156 @@ int runReplayVerify(const Args& args, std::ostream& out) {
         out << "DIVERGED: " << file << " first differs at tick " << *v.firstDivergentTick
             << " in " << v.diverged << " (checked " << v.checkpoints << " checkpoints)\n";
     }
+    // A command the match refused changed nothing: the replay may verify, but it does
+    // not do what it seems to say (a weapon the level lacks, a fire out of turn).
+    if (!json)
+        for (const std::string& w : v.ignored)
+            out << "warning: " << file << ": " << w << "\n";
     return v.ok ? kOk : kCheckFailed;
 }
 
 int runRun(const Args& args, std::ostream& out) { return runHeadlessVerb(args, out, nullptr); }
 
-int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory* sinks,
-                    const VideoSinkFactory* videos) {
+namespace {
+
+/// What `artillery run` was asked for, read and checked before anything is simulated.
+struct RunRequest {
+    std::string levelFile;
+    std::optional<std::string> replayFile, commandsFile, png, video, record, audioFile;
+    bool hasTicks = false;
+    long long ticks = 0, every = 60, fps = 30;
+    bool audio = true, hud = true, autoplay = false, json = false;
+    std::string difficulty;
+    int width = 0, height = 0;
+};
+
+RunRequest readRunOptions(const Args& args, const FrameSinkFactory* sinks,
+                          const VideoSinkFactory* videos) {
+    RunRequest q;
     args.text("<positional>");
-    const auto replayFile = args.text("replay");
-    const auto commandsFile = args.text("commands");
-    const bool hasTicks = args.has("ticks");
-    const long long ticks = args.integer("ticks", 0, 1, static_cast<long long>(kMaxRunTicks));
-    const auto png = args.text("png");
-    const long long every = args.integer("every", 60, 1, 1000000);
-    const auto video = args.text("video");
-    const long long fps = args.integer("fps", 30, 1, 60);
-    const bool audio = !args.flag("no-audio");
+    q.replayFile = args.text("replay");
+    q.commandsFile = args.text("commands");
+    q.hasTicks = args.has("ticks");
+    q.ticks = args.integer("ticks", 0, 1, static_cast<long long>(kMaxRunTicks));
+    q.png = args.text("png");
+    q.every = args.integer("every", 60, 1, 1000000);
+    q.video = args.text("video");
+    q.fps = args.integer("fps", 30, 1, 60);
+    q.audio = !args.flag("no-audio");
     const std::string size = args.text("size", "1280x720");
-    const auto record = args.text("record");
-    const auto audioFile = args.text("audio");
-    const std::string difficulty = args.text("difficulty", "normal");
-    const bool hud = !args.flag("no-hud");
-    const bool autoplay = args.flag("autoplay");
-    const bool json = args.flag("json");
+    q.record = args.text("record");
+    q.audioFile = args.text("audio");
+    q.difficulty = args.text("difficulty", "normal");
+    q.hud = !args.flag("no-hud");
+    q.autoplay = args.flag("autoplay");
+    q.json = args.flag("json");
     args.rejectUnknown();
     if (args.positionals().size() != 1) args.fail("name one level file");
-    if (replayFile && commandsFile) args.fail("give --replay or --commands, not both");
-    if (replayFile && autoplay) args.fail("--autoplay plays new turns; a --replay already has its turns");
-    if (!difficultyFromName(difficulty)) args.fail("--difficulty expects easy, normal or hard, got '" + difficulty + "'");
-    int width = 0, height = 0;
-    if (std::sscanf(size.c_str(), "%dx%d", &width, &height) != 2 || width < 16 || height < 16 ||
-        width > 8192 || height > 8192)
+    q.levelFile = args.positionals()[0];
+    if (q.replayFile && q.commandsFile) args.fail("give --replay or --commands, not both");
+    if (q.replayFile && q.autoplay) args.fail("--autoplay plays new turns; a --replay already has its turns");
+    if (!difficultyFromName(q.difficulty)) args.fail("--difficulty expects easy, normal or hard, got '" + q.difficulty + "'");
+    if (std::sscanf(size.c_str(), "%dx%d", &q.width, &q.height) != 2 || q.width < 16 ||
+        q.height < 16 || q.width > 8192 || q.height > 8192)
         args.fail("--size expects WxH between 16x16 and 8192x8192, got '" + size + "'");
-    if (png && !sinks) args.fail("--png needs the renderer, which this build of the verb lacks");
-    if (png && video) args.fail("give --png or --video, not both");
-    if (!video && (args.has("fps") || !audio))
+    if (q.png && !sinks) args.fail("--png needs the renderer, which this build of the verb lacks");
+    if (q.png && q.video) args.fail("give --png or --video, not both");
+    if (!q.video && (args.has("fps") || !q.audio))
         args.fail("--fps and --no-audio describe a video; add --video FILE");
-    if (video && !videos)
+    if (q.video && !videos)
         args.fail("--video needs the renderer, which this build of the verb lacks");
-    if (audioFile)
-        if (const std::string why = audio::checkWavFile(*audioFile); !why.empty()) args.fail(why);
+    if (q.audioFile)
+        if (const std::string why = audio::checkWavFile(*q.audioFile); !why.empty()) args.fail(why);
+    return q;
+}
 
+/// Every file the run will write can be written: refused now, not after the simulation.
+void checkRunOutputs(const Args& args, const RunRequest& q) {
+    if (q.record) requireWritableFile(args, "record", *q.record);
+    if (q.audioFile) requireWritableFile(args, "audio", *q.audioFile);
+    if (q.video) requireWritableFile(args, "video", *q.video);
+    if (q.png) requireWritableFolder(args, "png", *q.png, true);
+}
+
+/// The level, and the commands of the replay or script with the session they ask for.
+HeadlessOptions loadRunInputs(const RunRequest& q, Level& level) {
     HeadlessOptions o;
-    o.session.difficulty = *difficultyFromName(difficulty);
-    o.session.autoplay = autoplay;
-    Level level;
+    o.session.difficulty = *difficultyFromName(q.difficulty);
+    o.session.autoplay = q.autoplay;
     try {
-        level = loadLevel(args.positionals()[0]);
-        if (replayFile) {
-            const Replay r = loadReplay(*replayFile);
+        level = loadLevel(q.levelFile);
+        if (q.replayFile) {
+            const Replay r = loadReplay(*q.replayFile);
             if (r.levelHash != level.contentHash)
-                throw LoadError(*replayFile, "$.level.content_hash",
+                throw LoadError(*q.replayFile, "$.level.content_hash",
                                 "this replay was recorded on another level or another version of it "
-                                "(replay: " + r.levelHash + ", " + args.positionals()[0] + ": " +
+                                "(replay: " + r.levelHash + ", " + q.levelFile + ": " +
                                     level.contentHash + ")");
             o.commands = r.commands;
             o.session.hotseat = true; // the computer's turns are in the recording
             o.session.difficulty = *difficultyFromName(r.difficulty);
             o.session.cpuSeed = r.cpuSeed;
-            if (!hasTicks) o.ticks = r.ticks;
+            if (!q.hasTicks) o.ticks = r.ticks;
         }
-        if (commandsFile) o.commands = loadCommands(*commandsFile);
+        if (q.commandsFile) o.commands = loadCommands(*q.commandsFile);
     } catch (const LoadError& e) {
         throw UsageError(e.what());
     }
-    if (hasTicks) o.ticks = static_cast<std::uint64_t>(ticks);
-    if (record) o.session.recordFile = *record;
-    std::unique_ptr<FrameSink> sink;
-    if (png) {
-        std::string why;
-        sink = (*sinks)(*png, width, height, hud, why);
-        if (!sink) args.fail("cannot render: " + why);
-        o.sink = sink.get();
-        o.every = static_cast<std::uint64_t>(every);
+    if (q.hasTicks) o.ticks = static_cast<std::uint64_t>(q.ticks);
+    if (q.record) o.session.recordFile = *q.record;
+    return o;
+}
+
+/// The video encoder for --video, with its own synthesizer for the sound track: heard
+/// after every tick and pulled by the encoder in step with the pictures.
+std::unique_ptr<VideoSink> openVideo(const Args& args, const RunRequest& q,
+                                     const VideoSinkFactory& videos,
+                                     audio::Synthesizer& videoSound) {
+    VideoRequest request;
+    request.file = *q.video;
+    request.width = q.width;
+    request.height = q.height;
+    request.fps = static_cast<int>(q.fps);
+    request.hud = q.hud;
+    request.audio = q.audio;
+    if (q.audio) {
+        request.afterTick = [&videoSound](const Match& m) { videoSound.observe(m); };
+        request.sound = [&videoSound](float* interleaved, std::size_t frames) {
+            videoSound.render(interleaved, frames);
+        };
     }
-    audio::SoundTrack soundTrack;
-    if (audioFile) o.listeners.push_back(&soundTrack);
-    // The video's sound: a synthesizer of its own, heard after every tick and pulled by
-    // the encoder in step with the pictures.
-    audio::Synthesizer videoSound;
-    std::unique_ptr<VideoSink> videoSink;
-    if (video) {
-        VideoRequest request;
-        request.file = *video;
-        request.width = width;
-        request.height = height;
-        request.fps = static_cast<int>(fps);
-        request.hud = hud;
-        request.audio = audio;
-        if (audio) {
-            request.afterTick = [&videoSound](const Match& m) { videoSound.observe(m); };
-            request.sound = [&videoSound](float* interleaved, std::size_t frames) {
-                videoSound.render(interleaved, frames);
-            };
-        }
-        std::string why;
-        videoSink = (*videos)(request, why);
-        if (!videoSink) args.fail(why);
-        o.sink = videoSink.get();
-        o.every = 1; // the sink keeps the video's clock and draws when a frame is due
-    }
-    const HeadlessSummary s = runHeadless(level, o);
-    if (videoSink)
-        if (const std::string why = videoSink->finish(); !why.empty()) throw UsageError(why);
-    if (audioFile) {
-        try {
-            soundTrack.write(*audioFile);
-        } catch (const std::exception& e) {
-            throw UsageError(e.what());
-        }
-    }
-    if (json) {
-        nlohmann::json j{{"ticks", s.ticks},     {"final_hash", hex(s.finalHash)}, {"score", s.score},
-                         {"shots", s.shots},     {"over", s.over},                 {"winner", s.winner},
-                         {"events", eventsJson(s.events)}, {"sim_ms", s.simMs},   {"render_ms", s.renderMs}};
-        if (videoSink)
-            j["video"] = {{"file", *video},
-                          {"codec", videoSink->codec()},
-                          {"frames", videoSink->frames()},
-                          {"seconds", videoSink->seconds()}};
-        if (audioFile)
-            j["audio"] = {{"file", *audioFile},
-                          {"frames", soundTrack.frames()},
-                          {"seconds", soundTrack.seconds()}};
-        out << j.dump() << "\n";
-        return kOk;
-    }
+    std::string why;
+    std::unique_ptr<VideoSink> sink = videos(request, why);
+    if (!sink) args.fail(why);
+    return sink;
+}
+
+void printRunJson(std::ostream& out, const RunRequest& q, const HeadlessSummary& s,
+                  const VideoSink* video, const audio::SoundTrack& soundTrack) {
+    nlohmann::json j{{"ticks", s.ticks},     {"final_hash", hex(s.finalHash)}, {"score", s.score},
+                     {"shots", s.shots},     {"over", s.over},                 {"winner", s.winner},
+                     {"events", eventsJson(s.events)}, {"sim_ms", s.simMs},   {"render_ms", s.renderMs}};
+    if (video)
+        j["video"] = {{"file", *q.video},
+                      {"codec", video->codec()},
+                      {"frames", video->frames()},
+                      {"seconds", video->seconds()}};
+    if (q.audioFile)
+        j["audio"] = {{"file", *q.audioFile},
+                      {"frames", soundTrack.frames()},
+                      {"seconds", soundTrack.seconds()}};
+    out << j.dump() << "\n";
+}
+
+void printRunText(std::ostream& out, const RunRequest& q, const Level& level,
+                  const HeadlessSummary& s, const VideoSink* video,
+                  const audio::SoundTrack& soundTrack) {
     char line[200];
     std::snprintf(
         line, sizeof line, "%s: %llu ticks (%.1f s simulated) in %.1f ms%s\n", level.name.c_str(),
         static_cast<unsigned long long>(s.ticks), static_cast<double>(s.ticks) * (1.0 / 120.0),
         s.simMs,
-        png || video
+        q.png || q.video
             ? (", rendering " + std::to_string(static_cast<int>(s.renderMs)) + " ms").c_str()
             : "");
     out << line;
@@ -207,18 +227,71 @@ int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory*
     std::snprintf(line, sizeof line, "score %d, %d shot(s), %s, final hash %s\n", s.score, s.shots,
                   s.over ? "match over" : "match still on", hex(s.finalHash).c_str());
     out << line;
-    if (record) out << "recorded " << *record << "\n";
-    if (png) out << "frames in " << *png << "\n";
-    if (audioFile) {
+    if (q.record) out << "recorded " << *q.record << "\n";
+    if (q.png) out << "frames in " << *q.png << "\n";
+    if (q.audioFile) {
         std::snprintf(line, sizeof line, "sound in %s (16-bit PCM WAV, stereo 48 kHz, %.2f s)\n",
-                      audioFile->c_str(), soundTrack.seconds());
+                      q.audioFile->c_str(), soundTrack.seconds());
         out << line;
     }
-    if (videoSink) {
-        std::snprintf(line, sizeof line, "video in %s (%s, %lld frames, %.2f s)\n", video->c_str(),
-                      videoSink->codec(), videoSink->frames(), videoSink->seconds());
+    if (video) {
+        std::snprintf(line, sizeof line, "video in %s (%s, %lld frames, %.2f s)\n", q.video->c_str(),
+                      video->codec(), video->frames(), video->seconds());
         out << line;
     }
+}
+
+/// A write that fails once the run has started (the replay at a turn's end, a frame, the
+/// sound track, the video) is a failure of the work, exit 3: the input was fine.
+[[noreturn]] void failedWhileRunning(const std::string& what, const std::string& why) {
+    throw WorkError("artillery run: " + what + ": " + why);
+}
+
+} // namespace
+
+int runHeadlessVerb(const Args& args, std::ostream& out, const FrameSinkFactory* sinks,
+                    const VideoSinkFactory* videos) {
+    const RunRequest q = readRunOptions(args, sinks, videos);
+    checkRunOutputs(args, q);
+    Level level;
+    HeadlessOptions o = loadRunInputs(q, level);
+    std::unique_ptr<FrameSink> sink;
+    if (q.png) {
+        std::string why;
+        sink = (*sinks)(*q.png, q.width, q.height, q.hud, why);
+        if (!sink) args.fail("cannot render: " + why);
+        o.sink = sink.get();
+        o.every = static_cast<std::uint64_t>(q.every);
+    }
+    audio::SoundTrack soundTrack;
+    if (q.audioFile) o.listeners.push_back(&soundTrack);
+    audio::Synthesizer videoSound;
+    std::unique_ptr<VideoSink> videoSink;
+    if (q.video) {
+        videoSink = openVideo(args, q, *videos, videoSound);
+        o.sink = videoSink.get();
+        o.every = 1; // the sink keeps the video's clock and draws when a frame is due
+    }
+    HeadlessSummary s;
+    try {
+        s = runHeadless(level, o);
+    } catch (const std::exception& e) {
+        failedWhileRunning("the run stopped", e.what());
+    }
+    if (videoSink)
+        if (const std::string why = videoSink->finish(); !why.empty())
+            failedWhileRunning("the video was not written", why);
+    if (q.audioFile) {
+        try {
+            soundTrack.write(*q.audioFile);
+        } catch (const std::exception& e) {
+            failedWhileRunning("the sound track was not written", e.what());
+        }
+    }
+    if (q.json)
+        printRunJson(out, q, s, videoSink.get(), soundTrack);
+    else
+        printRunText(out, q, level, s, videoSink.get(), soundTrack);
     return kOk;
 }
 

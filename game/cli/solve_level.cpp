@@ -55,6 +55,7 @@ int runSolveLevel(const Args& args, std::ostream& out) {
     if (args.positionals().size() != 1)
         args.fail("name one level file, e.g. artillery solve-level levels/01_earth_basics.json");
     const std::string file = args.positionals()[0];
+    if (record) requireWritableFile(args, "record", *record);
     Level level;
     try {
         level = loadLevel(file);
@@ -64,7 +65,14 @@ int runSolveLevel(const Args& args, std::ostream& out) {
     if (level.mode == Mode::Duel)
         return solveDuel(file, level, json, require, record.has_value(), out);
     const SolveResult r = solveLevel(level);
-    if (record && r.practice) saveReplay(*record, replayOf(level, r));
+    if (record && r.practice) {
+        try {
+            saveReplay(*record, replayOf(level, r));
+        } catch (const std::runtime_error& e) {
+            throw WorkError(std::string("artillery solve-level: the replay was not written: ") +
+                            e.what());
+        }
+    }
     if (json) {
         nlohmann::json j{{"stars", r.stars},
                          {"score", r.score},

@@ -14,61 +14,105 @@
 namespace game::cli {
 
 namespace {
+
 nlohmann::json pair(phys::Vec2 v) { return nlohmann::json::array({v.x, v.y}); }
+
+/// What `trajectory` was asked for.
+struct TrajectoryRequest {
+    phys::Vec2 from, wind;
+    double speed = 0, angle = 0, time = 0, dt = 0, g = 0, mass = 0, diameter = 0, cd = 0, rho = 0;
+    phys::Integrator method = phys::Integrator::VelocityVerlet;
+    bool drag = false, json = false;
+};
+
+TrajectoryRequest readTrajectoryOptions(const Args& args) {
+    TrajectoryRequest q;
+    q.from = args.vec2("from", {0.0, 0.0});
+    q.speed = args.requiredNumber("speed", 0.0, 1e6, "m/s");
+    q.angle = args.requiredNumber("angle", -360.0, 360.0, "degrees");
+    q.time = args.requiredNumber("time", 0.0, 1e6, "s");
+    q.method = integratorOption(args, phys::Integrator::VelocityVerlet);
+    q.dt = args.number("dt", 0.01, 1e-7, 1.0, "s");
+    q.g = gravityOption(args);
+    q.drag = args.has("diameter") || args.has("cd") || args.has("air-density") || args.has("wind");
+    q.mass = args.number("mass", 1.0, 1e-9, 1e9, "kg");
+    q.diameter = args.number("diameter", 0.1, 1e-6, 100.0, "m");
+    q.cd = args.number("cd", 0.47, 0.0, 100.0, "");
+    q.rho = args.number("air-density", phys::kAirDensitySeaLevel, 0.0, 1e4, "kg/m^3");
+    q.wind = args.vec2("wind", {0.0, 0.0});
+    q.json = args.flag("json");
+    args.rejectUnknown();
+    return q;
+}
+
+/// The particle after `steps` steps: position and velocity.
+std::pair<phys::Vec2, phys::Vec2> simulateShot(const TrajectoryRequest& q, const phys::WorldDef& def,
+                                                phys::Vec2 v0, long long steps) {
+    phys::World world(def);
+    phys::ParticleDef pd;
+    pd.position = q.from;
+    pd.velocity = v0;
+    pd.mass = q.mass;
+    pd.radius = 0.5 * q.diameter;
+    pd.dragCoefficient = q.cd;
+    const auto id = world.particles.add(pd);
+    for (long long i = 0; i < steps; ++i) world.step();
+    return {world.particles.position(id), world.particles.velocity(id)};
+}
+
+void printTrajectoryText(const TrajectoryRequest& q, long long steps, double simulated,
+                         phys::Vec2 p, phys::Vec2 v, const phys::BallisticState& exact, double err,
+                         std::ostream& out) {
+    char line[200];
+    std::snprintf(line, sizeof line, "%s, dt = %g s, %lld steps, t = %.10g s%s\n",
+                  phys::info(q.method).name, q.dt, steps, simulated,
+                  std::abs(simulated - q.time) > 1e-9 * std::max(1.0, q.time)
+                      ? " (rounded to a whole number of steps)"
+                      : "");
+    out << line;
+    std::snprintf(line, sizeof line, "  simulated    position (%.10g, %.10g) m   velocity (%.10g, %.10g) m/s\n",
+                  p.x, p.y, v.x, v.y);
+    out << line;
+    if (!q.drag) {
+        std::snprintf(line, sizeof line,
+                      "  closed form  position (%.10g, %.10g) m   velocity (%.10g, %.10g) m/s\n",
+                      exact.position.x, exact.position.y, exact.velocity.x, exact.velocity.y);
+        out << line;
+        std::snprintf(line, sizeof line, "  position error %.6g m\n", err);
+        out << line;
+    } else {
+        out << "  (drag or wind acts: there is no closed form to compare with)\n";
+    }
+}
+
 } // namespace
 
 int runTrajectory(const Args& args, std::ostream& out) {
-    const phys::Vec2 from = args.vec2("from", {0.0, 0.0});
-    const double speed = args.requiredNumber("speed", 0.0, 1e6, "m/s");
-    const double angle = args.requiredNumber("angle", -360.0, 360.0, "degrees");
-    const double time = args.requiredNumber("time", 0.0, 1e6, "s");
-    const phys::Integrator method = integratorOption(args, phys::Integrator::VelocityVerlet);
-    const double dt = args.number("dt", 0.01, 1e-7, 1.0, "s");
-    const double g = gravityOption(args);
-    const bool drag = args.has("diameter") || args.has("cd") || args.has("air-density") ||
-                      args.has("wind");
-    const double mass = args.number("mass", 1.0, 1e-9, 1e9, "kg");
-    const double diameter = args.number("diameter", 0.1, 1e-6, 100.0, "m");
-    const double cd = args.number("cd", 0.47, 0.0, 100.0, "");
-    const double rho = args.number("air-density", phys::kAirDensitySeaLevel, 0.0, 1e4, "kg/m^3");
-    const phys::Vec2 wind = args.vec2("wind", {0.0, 0.0});
-    const bool json = args.flag("json");
-    args.rejectUnknown();
-
-    const double stepsExact = time / dt;
+    const TrajectoryRequest q = readTrajectoryOptions(args);
+    const double stepsExact = q.time / q.dt;
     if (stepsExact > 1e8) args.fail("--time / --dt asks for more than 1e8 steps");
     const long long steps = std::llround(stepsExact);
-    const double simulated = static_cast<double>(steps) * dt;
+    const double simulated = static_cast<double>(steps) * q.dt;
 
     phys::WorldDef def;
     def.model = phys::ModelPolicy::Integrate; // the verb compares the integrator with the closed form
-    def.tickSeconds = dt;
-    def.integrator = method;
-    def.forces.gravity = {0.0, -g};
-    if (drag) {
+    def.tickSeconds = q.dt;
+    def.integrator = q.method;
+    def.forces.gravity = {0.0, -q.g};
+    if (q.drag) {
         def.forces.drag = phys::DragModel::Quadratic;
-        def.forces.airDensity = rho;
-        def.forces.wind = wind;
+        def.forces.airDensity = q.rho;
+        def.forces.wind = q.wind;
     }
-    phys::World world(def);
-    const double rad = angle * std::numbers::pi / 180.0;
-    const phys::Vec2 v0{speed * std::cos(rad), speed * std::sin(rad)};
-    phys::ParticleDef pd;
-    pd.position = from;
-    pd.velocity = v0;
-    pd.mass = mass;
-    pd.radius = 0.5 * diameter;
-    pd.dragCoefficient = cd;
-    const auto id = world.particles.add(pd);
-    for (long long i = 0; i < steps; ++i) world.step();
-
-    const phys::Vec2 p = world.particles.position(id), v = world.particles.velocity(id);
-    const bool exactKnown = !drag;
-    const auto exact = phys::ballisticState(from, v0, def.forces.gravity, simulated);
+    const double rad = q.angle * std::numbers::pi / 180.0;
+    const phys::Vec2 v0{q.speed * std::cos(rad), q.speed * std::sin(rad)};
+    const auto [p, v] = simulateShot(q, def, v0, steps);
+    const bool exactKnown = !q.drag;
+    const auto exact = phys::ballisticState(q.from, v0, def.forces.gravity, simulated);
     const double err = length(p - exact.position);
 
-    if (json) {
-        nlohmann::json j{{"integrator", phys::info(method).name},
+    if (q.json) {
+        nlohmann::json j{{"integrator", phys::info(q.method).name},
                          {"position", pair(p)},
                          {"velocity", pair(v)},
                          {"steps", steps},
@@ -80,26 +124,7 @@ int runTrajectory(const Args& args, std::ostream& out) {
         out << j.dump() << "\n";
         return kOk;
     }
-    char line[200];
-    std::snprintf(line, sizeof line, "%s, dt = %g s, %lld steps, t = %.10g s%s\n",
-                  phys::info(method).name, dt, steps, simulated,
-                  std::abs(simulated - time) > 1e-9 * std::max(1.0, time)
-                      ? " (rounded to a whole number of steps)"
-                      : "");
-    out << line;
-    std::snprintf(line, sizeof line, "  simulated    position (%.10g, %.10g) m   velocity (%.10g, %.10g) m/s\n",
-                  p.x, p.y, v.x, v.y);
-    out << line;
-    if (exactKnown) {
-        std::snprintf(line, sizeof line,
-                      "  closed form  position (%.10g, %.10g) m   velocity (%.10g, %.10g) m/s\n",
-                      exact.position.x, exact.position.y, exact.velocity.x, exact.velocity.y);
-        out << line;
-        std::snprintf(line, sizeof line, "  position error %.6g m\n", err);
-        out << line;
-    } else {
-        out << "  (drag or wind acts: there is no closed form to compare with)\n";
-    }
+    printTrajectoryText(q, steps, simulated, p, v, exact, err, out);
     return kOk;
 }
 

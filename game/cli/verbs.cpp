@@ -1,5 +1,7 @@
 #include "game/cli/verbs.h"
 
+#include "game/files/output_path.h"
+#include "game/files/text_file.h"
 #include "game/settings.h"
 #include "physics/forces.h"
 
@@ -46,6 +48,10 @@ events, the score and the final state hash.
                       "winner":i,"events":[...],"sim_ms":..,"render_ms":..}, with
                      --video also "video":{"file":..,"codec":..,"frames":n,"seconds":..},
                      --audio also "audio":{"file":..,"frames":n,"seconds":..}
+
+Exit code: 0 ok, 2 bad input (a file to write that cannot be written is refused before
+the run: its folder missing, no folder, or taking no new file), 3 a file could not be
+written while the run went on (the replay at a turn's end, a frame, the sound, the video).
 )") +
         "\nSettings a commands file's {\"cmd\": \"set\", \"name\": .., \"value\": ..} takes:\n" +
         settingsHelp();
@@ -191,11 +197,15 @@ Exit code: 0 when every file is valid, 1 when any is not, 2 on bad usage.
 Re-simulates the recorded game from its level, seed and commands and compares the
 state hash at every checkpoint (every 120 ticks by default) and at the end.
 
+A command the match refused as it re-ran them (a weapon the level lacks, a fire out of
+turn) changed nothing; each is reported as a warning ("warning: FILE: tick 120: select
+'nuke' refused: ..."), which does not change the exit code.
+
 Exit code: 0 when every checkpoint matches, 1 at the first divergent tick (and what
 diverged: particles, bodies or game), 2 when the file or its level cannot be read or
 the level has changed since the recording.
   --json   {"ok":bool,"ticks":n,"checkpoints":n,"first_divergent_tick":t|null,
-            "final_hash":"hex"}
+            "final_hash":"hex","warnings":[..]}
 )",
      {},
      runReplayVerify},
@@ -217,7 +227,8 @@ to). A sandbox has nothing to solve: it says so and exits 0.
                      when a side of a duel cannot hit the other
                      (a duel's --json: {"mode":"duel","hits":[b,b],"playable":b})
 
-Exit code: 0 ok, 1 fewer stars than --require-stars, 2 bad input.
+Exit code: 0 ok, 1 fewer stars than --require-stars, 2 bad input (a --record FILE that
+cannot be written included), 3 the replay could not be written after the search.
 )",
      {},
      runSolveLevel},
@@ -241,7 +252,9 @@ seed is tried (at most 8), and the output says which candidate it took.
                       "candidates":n,"playable":b,"content_hash":"hex",
                       "stars":s | "hits":[b,b]}
 
-Exit code: 0 written, 1 no playable candidate (nothing written), 2 bad input.
+Exit code: 0 written, 1 no playable candidate (nothing written), 2 bad input (an output
+file that cannot be written is refused before the search), 3 the file could not be
+written after it.
 )",
      {},
      runGenerate},
@@ -268,6 +281,17 @@ phys::Integrator integratorOption(const Args& args, phys::Integrator fallback) {
     if (auto id = phys::integratorFromName(*name)) return *id;
     args.fail("--integrator expects one of " + phys::integratorNameList() + ", got '" + *name +
               "'");
+}
+
+void requireWritableFile(const Args& args, const std::string& option, const std::string& file) {
+    if (const std::string why = unwritableFile(file); !why.empty())
+        args.refuse("--" + option + ": cannot write '" + printable(file) + "': " + why);
+}
+
+void requireWritableFolder(const Args& args, const std::string& option, const std::string& folder,
+                           bool create) {
+    if (const std::string why = unwritableFolder(folder, create); !why.empty())
+        args.refuse("--" + option + ": cannot write into '" + printable(folder) + "': " + why);
 }
 
 } // namespace game::cli

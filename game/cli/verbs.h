@@ -29,6 +29,13 @@ std::span<const Verb> verbs();
 double gravityOption(const Args& args);
 /// --integrator NAME; `fallback` when absent.
 phys::Integrator integratorOption(const Args& args, phys::Integrator fallback);
+/// Refuses (bad input, before any work) an output file of `--option` that cannot be
+/// written: a missing folder, a path that is no folder, a folder that takes no new file
+/// (game/files/output_path.h).
+void requireWritableFile(const Args& args, const std::string& option, const std::string& file);
+/// The same for an output folder; with `create` it is made first, as the writer would.
+void requireWritableFolder(const Args& args, const std::string& option, const std::string& folder,
+                           bool create);
 
 int runSolve(const Args& args, std::ostream& out);
 int runTrajectory(const Args& args, std::ostream& out);

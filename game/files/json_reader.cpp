@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 namespace game {
@@ -178,7 +179,12 @@ long long Node::integer(long long lo, long long hi) const {
     const std::string range =
         "a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
     if (!value_.is_number_integer()) fail("expected " + range + ", got " + describe());
-    if (value_.is_number_unsigned() && value_.get<unsigned long long>() > 9e18)
+    // An unsigned past the largest long long would wrap in get<long long>(); every one up
+    // to it is taken exactly (the 9e18 this compared with was a double below 2^63 - 1, the
+    // largest seed a level may name).
+    if (value_.is_number_unsigned() &&
+        value_.get<unsigned long long>() >
+            static_cast<unsigned long long>(std::numeric_limits<long long>::max()))
         fail("expected " + range + ", got " + describe());
     const long long v = value_.get<long long>();
     if (v < lo || v > hi) fail("expected " + range + ", got " + describe());

@@ -1,7 +1,9 @@
 #include "game/files/text_file.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdint>
+#include <cstring>
 #include <cstdio>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -117,26 +119,35 @@ std::string readFile(const std::string& file) {
 
 void writeFileAtomically(const std::string& path, const std::string& text) {
     const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd < 0) throw std::runtime_error(path + ": cannot create " + tmp);
+    // Each failure names the file and the system's reason (no space left, a file size
+    // limit, permission), and removes the temporary file: the target is untouched.
+    auto failed = [&](const std::string& what, int error) {
+        ::unlink(tmp.c_str());
+        throw std::runtime_error(path + ": " + what + ": " + std::strerror(error));
+    };
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        const int error = errno;
+        throw std::runtime_error(path + ": cannot create " + tmp + ": " + std::strerror(error));
+    }
     std::size_t done = 0;
     while (done < text.size()) {
         const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR) continue;
         if (n <= 0) {
+            const int error = n < 0 ? errno : ENOSPC;
             ::close(fd);
-            ::unlink(tmp.c_str());
-            throw std::runtime_error(path + ": write failed");
+            failed("writing failed", error);
         }
         done += static_cast<std::size_t>(n);
     }
-    if (::fsync(fd) != 0 || ::close(fd) != 0) {
-        ::unlink(tmp.c_str());
-        throw std::runtime_error(path + ": flushing to disk failed");
+    if (::fsync(fd) != 0) {
+        const int error = errno;
+        ::close(fd);
+        failed("flushing to disk failed", error);
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        ::unlink(tmp.c_str());
-        throw std::runtime_error(path + ": cannot replace the file");
-    }
+    if (::close(fd) != 0) failed("flushing to disk failed", errno);
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) failed("cannot replace the file", errno);
 }
 
 std::string contentHash(const std::string& bytes) {

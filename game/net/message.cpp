@@ -159,12 +159,14 @@ void writePayload(Writer& w, const Message& m) {
         w.u8(m.spectator ? 1 : 0);
         w.u32(m.commandIndex);
         w.u32(m.tick);
+        w.str(m.token);
         break;
     case MessageType::Welcome:
         w.u8(static_cast<std::uint8_t>(m.cannon));
         w.str(m.name);
         w.u32(m.commandIndex);
         w.u32(m.tick);
+        w.str(m.token);
         break;
     case MessageType::Refuse:
     case MessageType::Bye:
@@ -217,6 +219,7 @@ bool readPayload(Reader& r, Message& m, std::string& error) {
         m.spectator = s == 1;
         m.commandIndex = r.u32();
         m.tick = r.u32();
+        m.token = r.str();
         break;
     }
     case MessageType::Welcome:
@@ -224,6 +227,7 @@ bool readPayload(Reader& r, Message& m, std::string& error) {
         m.name = r.str();
         m.commandIndex = r.u32();
         m.tick = r.u32();
+        m.token = r.str();
         break;
     case MessageType::Refuse:
     case MessageType::Bye:
@@ -288,12 +292,16 @@ std::string validate(const Message& m) {
         if (!(e = field("name", m.name, kMaxNameBytes)).empty()) return e;
         if (m.commandIndex > kMaxCommands) return what + ": resume command count is too large";
         if (m.tick > kMaxCommandTick) return what + ": resume tick is too large";
+        if (!m.token.empty() && !hexDigits(m.token))
+            return what + ": seat token must be 16 lowercase hex digits or empty";
         return "";
     case MessageType::Welcome:
         if (m.cannon < -1 || m.cannon > 1) return what + ": cannon must be -1, 0 or 1";
         if (!(e = field("name", m.name, kMaxNameBytes)).empty()) return e;
         if (m.commandIndex > kMaxCommands) return what + ": command count is too large";
         if (m.tick > kMaxCommandTick) return what + ": tick is too large";
+        if (!m.token.empty() && !hexDigits(m.token))
+            return what + ": seat token must be 16 lowercase hex digits or empty";
         return "";
     case MessageType::Refuse:
     case MessageType::Bye:

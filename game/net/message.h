@@ -15,11 +15,14 @@
 //              bare name looked up in the joiner's own level folder), host's name,
 //              checkpoint interval
 //   Hello      peer -> host: program version, level content hash it found, its name,
-//              spectator or player, and resume: the number of match commands and the
-//              tick it already has (0, 0 for a fresh join)
+//              spectator or player, resume: the number of match commands and the
+//              tick it already has (0, 0 for a fresh join), and its seat token ("" for
+//              a first join; a rejoin presents the one the host gave)
 //   Welcome    host -> peer: its cannon (-1 for a spectator), the other player's name,
 //              how many commands the host holds and its tick (a rejoining peer
-//              replays the stream up to there before it plays again)
+//              replays the stream up to there before it plays again), and the seat's
+//              token (16 hex digits, secret: a name alone never takes a seat; "" for a
+//              spectator)
 //   Refuse     host -> peer: why the join was refused (version or level differ, full)
 //   Command    one match command at a tick: its index in the match's command list, the
 //              player whose command it is, kind, number, text (select's projectile)
@@ -42,9 +45,9 @@
 
 namespace game::net {
 
-inline constexpr std::uint8_t kProtocolVersion = 1;
+inline constexpr std::uint8_t kProtocolVersion = 2;
 /// The program version both sides must run (the simulation's bits depend on it).
-inline constexpr const char* kProgramVersion = "artillery 0.17 (replay format 1)";
+inline constexpr const char* kProgramVersion = "artillery 0.18 (replay format 1)";
 /// Largest packet either side accepts; a longer one is refused before decoding.
 inline constexpr std::size_t kMaxMessageBytes = 512;
 inline constexpr std::size_t kHeaderBytes = 6;
@@ -88,6 +91,7 @@ struct Message {
     double number = 0.0;                               ///< Command: aim angle (deg) or power (m/s)
     double angleDeg = 0.0, speedMps = 0.0;             ///< Aiming
     std::string text;                                  ///< Command: select's projectile
+    std::string token; ///< Hello: the seat token a rejoin presents; Welcome: the seat's
     std::uint64_t particles = 0, bodies = 0, game = 0; ///< Checkpoint
 };
 

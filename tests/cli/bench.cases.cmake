@@ -8,7 +8,7 @@ cli_test(bench_unknown_subcommand 2 "unknown bench 'speed'" "bench;speed")
 cli_test(bench_bad_scene 2 "--scene expects one of projectile-drag, spring, orbit, pendulum, cloth \\(got 'moon'\\)"
          "bench;work-precision;--scene;moon;--csv;${BENCH_OUT}/x.csv;--png;${BENCH_OUT}/x.png")
 cli_test(bench_missing_csv 2 "--csv FILE is required" "bench;stability;--png;${BENCH_OUT}/x.png")
-cli_test(bench_missing_folder 2 "--png: folder '/no/such/folder' does not exist"
+cli_test(bench_missing_folder 2 "--png: cannot write '/no/such/folder/s.png': the folder '/no/such/folder' does not exist"
          "bench;scaling;--csv;${BENCH_OUT}/x.csv;--png;/no/such/folder/s.png")
 cli_test(bench_full_and_quick 2 "--full and --quick cannot be combined"
          "bench;stability;--full;--quick;--csv;${BENCH_OUT}/x.csv;--png;${BENCH_OUT}/x.png")

@@ -20,7 +20,7 @@ cli_test(generate_bad_difficulty 2 "--difficulty expects easy, normal or hard, g
 cli_test(generate_no_output 2 "name the output file with -o FILE" "generate;--seed;1;--mode;duel")
 cli_test(generate_o_without_file 2 "-o needs a file name" "generate;--seed;1;--mode;duel;-o")
 cli_test(generate_unknown_option 2 "unknown option --sed" "generate;--seed;1;--sed;2;--mode;duel;-o;x.json")
-cli_test(generate_no_folder 2 "/nonexistent/dir/x.json: the folder /nonexistent/dir does not exist"
+cli_test(generate_no_folder 2 "--output: cannot write '/nonexistent/dir/x.json': the folder '/nonexistent/dir' does not exist"
          "generate;--seed;1;--mode;duel;--difficulty;easy;-o;/nonexistent/dir/x.json")
-cli_test(generate_unwritable 2 "/proc/x.json: cannot create"
+cli_test(generate_unwritable 2 "--output: cannot write '/proc/x.json': the folder '/proc' does not take new files"
          "generate;--seed;1;--mode;duel;--difficulty;easy;-o;/proc/x.json")

@@ -7,7 +7,7 @@ cli_test(run_video_gif 0 "video in .*run_video\\.gif \\(gif, 10 frames, 1\\.00 s
          "run;${PROJECT_SOURCE_DIR}/levels/01_earth_basics.json;--ticks;120;--video;${CMAKE_CURRENT_BINARY_DIR}/run_video.gif;--fps;10;--size;96x54")
 cli_test(run_video_bad_extension 2 "unknown format '\\.avi'; the file name must end in \\.mp4 or \\.gif"
          "run;${PROJECT_SOURCE_DIR}/levels/01_earth_basics.json;--ticks;10;--video;${CMAKE_CURRENT_BINARY_DIR}/run_video.avi")
-cli_test(run_video_unwritable 2 "cannot write '/nonexistent-folder/run_video\\.mp4\\.part'"
+cli_test(run_video_unwritable 2 "--video: cannot write '/nonexistent-folder/run_video\\.mp4': the folder '/nonexistent-folder' does not exist"
          "run;${PROJECT_SOURCE_DIR}/levels/01_earth_basics.json;--ticks;10;--video;/nonexistent-folder/run_video.mp4")
 cli_test(run_video_odd_size 2 "even in both"
          "run;${PROJECT_SOURCE_DIR}/levels/01_earth_basics.json;--ticks;10;--video;${CMAKE_CURRENT_BINARY_DIR}/run_video_odd.mp4;--size;161x90")

@@ -10,6 +10,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <utility>
+#include <vector>
 
 namespace fs = std::filesystem;
 using namespace game;
@@ -24,6 +26,17 @@ std::string refusal(const std::string& text) {
         return e.what();
     }
     return "accepted";
+}
+
+/// A levels folder of this test's own holding shipped levels, each under the name given:
+/// {shipped file in levels/, name in the folder}.
+fs::path levelsFolder(const std::string& name,
+                      const std::vector<std::pair<std::string, std::string>>& levels) {
+    const fs::path dir = fs::temp_directory_path() / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    for (const auto& [shipped, as] : levels) fs::copy_file(kSource / "levels" / shipped, dir / as);
+    return dir;
 }
 
 /// Two chapters of two levels; the second opens with 4 stars in the first.
@@ -68,12 +81,10 @@ TEST(Campaign, EveryChapterLevelTeachesOneIdea) {
 }
 
 TEST(Campaign, ProblemsNameTheFileAndPath) {
-    const fs::path dir = fs::temp_directory_path() / "artillery-campaign-test";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    fs::copy_file(kSource / "levels/01_earth_basics.json", dir / "01_earth_basics.json");
-    fs::copy_file(kSource / "levels/02_moon.json", dir / "02_moon.json");
-    fs::copy_file(kSource / "levels/11_sandbox.json", dir / "11_sandbox.json");
+    const fs::path dir = levelsFolder("artillery-campaign-test",
+                                      {{"01_earth_basics.json", "01_earth_basics.json"},
+                                       {"02_moon.json", "02_moon.json"},
+                                       {"11_sandbox.json", "11_sandbox.json"}});
     const Campaign c = parseCampaign("c.json", R"({"format": 1, "chapters": [
         {"id": "a", "title": "A", "lesson": "l", "formula": "f",
          "levels": ["01_earth_basics.json", "99_missing.json"]},
@@ -173,4 +184,45 @@ TEST(Campaign, NextLevelGoesOnAcrossChapters) {
     EXPECT_FALSE(nextLevel(c, "4.json")) << "the last level";
     EXPECT_FALSE(nextLevel(c, "sandbox.json")) << "outside the chapters";
     EXPECT_FALSE(findLevel(c, "5.json"));
+}
+
+// A chapter that names a level the folder lacks: `check` refuses the campaign, and the
+// game still plays it honestly. The missing level is reported as data (chapter, level,
+// file, why) for the level select to show, and it locks nothing: the level after it
+// opens as if it were cleared, and its stars are not asked of the chapter.
+TEST(Campaign, AMissingLevelIsNamedAndLocksNothing) {
+    const fs::path dir = levelsFolder("artillery-campaign-missing-test",
+                                      {{"01_earth_basics.json", "1.json"},
+                                       {"02_moon.json", "3.json"},
+                                       {"05_castle.json", "4.json"}});
+    std::ofstream((dir / "broken.json").string()) << "{";
+    Campaign c = twoChapters(); // 2.json is not there
+    const std::vector<MissingLevel> missing = missingLevels(c, dir.string());
+    ASSERT_EQ(missing.size(), 1u);
+    EXPECT_EQ(missing[0].chapter, 0u);
+    EXPECT_EQ(missing[0].level, 1u);
+    EXPECT_EQ(missing[0].file, "2.json");
+    EXPECT_EQ(missing[0].why, "no such level file in " + dir.string());
+    EXPECT_EQ(describe(c, missing[0]),
+              "c.json: $.chapters[0].levels[1]: names 2.json, which cannot be played (no such "
+              "level file in " + dir.string() + "): the levels after it open without it");
+    for (const MissingLevel& m : missing) c.missing[m.file] = m.why;
+
+    Progress p;
+    p.record("1.json", 100, 1, false);
+    EXPECT_TRUE(levelLock(c, 0, 1, p).open) << "the missing level itself is not behind a lock";
+    // The second chapter asks 4 stars of the first; 2.json could have given 3 of them.
+    EXPECT_TRUE(chapterLock(c, 1, p).open) << chapterLock(c, 1, p).why;
+    EXPECT_TRUE(levelLock(c, 1, 0, p).open);
+
+    // A level that is there but does not load is as unplayable, with the loader's reason.
+    Campaign broken = parseCampaign("c.json", R"({"format": 1, "chapters": [
+        {"id": "a", "title": "A", "lesson": "l", "formula": "f",
+         "levels": ["broken.json", "1.json"]}]})");
+    const std::vector<MissingLevel> unloadable = missingLevels(broken, dir.string());
+    ASSERT_EQ(unloadable.size(), 1u);
+    EXPECT_NE(unloadable[0].why.find("broken.json"), std::string::npos) << unloadable[0].why;
+    broken.missing[unloadable[0].file] = unloadable[0].why;
+    EXPECT_TRUE(levelLock(broken, 0, 1, Progress{}).open);
+    fs::remove_all(dir);
 }

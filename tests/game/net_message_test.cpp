@@ -58,6 +58,20 @@ TEST(NetMessage, EveryTypeRoundTrips) {
     EXPECT_EQ(h.commandIndex, 17u);
     EXPECT_EQ(h.tick, 4321u);
     EXPECT_EQ(h.levelHash, "");
+    EXPECT_EQ(h.token, "");
+    hello.token = "0123456789abcdef"; // a rejoin presents its seat's token
+    EXPECT_EQ(roundTrip(hello).token, "0123456789abcdef");
+
+    Message welcome;
+    welcome.type = MessageType::Welcome;
+    welcome.cannon = 1;
+    welcome.name = "ada";
+    welcome.token = "fedcba9876543210";
+    EXPECT_EQ(roundTrip(welcome).token, "fedcba9876543210");
+    welcome.token = "FEDCBA9876543210";
+    EXPECT_EQ(validate(welcome), "welcome: seat token must be 16 lowercase hex digits or empty");
+    hello.token = "12345";
+    EXPECT_EQ(validate(hello), "hello: seat token must be 16 lowercase hex digits or empty");
 
     Message cmd = commandMessage(commandAt(CommandKind::Select, 99, 0.0, "golf-ball"), 5, 1);
     const Message c = roundTrip(cmd);
@@ -135,7 +149,7 @@ TEST(NetMessage, MalformedPacketsAreRefusedWithTheirReason) {
     EXPECT_EQ(errorOf(b), "message does not start with the protocol's magic bytes");
     b = advanceBytes();
     b[2] = 7;
-    EXPECT_EQ(errorOf(b), "protocol version 7, expected 1");
+    EXPECT_EQ(errorOf(b), "protocol version 7, expected 2");
     b = advanceBytes();
     b[3] = 200;
     EXPECT_EQ(errorOf(b), "message type 200 is unknown");

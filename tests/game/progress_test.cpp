@@ -1,12 +1,16 @@
 // The progress file: results and lessons read round trip; the best result keeps whether
 // it was assisted; a damaged file is kept aside as FILE.damaged and no progress is used;
-// saving is atomic (no temporary file left, an unwritable folder is reported).
+// saving is atomic (no temporary file left, an unwritable folder is reported); two
+// windows' saves merge under a lock, so neither loses the other's results.
 #include "game/files/text_file.h"
 #include "game/progress.h"
+#include "processes.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 using namespace game;
@@ -143,4 +147,89 @@ TEST(Progress, AdoptsOlderResults) {
     EXPECT_EQ(p.result("05_castle.json")->stars, 2);
     EXPECT_EQ(p.result("05_castle.json")->bestScore, 320);
     EXPECT_FALSE(adoptOlderResults(p, older)) << "taken once";
+}
+
+// Two windows of the game share progress.json: each saves what it added merged into what
+// the other saved meanwhile. Per level the best result; plays are the file's plus this
+// run's new ones; lessons either has read.
+TEST(Progress, AMergeKeepsTheBestResultAndAddsThisRunsPlays) {
+    Progress base; // what both windows read at the start
+    base.record("1.json", 100, 1, false);
+    Progress disk = base; // the other window finished 1.json twice more, and 2.json
+    disk.record("1.json", 250, 3, false, true);
+    disk.record("1.json", 50, 0, false);
+    disk.record("2.json", 80, 2, false);
+    disk.lessonsSeen.insert("drag");
+    Progress mine = base; // this window finished 1.json once, and 3.json
+    mine.record("1.json", 200, 3, false, false);
+    mine.record("3.json", 10, 0, true);
+    mine.lessonsSeen.insert("flight");
+
+    const Progress merged = mergeProgress(disk, base, mine);
+    const LevelResult* one = merged.result("1.json");
+    ASSERT_NE(one, nullptr);
+    EXPECT_EQ(one->plays, 4) << "1 before, 2 in the other window, 1 here";
+    EXPECT_EQ(one->bestScore, 250);
+    EXPECT_EQ(one->stars, 3);
+    EXPECT_FALSE(one->assisted) << "three stars here without an aid";
+    ASSERT_NE(merged.result("2.json"), nullptr);
+    EXPECT_EQ(merged.result("2.json")->stars, 2);
+    ASSERT_NE(merged.result("3.json"), nullptr);
+    EXPECT_TRUE(merged.result("3.json")->won);
+    EXPECT_EQ(merged.lessonsSeen, (std::set<std::string>{"drag", "flight"}));
+    // Merged again with nothing new: the same.
+    const Progress again = mergeProgress(merged, merged, merged);
+    EXPECT_EQ(again.result("1.json")->plays, 4);
+}
+
+TEST(Progress, ASavedMergeTakesInTheOtherWindowsResults) {
+    const fs::path dir = scratch("artillery-progress-merge-" + std::to_string(::getpid()));
+    const std::string file = (dir / "progress.json").string();
+    Progress baseA, mineA, baseB, mineB; // two windows, both started with no file
+    std::string warning;
+    mineA.record("1.json", 100, 1, false);
+    ASSERT_EQ(saveProgressMerged(file, baseA, mineA, warning), "");
+    mineB.record("2.json", 200, 2, false);
+    ASSERT_EQ(saveProgressMerged(file, baseB, mineB, warning), "");
+    EXPECT_NE(mineB.result("1.json"), nullptr) << "window B now shows window A's result";
+    mineA.record("1.json", 100, 1, false);
+    ASSERT_EQ(saveProgressMerged(file, baseA, mineA, warning), "");
+    const Progress back = loadProgress(file, warning);
+    ASSERT_NE(back.result("1.json"), nullptr);
+    ASSERT_NE(back.result("2.json"), nullptr);
+    EXPECT_EQ(back.result("1.json")->plays, 2);
+    EXPECT_EQ(back.result("2.json")->plays, 1);
+    EXPECT_TRUE(fs::exists(file + ".lock")) << "the lock is on a sibling file, left in place";
+    fs::remove_all(dir);
+}
+
+// Two processes finishing different levels against one file, each saving after every
+// match, as two windows of the game do: the file ends with both levels and every play
+// of each (without the lock and the merge, the last writer's whole file wins).
+TEST(Progress, TwoProcessesFinishingDifferentLevelsKeepBoth) {
+    const fs::path dir = scratch("artillery-progress-two-" + std::to_string(::getpid()));
+    const std::string file = (dir / "progress.json").string();
+    constexpr int kMatches = 40;
+    auto play = [&](const std::string& level) {
+        Progress base, mine;
+        std::string warning;
+        for (int i = 0; i < kMatches; ++i) {
+            mine.record(level, 100 + i, 1 + i % 3, false);
+            if (!saveProgressMerged(file, base, mine, warning).empty()) return 1;
+        }
+        return 0;
+    };
+    const char* levels[2] = {"levels/01_earth_basics.json", "levels/02_moon.json"};
+    runInProcesses(2, [&](int k) { return play(levels[k]); });
+    std::string warning;
+    const Progress back = loadProgress(file, warning);
+    EXPECT_EQ(warning, "");
+    for (const char* level : levels) {
+        const LevelResult* r = back.result(level);
+        ASSERT_NE(r, nullptr) << level;
+        EXPECT_EQ(r->plays, kMatches) << level;
+        EXPECT_EQ(r->bestScore, 100 + kMatches - 1) << level;
+        EXPECT_EQ(r->stars, 3) << level;
+    }
+    fs::remove_all(dir);
 }

@@ -1,12 +1,17 @@
 #!/bin/bash
 # Networked duels between real processes over 127.0.0.1 (ports chosen by the system,
 # so tests running side by side never collide). Every wait is bounded.
-#   duel_test.sh EXE RELAY SOURCE_DIR WORK_DIR MODE
-# MODE: loopback | relay | tamper | reconnect | rejoin | timeout | refuse | window | played
-#   (window, played: XVFB_RUN in the environment names xvfb-run; played: xdotool too)
+#   duel_test.sh EXE RELAY SOURCE_DIR WORK_DIR MODE [INTRUDER]
+# MODE: loopback | relay | tamper | reconnect | rejoin | timeout | refuse | hostile |
+#       window | played
+#   (window, played: XVFB_RUN in the environment names xvfb-run; played: xdotool too;
+#   hostile: INTRUDER, the scripted hostile peer of tests/net/intruder.cpp)
 set -u
-EXE=$1 RELAY=$2 SRC=$3 WORK=$4 MODE=$5
+EXE=$1 RELAY=$2 SRC=$3 WORK=$4 MODE=$5 INTRUDER=${6:-}
 rm -rf "$WORK" && mkdir -p "$WORK" && cd "$SRC" || exit 2
+# Whatever is still running when this script ends (a failed mode leaves a host waiting
+# for its player) ends with it.
+trap 'kill $(jobs -p) 2>/dev/null' EXIT
 fail() { echo "FAIL ($MODE): $*"; for f in "$WORK"/*.log; do echo "--- $f"; cat "$f"; done; exit 1; }
 
 # Waits (at most 10 s) for "on 127.0.0.1:PORT" in a log and prints PORT.
@@ -95,18 +100,99 @@ reconnect)
     cmp "$WORK/cut.host.json" "$WORK/cut.join.json" || fail "the replays differ"
     ;;
 rejoin)
-    # The joiner's process dies at tick 3000; a new process with the same name takes its
-    # place, replays the host's stream (its predecessor's commands included) and plays on.
+    # The joiner's process dies at tick 3000; a new process under the same name without
+    # the seat's token is refused; one given the token (printed at the first join) takes
+    # the seat back, replays the host's stream (its predecessor's commands included) and
+    # plays on.
+    duel plain --
+    [ $HOST_RC = 0 ] || fail "plain duel exited $HOST_RC"
     timeout 120 "$EXE" host levels/10_duel.json --port 0 --autoplay --name ada --timeout 30 \
         --record "$WORK/h.json" > "$WORK/h.log" 2>&1 &
     H=$!
     HP=$(port_of "$WORK/h.log") || fail "the host did not start"
     timeout 60 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob --quit-at-tick 3000 > "$WORK/j1.log" 2>&1
-    timeout 120 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob --record "$WORK/j2.json" > "$WORK/j2.log" 2>&1 || fail "the new joiner exited $?"
+    TOKEN=$(sed -n 's/^seat token \([0-9a-f]*\): .*/\1/p' "$WORK/j1.log" | head -1)
+    [ -n "$TOKEN" ] || fail "the first joiner was given no seat token"
+    timeout 60 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob > "$WORK/j0.log" 2>&1 && fail "a name alone took the seat"
+    # (The host may not have noticed the drop yet: then the seat is still its player's.)
+    grep -Eq "the host refused: the seat is bob's(, held for its return)?; a rejoin presents" "$WORK/j0.log" \
+        || fail "no refusal of the name alone"
+    timeout 120 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob --token "$TOKEN" --record "$WORK/j2.json" > "$WORK/j2.log" 2>&1 || fail "the new joiner exited $?"
     wait $H || fail "host exited $?"
     grep -q "left without a goodbye at tick 3000" "$WORK/j1.log" || fail "the first joiner did not quit"
     grep -q "rejoining: replaying the match up to tick" "$WORK/j2.log" || fail "the new joiner did not replay"
     cmp "$WORK/h.json" "$WORK/j2.json" || fail "the replays differ"
+    "$EXE" replay verify "$WORK/h.json" || fail "the replay does not verify"
+    # The computer restarted after the drop aims with a fresh generator, not the one the
+    # first process had drawn from: from its first turn on, the match is another one
+    # than without the drop (docs/network.md says so).
+    echo "final hash without the drop $(final_hash "$WORK/plain.host.json"), with the restart $(final_hash "$WORK/h.json")"
+    ;;
+hostile)
+    # The door, with a scripted hostile peer (tests/net/intruder.cpp) from other loopback
+    # addresses while the player comes from 127.0.0.1. Two hosts:
+    [ -x "$INTRUDER" ] || fail "no intruder program"
+    # 1. Every slot taken: sixteen connections from four addresses finish ENet's
+    #    handshake and say nothing, and a CONNECT flood from 127.0.0.3 never answers.
+    #    The player joins all the same (the host keeps room) and the match plays through.
+    timeout 120 "$EXE" host levels/10_duel.json --port 0 --autoplay --name ada \
+        --record "$WORK/full.host.json" > "$WORK/full.host.log" 2>&1 &
+    H=$!
+    HP=$(port_of "$WORK/full.host.log") || fail "the host did not start"
+    for a in 2 7 8 9; do
+        timeout 60 "$INTRUDER" --to "$HP" --from 127.0.0.$a --seconds 20 --silent 4 > "$WORK/full.silent$a.log" 2>&1 &
+    done
+    timeout 60 "$INTRUDER" --to "$HP" --from 127.0.0.3 --seconds 8 --flood 8 > "$WORK/full.flood.log" 2>&1 &
+    sleep 1
+    SECONDS=0
+    timeout 120 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob --record "$WORK/full.join.json" > "$WORK/full.join.log" 2>&1 \
+        || fail "the player could not play with every slot taken (exit $?)"
+    echo "with every slot taken at the door, the player joined and played the match in $SECONDS s"
+    wait $H || fail "host exited $?"
+    wait # the intruders
+    cmp "$WORK/full.host.json" "$WORK/full.join.json" || fail "the two replays differ"
+    grep -q "bob joined from 127.0.0.1" "$WORK/full.host.log" || fail "the player did not join"
+    grep -q "no hello, and the host keeps room" "$WORK/full.host.log" || fail "the host made no room"
+    # 2. The deadlines, then the seat: silent connections (six tried, four taken: one
+    #    address holds four at most) and the flood; the host drops the silent ones 5 s
+    #    after their handshake and resets the flood's half-open ones; then the player joins, drops out at tick 3000 (its seat held for its
+    #    return), a join under its name without the token is refused, the host takes
+    #    four spectators of five, and the player's new process comes back with the token
+    #    and plays the match through.
+    timeout 120 "$EXE" host levels/10_duel.json --port 0 --autoplay --name ada --timeout 30 \
+        --record "$WORK/h.json" > "$WORK/h.log" 2>&1 &
+    H=$!
+    HP=$(port_of "$WORK/h.log") || fail "the host did not start"
+    timeout 60 "$INTRUDER" --to "$HP" --from 127.0.0.2 --seconds 20 --silent 6 > "$WORK/silent.log" 2>&1 &
+    SI=$!
+    timeout 60 "$INTRUDER" --to "$HP" --from 127.0.0.3 --seconds 10 --flood 8 > "$WORK/flood.log" 2>&1 &
+    FL=$!
+    wait $SI
+    for _ in $(seq 100); do grep -q "stayed in the handshake" "$WORK/h.log" && break; sleep 0.1; done
+    timeout 60 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob --quit-at-tick 3000 > "$WORK/j1.log" 2>&1
+    TOKEN=$(sed -n 's/^seat token \([0-9a-f]*\): .*/\1/p' "$WORK/j1.log" | head -1)
+    timeout 60 "$INTRUDER" --to "$HP" --from 127.0.0.4 --seconds 10 --impostor bob > "$WORK/impostor.log" 2>&1
+    timeout 60 "$INTRUDER" --to "$HP" --from 127.0.0.5 --seconds 10 --spectators 3 > "$WORK/spectators1.log" 2>&1
+    timeout 60 "$INTRUDER" --to "$HP" --from 127.0.0.6 --seconds 10 --spectators 2 > "$WORK/spectators2.log" 2>&1
+    timeout 120 "$EXE" join "127.0.0.1:$HP" --autoplay --name bob --token "$TOKEN" \
+        --record "$WORK/j.json" > "$WORK/j.log" 2>&1 || fail "the player's new process exited $?"
+    wait $H || fail "host exited $?"
+    wait $FL
+    cat "$WORK/silent.log" "$WORK/flood.log" "$WORK/impostor.log" "$WORK/spectators1.log" "$WORK/spectators2.log"
+    grep -Eq "^silent: 4 connected, 2 turned away, 4 disconnected by the host, held at most [5-7]\.[0-9] s$" "$WORK/silent.log" \
+        || fail "one address held more than four, or the silent ones were not dropped 5 s after their handshake"
+    [ "$(grep -c 'dropped 127\.0\.0\.2:[0-9]*: no hello within 5 s' "$WORK/h.log")" = 4 ] || fail "the host did not drop the silent peers"
+    grep -q "dropped 127\.0\.0\.3:[0-9]*: its connection stayed in the handshake for over 5 s" "$WORK/h.log" \
+        || fail "the host did not reset the flood's connections"
+    [ -n "$TOKEN" ] || fail "the player was given no seat token"
+    # (The host may not have noticed the drop yet: then the seat is still its player's.)
+    grep -Eq "impostor bob: refused: the seat is bob's(, held for its return)?; a rejoin presents the seat token" "$WORK/impostor.log" \
+        || fail "a name alone was not refused"
+    grep -q "^spectators: 3 welcomed, 0 refused$" "$WORK/spectators1.log" || fail "the first three spectators were not taken"
+    grep -q "^spectators: 1 welcomed, 1 refused$" "$WORK/spectators2.log" || fail "the fifth spectator was taken"
+    grep -q "refused: the host takes at most 4 spectators" "$WORK/spectators2.log" || fail "no spectator refusal"
+    grep -q "match over at tick" "$WORK/j.log" || fail "the match did not play through"
+    cmp "$WORK/h.json" "$WORK/j.json" || fail "the two replays differ"
     "$EXE" replay verify "$WORK/h.json" || fail "the replay does not verify"
     ;;
 timeout)

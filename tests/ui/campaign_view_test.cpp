@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace {
@@ -92,4 +93,33 @@ TEST(CampaignView, EnterTwiceFromTheLevelSelectPlaysTheFirstLevel) {
     enter();
     ASSERT_NE(screen.session(), nullptr);
     EXPECT_EQ(screen.session()->match().level().name, "First shot");
+}
+
+// A campaign naming a level file the folder lacks: the menu says which and why (the
+// level select shows it at the top), and "Play next" goes on past it: the level after it
+// is open, where it used to stay locked for ever.
+TEST(CampaignView, AMissingLevelIsNamedAndPlayGoesOnPastIt) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "artillery-campaign-view-missing";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    fs::copy_file(fs::path(kLevels) / "01_earth_basics.json", dir / "01_earth_basics.json");
+    fs::copy_file(fs::path(kLevels) / "02_moon.json", dir / "03_after.json");
+    std::ofstream((dir / "campaign.json").string()) << R"({"format": 1, "chapters": [
+        {"id": "a", "title": "A", "lesson": "l", "formula": "f",
+         "levels": ["01_earth_basics.json", "02_gone.json", "03_after.json"]}]})";
+    const ui::CampaignMenu menu = ui::campaignMenu(dir.string(), ui::listLevels(dir.string()));
+    ASSERT_TRUE(menu.error.empty()) << menu.error;
+    ASSERT_EQ(menu.missing.size(), 1u);
+    EXPECT_EQ(menu.missing[0], (dir / "campaign.json").string() +
+                                   ": $.chapters[0].levels[1]: names 02_gone.json, which cannot be "
+                                   "played (no such level file in " + dir.string() +
+                                   "): the levels after it open without it");
+    game::Progress progress;
+    progress.record("01_earth_basics.json", 100, 1, false);
+    const auto next = ui::levelOnTheWay(menu, progress);
+    ASSERT_TRUE(next);
+    EXPECT_EQ(*next, (game::LevelPlace{0, 2}));
+    EXPECT_EQ(fileName(menu, *next), "03_after.json");
+    fs::remove_all(dir);
 }

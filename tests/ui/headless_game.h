@@ -5,6 +5,7 @@
 #include "ui/game/game_screen.h"
 #include "ui/platform/gl_context.h"
 
+#include <SDL.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -38,5 +39,15 @@ struct HeadlessGame {
             screen->frame(1.0 / 60.0);
     }
 };
+
+/// A key pressed and let go on the screen, as the window sends it.
+inline void tap(ui::GameScreen& screen, SDL_Keycode key) {
+    SDL_Event e{};
+    e.type = SDL_KEYDOWN;
+    e.key.keysym.sym = key;
+    screen.handleEvent(e);
+    e.type = SDL_KEYUP;
+    screen.handleEvent(e);
+}
 
 } // namespace test_game

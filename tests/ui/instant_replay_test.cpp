@@ -17,14 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void key(ui::GameScreen& screen, SDL_Keycode k) {
-    SDL_Event e{};
-    e.type = SDL_KEYDOWN;
-    e.key.keysym.sym = k;
-    screen.handleEvent(e);
-    e.type = SDL_KEYUP;
-    screen.handleEvent(e);
-}
+void key(ui::GameScreen& screen, SDL_Keycode k) { test_game::tap(screen, k); }
 
 } // namespace
 

@@ -181,7 +181,11 @@ std::vector<Chart> stabilityCharts(const std::vector<game::bench::StabilityRow>&
     return out;
 }
 
-std::vector<Chart> scalingCharts(const game::bench::ScalingReport& report) {
+namespace {
+
+/// Step cost against N (with a slope-1 guide through each workload's first point), and
+/// the cost per item: the two line charts of the scaling report.
+std::pair<Chart, Chart> costCharts(const game::bench::ScalingReport& report) {
     std::map<std::string, std::vector<const game::bench::ScalingPoint*>> byWorkload;
     std::vector<std::string> order;
     for (const auto& p : report.points) {
@@ -225,27 +229,27 @@ std::vector<Chart> scalingCharts(const game::bench::ScalingReport& report) {
         cost.series.push_back(std::move(s));
         per.series.push_back(std::move(q));
     }
-    Chart ratios;
-    ratios.kind = ChartKind::Bars;
-    ratios.title = "side by side, in one process";
-    ratios.subtitle = "ms per step (per frame for cloth); white tick: the target";
-    ratios.referenceName = "target";
-    ratios.x = {"milliseconds", Scale::Log};
+    return {cost, per};
+}
+
+const Color kParticleBar = Color::hex(0x4aa3ff), kRigidBar = Color::hex(0xff6b6b),
+            kStreamBar = Color::hex(0x8d97ab), kClothBar = Color::hex(0x57c46a);
+
+/// The pile of columns and its heap in staggered rows: particles, Box2D, Box2D tuned.
+void pileBars(const game::bench::ScalingReport& report, std::vector<Bar>& bars) {
     const auto& pile = report.pile;
-    const Color particle = Color::hex(0x4aa3ff), rigid = Color::hex(0xff6b6b),
-                stream = Color::hex(0x8d97ab), cloth = Color::hex(0x57c46a);
     char note[96];
     if (pile.balls > 0) {
         const double balls = static_cast<double>(pile.balls);
         std::snprintf(note, sizeof note, "%.3g ms, %.1fx / %.1fx faster", pile.particleMs,
                       pile.speedup(), pile.speedupOverTuned());
-        ratios.bars.push_back({format("pile of %.0f: particles", balls), pile.particleMs,
-                               pile.rigidMs / 10.0, particle, note});
-        ratios.bars.push_back({format("pile of %.0f: Box2D", balls), pile.rigidMs, NAN, rigid,
-                               format("%.3g ms", pile.rigidMs)});
-        ratios.bars.push_back({format("pile of %.0f: Box2D tuned", balls), pile.tunedRigidMs, NAN,
-                               workloadColor("box2d-tuned"),
-                               format("%.3g ms (x10, no TOI)", pile.tunedRigidMs)});
+        bars.push_back({format("pile of %.0f: particles", balls), pile.particleMs,
+                        pile.rigidMs / 10.0, kParticleBar, note});
+        bars.push_back({format("pile of %.0f: Box2D", balls), pile.rigidMs, NAN, kRigidBar,
+                        format("%.3g ms", pile.rigidMs)});
+        bars.push_back({format("pile of %.0f: Box2D tuned", balls), pile.tunedRigidMs, NAN,
+                        workloadColor("box2d-tuned"),
+                        format("%.3g ms (x10, no TOI)", pile.tunedRigidMs)});
     }
     // The same balls poured in staggered rows: the lead where each ball touches four to
     // six others, beside the columns' (no target).
@@ -254,31 +258,51 @@ std::vector<Chart> scalingCharts(const game::bench::ScalingReport& report) {
         const double balls = static_cast<double>(heap.balls);
         std::snprintf(note, sizeof note, "%.3g ms, %.1fx / %.1fx faster", heap.particleMs,
                       heap.speedup(), heap.speedupOverTuned());
-        ratios.bars.push_back(
-            {format("heap of %.0f: particles", balls), heap.particleMs, NAN, particle, note});
-        ratios.bars.push_back({format("heap of %.0f: Box2D tuned", balls), heap.tunedRigidMs, NAN,
-                               workloadColor("box2d-tuned"),
-                               format("%.3g ms (x10, no TOI)", heap.tunedRigidMs)});
+        bars.push_back({format("heap of %.0f: particles", balls), heap.particleMs, NAN,
+                        kParticleBar, note});
+        bars.push_back({format("heap of %.0f: Box2D tuned", balls), heap.tunedRigidMs, NAN,
+                        workloadColor("box2d-tuned"),
+                        format("%.3g ms (x10, no TOI)", heap.tunedRigidMs)});
     }
+}
+
+/// The million particles in flight against the reference kernel and a memcpy, and the
+/// cloth frame.
+void flightAndClothBars(const game::bench::ScalingReport& report, std::vector<Bar>& bars) {
+    char note[96];
     for (const auto& f : report.flights) {
         if (f.n < 1000000) continue; // the 1M figures: out of cache, the memory's limit
         const char* who = f.integrator == "velocity-verlet" ? "Verlet" : "sympl.";
         std::snprintf(note, sizeof note, "%.3g ms, %.2fx the reference", f.updateMs, f.ratio());
-        ratios.bars.push_back({format("%.0fM in flight, ", f.n / 1e6) + who, f.updateMs,
-                               1.5 * f.referenceMs, particle, note});
+        bars.push_back({format("%.0fM in flight, ", f.n / 1e6) + who, f.updateMs,
+                        1.5 * f.referenceMs, kParticleBar, note});
     }
     for (const auto& f : report.flights)
         if (f.n >= 1000000 && f.integrator != "velocity-verlet") {
             std::snprintf(note, sizeof note, "%.3g ms, %.3g GB/s", f.referenceMs, f.referenceGBs());
-            ratios.bars.push_back({format("%.0fM: reference kernel", f.n / 1e6), f.referenceMs, NAN,
-                                   stream, note});
+            bars.push_back({format("%.0fM: reference kernel", f.n / 1e6), f.referenceMs, NAN,
+                            kStreamBar, note});
             std::snprintf(note, sizeof note, "%.3g ms, %.3g GB/s", f.copyMs, f.copyGBs());
-            ratios.bars.push_back({format("%.0fM: memcpy, same bytes", f.n / 1e6), f.copyMs, NAN,
-                                   stream, note});
+            bars.push_back({format("%.0fM: memcpy, same bytes", f.n / 1e6), f.copyMs, NAN,
+                            kStreamBar, note});
         }
     if (report.clothMs > 0)
-        ratios.bars.push_back({"cloth 64x64, 8 sub-steps", report.clothMs, 2.0, cloth,
-                               format("%.3g ms per frame", report.clothMs)});
+        bars.push_back({"cloth 64x64, 8 sub-steps", report.clothMs, 2.0, kClothBar,
+                        format("%.3g ms per frame", report.clothMs)});
+}
+
+} // namespace
+
+std::vector<Chart> scalingCharts(const game::bench::ScalingReport& report) {
+    auto [cost, per] = costCharts(report);
+    Chart ratios;
+    ratios.kind = ChartKind::Bars;
+    ratios.title = "side by side, in one process";
+    ratios.subtitle = "ms per step (per frame for cloth); white tick: the target";
+    ratios.referenceName = "target";
+    ratios.x = {"milliseconds", Scale::Log};
+    pileBars(report, ratios.bars);
+    flightAndClothBars(report, ratios.bars);
     // One spare decade on the right so every note fits after its bar; one below the
     // cheapest workload so the legend (bottom right) covers no line.
     double largest = 0.0, cheapest = INFINITY;

@@ -22,6 +22,9 @@ struct CampaignMenu {
     std::vector<std::vector<LevelEntry>> chapters; ///< entries of each chapter, in order
     std::vector<LevelEntry> outside;               ///< the sandbox, and unlisted files
     std::string error; ///< why campaign.json did not load ("" when it did or is absent)
+    /// Each level a chapter names that cannot be played, said (game::describe): the
+    /// levels after it open without it.
+    std::vector<std::string> missing;
 };
 
 /// Sorts `levels` (listLevels of `folder`) into the chapters of `folder`/campaign.json.
@@ -38,10 +41,6 @@ void chooseLevel(const CampaignMenu& menu, game::LevelPlace place, const game::P
                  MenuChoice& choice);
 /// The level select's "Play next" button (and Enter): levelOnTheWay, chosen.
 void playNextButton(const CampaignMenu& menu, const game::Progress& progress, MenuChoice& choice);
-
-/// The chapters and their levels as table rows; a click on an open level or a lesson
-/// button is written into `choice` (openLevel, or showLesson with lessonThenLevel).
-void campaignTable(const CampaignMenu& menu, const game::Progress& progress, MenuChoice& choice);
 
 /// When a match of `levelFile` is over: a small card with the campaign's next level, its
 /// button (the lesson first when its chapter starts and was not read) or why it is locked.

@@ -106,7 +106,7 @@ void GameScreen::restart() {
     const std::string stem = std::filesystem::path(level_.file).stem().string();
     const std::string record = files_.recordFileFor(stem + "-last.json");
     play_.start(std::make_unique<game::Session>(
-        levelInPlay(), liveSessionOptions(files_.settings(), level_, record)));
+        levelInPlay(), liveSessionOptions(files_, level_, record, stats_.status)));
     matchView_.reset();
     camera_.forgetMoves();
     frameLevel(play_.match());
@@ -309,6 +309,7 @@ void GameScreen::drawPlaying() {
         // A replay shows what was played: no aim being edited, no preview of one.
         o.trajectoryPreview = false;
         o.solutionHint = false;
+        o.endCard = false;
         o.banner = viewer->banner();
     } else {
         o.trajectoryPreview = settings.trajectoryPreview && humanTurn;

@@ -335,7 +335,7 @@ void Hud::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o, const P
                                              w, 30)))
             drawLine(box(p), o.notice, kNotice, 0.8, Color::hex(0x0e1420, 0.8f));
     }
-    if (m.over())
+    if (m.over() && o.endCard)
         if (auto p = placed("card", at({{W / 2 - kCardW / 2, H / 2 - kCardH / 2},
                                         {W / 2 - kCardW / 2, mg + kWindH + 8},
                                         {W / 2 - kCardW / 2, H - mg - kCardH},

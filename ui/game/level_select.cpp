@@ -265,6 +265,11 @@ MenuChoice levelSelectScreen(const CampaignMenu& menu, const game::Progress& pro
     ImGui::SameLine();
     ImGui::TextColored(kDim, "a physics playground: every level shows one idea");
     if (!menu.error.empty()) ImGui::TextColored(kError, "%s", menu.error.c_str());
+    for (const std::string& missing : menu.missing) { // a level the campaign names, not there
+        ImGui::PushStyleColor(ImGuiCol_Text, kError);
+        ImGui::TextWrapped("%s", missing.c_str());
+        ImGui::PopStyleColor();
+    }
     if (pageCount(menu) == 0) ImGui::TextWrapped("No level files found (looked for levels/*.json).");
     ImGui::Separator();
     if (pageCount(menu) > 0) pageHeading(menu, progress, state, choice);

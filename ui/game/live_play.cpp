@@ -1,10 +1,12 @@
 #include "ui/game/live_play.h"
 
+#include "ui/game/match_view.h"
 #include "ui/game/pad_input.h"
 #include "ui/game/turn_controls.h"
 
 #include <algorithm>
 #include <cstdio>
+#include <iostream>
 
 namespace ui {
 
@@ -15,13 +17,19 @@ constexpr double kNoticeSeconds = 3.0;
 
 } // namespace
 
-game::SessionOptions liveSessionOptions(const PlayerSettings& settings, const game::Level& level,
-                                        const std::string& recordFile) {
+game::SessionOptions liveSessionOptions(PlayerFiles& files, const game::Level& level,
+                                        const std::string& recordFile, std::string& status) {
     game::SessionOptions o;
-    o.difficulty = settings.difficulty;
+    o.difficulty = files.settings().difficulty;
     o.cpuSeed = level.seed;
     // Every match is recorded; the session saves at each turn's end.
     o.recordFile = recordFile;
+    o.onSaveFailure = [&files, &status](const std::string& why) { // the game plays on
+        if (const std::string said = files.failedOnce("the replay", why); !said.empty()) {
+            std::cerr << "artillery: " << said << "\n";
+            status = said;
+        }
+    };
     return o;
 }
 
@@ -33,6 +41,7 @@ void LivePlay::start(std::unique_ptr<game::Session> session) {
     aim_ = AimInput();
     rewind_ = RewindControl();
     branchNote_.clear();
+    turnPlayer_ = -1;
     resultRecorded_ = newBest_ = false;
 }
 
@@ -70,6 +79,10 @@ std::string LivePlay::submit(const std::vector<game::Command>& commands) {
 
 void LivePlay::pollHeldInput(double dt, bool keysFree, PadInput& pad) {
     const game::Match& m = session_->match();
+    if (m.currentPlayer() != turnPlayer_) { // a new turn: the banner says whose
+        turnPlayer_ = m.currentPlayer();
+        turnStartTick_ = m.tick();
+    }
     HeldAxes axes;
     if (humanTurn() && !m.shell()) {
         if (keysFree) axes = heldArrowKeys();
@@ -144,6 +157,19 @@ bool LivePlay::takeFinish() {
     return true;
 }
 
+/// "Your turn" (or "Player 2's turn" when people share the duel) for the first two
+/// seconds of a person's turn in a duel, until the shot.
+std::string LivePlay::turnBanner(const game::Match& m) const {
+    const auto shown = static_cast<std::uint64_t>(2.0 / m.world().def().tickSeconds);
+    if (m.level().mode != game::Mode::Duel || m.over() || m.shell() || m.currentPlayer() != turnPlayer_ ||
+        m.tick() >= turnStartTick_ + shown)
+        return "";
+    int people = 0;
+    for (const game::CannonState& c : m.cannons()) people += c.def.player != "cpu";
+    if (people < 2) return "Your turn";
+    return defaultPlayerName(m.cannon().def.player) + "'s turn";
+}
+
 std::string LivePlay::banner() const {
     if (!session_) return "";
     const game::Match& m = session_->match();
@@ -161,7 +187,9 @@ std::string LivePlay::banner() const {
         std::snprintf(banner, sizeof banner, "BRANCH from %.1f s",
                       static_cast<double>(branchTick_) * m.world().def().tickSeconds);
     else if (!m.over() && m.cannon().def.player == "cpu" && !m.shell())
-        std::snprintf(banner, sizeof banner, "the computer is aiming...");
+        std::snprintf(banner, sizeof banner, "Computer's turn: it is aiming");
+    else if (const std::string turn = turnBanner(m); !turn.empty())
+        std::snprintf(banner, sizeof banner, "%s", turn.c_str());
     else if (m.over() && newBest_)
         std::snprintf(banner, sizeof banner, "new best for this level!");
     return banner;

@@ -8,7 +8,7 @@
 #include "physics/clock.h"
 #include "ui/game/aim_input.h"
 #include "ui/game/game_menus.h"
-#include "ui/game/player_settings.h"
+#include "ui/game/player_files.h"
 #include "ui/game/tick_budget.h"
 #include "ui/play/physics_panel.h"
 
@@ -24,9 +24,11 @@ namespace ui {
 class PadInput;
 
 /// The options of a live match of `level`: the computer's difficulty and seed, and the
-/// file the session records into at each turn's end ("" = not recorded).
-game::SessionOptions liveSessionOptions(const PlayerSettings& settings, const game::Level& level,
-                                        const std::string& recordFile);
+/// file the session records into at each turn's end ("" = not recorded). A save that
+/// fails at a turn's end does not stop the match: the first failure is said on the
+/// terminal and in `status` (which must outlive the session), once.
+game::SessionOptions liveSessionOptions(PlayerFiles& files, const game::Level& level,
+                                        const std::string& recordFile, std::string& status);
 
 class LivePlay {
   public:
@@ -45,6 +47,8 @@ class LivePlay {
     const game::Match& match() const { return session_->match(); }
     /// A person is on turn (not the computer) in a match not over.
     bool humanTurn() const;
+    /// Whose turn it is, said at its start in a duel ("" otherwise).
+    std::string turnBanner(const game::Match& m) const;
 
     /// Submits `command`; a refused one stays on the HUD a while (notice()). Returns why
     /// it was refused, "" when taken.
@@ -105,6 +109,9 @@ class LivePlay {
     /// Where the game in play branched from (a replay taken over, a rewind), "" if not.
     std::string branchNote_;
     std::uint64_t branchTick_ = 0;
+    /// Whose turn it is and the tick it began: a duel says "Your turn" for its first seconds.
+    int turnPlayer_ = -1;
+    std::uint64_t turnStartTick_ = 0;
     bool resultRecorded_ = false;
     bool newBest_ = false;
     /// What the match refused last (a spawn outside the world, say), shown on the HUD

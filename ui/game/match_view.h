@@ -62,6 +62,9 @@ struct MatchViewOptions {
     std::optional<double> charge;
     /// Name of who plays each cannon, as the HUD shows it ("Player 1", "Computer").
     std::vector<std::string> playerNames;
+    /// The card at the end of the match (stars, score; the winner): a live game's, not a
+    /// replay's.
+    bool endCard = true;
     /// A line in the middle of the top of the screen ("Paused", "x0.25").
     std::string banner;
     /// A command the match refused ("spawn: spawn point is outside the world"), "" for none.

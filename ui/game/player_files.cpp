@@ -10,27 +10,44 @@
 
 namespace ui {
 
-PlayerFiles::PlayerFiles(const PlayerFilesDef& def) : def_(def) {
+namespace {
+
+std::string inFolder(const std::string& folder, const char* name) {
+    return (std::filesystem::path(folder) / name).string();
+}
+
+} // namespace
+
+PlayerFiles::PlayerFiles(const PlayerFilesDef& def) : def_(def), folder_(def.settingsFolder) {
+    if (!folder_.notice().empty()) say(folder_.notice());
     if (!def_.settingsFolder.empty()) loadSettings();
     if (!def_.settingsFolder.empty() || !def_.progressFile.empty()) loadProgress();
 }
 
+/// Said once, when the game opens: on the terminal, and the first one in the window.
+void PlayerFiles::say(const std::string& message) {
+    std::cerr << "artillery: " << message << "\n";
+    if (warning_.empty()) warning_ = message;
+}
+
 void PlayerFiles::loadSettings() {
-    settingsFile_ = (std::filesystem::path(def_.settingsFolder) / "settings.json").string();
-    iniFile_ = (std::filesystem::path(def_.settingsFolder) / "imgui.ini").string();
+    settingsFile_ = folder_.fileToWrite("settings.json");
+    iniFile_ = folder_.fileToWrite("imgui.ini");
     std::string warning;
-    settings_ = loadPlayerSettings(settingsFile_, warning);
+    settings_ = settingsBase_ = loadPlayerSettings(inFolder(def_.settingsFolder, "settings.json"), warning);
     if (!warning.empty()) {
-        // Told on the terminal and in the window; the damaged file is kept as it is,
-        // so this run saves no settings over it.
-        std::cerr << "artillery: " << warning << "\n";
-        warning_ = warning;
+        // The damaged file is kept as it is, so this run saves no settings over it.
+        say(warning);
         settingsFile_.clear();
     }
+    const std::string ini = inFolder(def_.settingsFolder, "imgui.ini");
     std::error_code ec;
-    if (std::filesystem::exists(iniFile_, ec)) {
-        const std::string ini = game::readFile(iniFile_);
-        ImGui::LoadIniSettingsFromMemory(ini.data(), ini.size());
+    if (!std::filesystem::exists(ini, ec)) return;
+    try {
+        const std::string text = game::readFile(ini);
+        ImGui::LoadIniSettingsFromMemory(text.data(), text.size());
+    } catch (const std::exception&) {
+        // A layout that cannot be read is the default layout.
     }
 }
 
@@ -38,41 +55,39 @@ void PlayerFiles::loadSettings() {
 /// the player is told once; results an older settings file kept move into it (saved
 /// before the settings, which no longer write them, are saved without them).
 void PlayerFiles::loadProgress() {
-    progressFile_ = !def_.progressFile.empty()
-                        ? def_.progressFile
-                        : (std::filesystem::path(def_.settingsFolder) / "progress.json").string();
+    const std::string file = !def_.progressFile.empty() ? def_.progressFile
+                                                        : inFolder(def_.settingsFolder, "progress.json");
     std::error_code ec;
-    const bool existed = std::filesystem::exists(progressFile_, ec);
-    std::string warning;
     if (def_.progressReadOnly) { // a check run: read, never move nor write
         try {
-            if (existed)
-                progress_ = game::parseProgress(progressFile_, game::readFile(progressFile_));
+            if (std::filesystem::exists(file, ec))
+                progress_ = progressBase_ = game::parseProgress(file, game::readFile(file));
         } catch (const std::exception& e) {
-            warning = e.what();
+            std::cerr << "artillery: " << e.what() << "\n";
         }
-        if (!warning.empty()) std::cerr << "artillery: " << warning << "\n";
-        progressFile_.clear();
         return;
     }
-    progress_ = game::loadProgress(progressFile_, warning);
-    if (!warning.empty()) {
-        std::cerr << "artillery: " << warning << "\n";
-        warning_ = warning;
-    }
-    if (game::adoptOlderResults(progress_, settings_.results)) {
-        if (const std::string err = game::saveProgress(progressFile_, progress_); !err.empty())
-            std::cerr << "artillery: progress not saved: " << err << "\n";
-    }
+    progressFile_ = !def_.progressFile.empty() ? def_.progressFile : folder_.fileToWrite("progress.json");
+    std::string warning;
+    progress_ = progressBase_ = game::loadProgress(file, warning);
+    if (!warning.empty()) say(warning);
+    if (game::adoptOlderResults(progress_, settings_.results)) saveProgress();
+}
+
+void PlayerFiles::saveProgress() {
+    if (progressFile_.empty()) return;
+    std::string warning;
+    if (const std::string err = game::saveProgressMerged(progressFile_, progressBase_, progress_, warning);
+        !err.empty())
+        std::cerr << "artillery: progress not saved: " << err << "\n";
+    if (!warning.empty()) std::cerr << "artillery: " << warning << "\n";
 }
 
 void PlayerFiles::save(const ViewControls& view) {
-    if (!progressFile_.empty())
-        if (const std::string err = game::saveProgress(progressFile_, progress_); !err.empty())
-            std::cerr << "artillery: progress not saved: " << err << "\n";
+    saveProgress();
     if (settingsFile_.empty()) return;
     settings_.draw = drawChoices(view);
-    if (const std::string err = savePlayerSettings(settingsFile_, settings_); !err.empty())
+    if (const std::string err = savePlayerSettingsMerged(settingsFile_, settingsBase_, settings_); !err.empty())
         std::cerr << "artillery: settings not saved: " << err << "\n";
     std::size_t size = 0;
     const char* ini = ImGui::SaveIniSettingsToMemory(&size);
@@ -90,15 +105,11 @@ bool PlayerFiles::recordResult(const std::string& levelFile, int score, int star
     return newBest;
 }
 
-std::string PlayerFiles::replaysFolder() const {
-    if (def_.settingsFolder.empty()) return "";
-    return (std::filesystem::path(def_.settingsFolder) / "replays").string();
-}
-
 std::string PlayerFiles::recordFileFor(const std::string& name) const {
     const std::string folder = replaysFolder();
     if (folder.empty()) return "";
-    std::filesystem::create_directories(folder);
+    std::error_code ec; // made when the game opened; a folder removed since is made again
+    std::filesystem::create_directories(folder, ec);
     return (std::filesystem::path(folder) / name).string();
 }
 

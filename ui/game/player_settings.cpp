@@ -1,5 +1,6 @@
 #include "ui/game/player_settings.h"
 
+#include "game/files/file_lock.h"
 #include "game/files/json_reader.h"
 
 #include <nlohmann/json.hpp>
@@ -105,7 +106,9 @@ PlayerSettings loadPlayerSettings(const std::string& file, std::string& warning)
     }
 }
 
-std::string savePlayerSettings(const std::string& file, const PlayerSettings& s) {
+namespace {
+
+nlohmann::json settingsJson(const PlayerSettings& s) {
     nlohmann::json j;
     j["format"] = 1;
     j["difficulty"] = game::difficultyName(s.difficulty);
@@ -123,12 +126,63 @@ std::string savePlayerSettings(const std::string& file, const PlayerSettings& s)
                   {"effects", s.sound.effects},
                   {"ui", s.sound.ui},
                   {"mute", s.sound.mute}};
+    return j;
+}
+
+std::string writeSettings(const std::string& file, const nlohmann::json& j) {
     try {
         std::filesystem::create_directories(std::filesystem::path(file).parent_path());
         game::writeFileAtomically(file, j.dump(2) + "\n");
     } catch (const std::exception& e) {
         return e.what();
     }
+    return "";
+}
+
+/// Key by key (into objects): `mine`'s value where it differs from `base`'s (this run
+/// changed it), else `disk`'s (another window may have).
+nlohmann::json changedKeysOver(const nlohmann::json& disk, const nlohmann::json& base,
+                               const nlohmann::json& mine) {
+    if (!mine.is_object()) return mine != base ? mine : disk;
+    nlohmann::json out = disk.is_object() ? disk : nlohmann::json::object();
+    for (const auto& [key, value] : mine.items()) {
+        const nlohmann::json& was = base.contains(key) ? base.at(key) : value;
+        out[key] = disk.contains(key) ? changedKeysOver(disk.at(key), was, value) : value;
+    }
+    return out;
+}
+
+} // namespace
+
+std::string savePlayerSettings(const std::string& file, const PlayerSettings& s) {
+    return writeSettings(file, settingsJson(s));
+}
+
+std::string savePlayerSettingsMerged(const std::string& file, PlayerSettings& base,
+                                     PlayerSettings& mine) {
+    std::error_code ec;
+    std::filesystem::create_directories(std::filesystem::path(file).parent_path(), ec);
+    const game::FileLock lock(game::lockFileOf(file), 5.0);
+    if (!lock.locked()) return lock.why();
+    nlohmann::json merged = settingsJson(mine);
+    if (std::filesystem::exists(file, ec)) {
+        PlayerSettings onDisk;
+        try {
+            onDisk = parsePlayerSettings(file, game::readFile(file));
+        } catch (const std::exception& e) {
+            return std::string(e.what()) + " (left as it is)";
+        }
+        merged = changedKeysOver(settingsJson(onDisk), settingsJson(base), merged);
+    }
+    PlayerSettings whole;
+    try { // what the merge made is read back as the file will be: whole, or not written
+        whole = parsePlayerSettings(file, merged.dump());
+    } catch (const std::exception& e) {
+        return std::string(e.what()) + " (the merged settings; nothing written)";
+    }
+    if (std::string err = writeSettings(file, merged); !err.empty()) return err;
+    whole.results = mine.results; // an older file's results are read once, never written
+    base = mine = whole;
     return "";
 }
 

@@ -2,7 +2,8 @@
 // preview and hint toggles, what to draw) and the ImGui layout; the results of the levels
 // are the progress file beside it (game/progress.h). Kept in
 // $XDG_CONFIG_HOME/artillery (else ~/.config/artillery), written atomically (temp file
-// + rename) so a crash never leaves half a file.
+// + rename) so a crash never leaves half a file, and merged key by key with what another
+// window of the game saved meanwhile.
 #pragma once
 
 #include "game/ai.h"
@@ -60,6 +61,14 @@ PlayerSettings parsePlayerSettings(const std::string& file, const std::string& t
 PlayerSettings loadPlayerSettings(const std::string& file, std::string& warning);
 /// Writes atomically, creating the folder. Returns "" or why it failed.
 std::string savePlayerSettings(const std::string& file, const PlayerSettings& settings);
+/// Saves a run's settings beside other windows': under an advisory lock on FILE.lock it
+/// reads the file again and writes, key by key, this run's value where this run changed
+/// it (against `base`, the settings as it last read or wrote them) and the file's value
+/// where it did not: the last change of each key wins, and a choice another window made
+/// meanwhile is kept. On success `base` and `mine` become the merged whole. A file that
+/// no longer parses is left as it is (nothing is saved over it). Returns "" or why not.
+std::string savePlayerSettingsMerged(const std::string& file, PlayerSettings& base,
+                                     PlayerSettings& mine);
 
 /// The player's volumes, as the game's pause menu set them (settings.json in the config
 /// folder), else the defaults: for the windows that are not the game's (the network duel,

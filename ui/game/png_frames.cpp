@@ -55,10 +55,13 @@ void PngFrameSink::frame(const game::Match& match) {
     const std::string err = writePng(path, canvas_->readBack());
     drawMs_ += std::chrono::duration<double, std::milli>(t1 - t0).count();
     writeMs_ += std::chrono::duration<double, std::milli>(Clock::now() - t1).count();
-    if (err.empty())
-        ++written_;
-    else if (error_.empty())
-        error_ = err;
+    if (!err.empty()) {
+        // The frames are the run's output: one that cannot be written (a full disk, the
+        // folder removed) stops the run, which says so, rather than leave a gap in them.
+        if (error_.empty()) error_ = err;
+        throw std::runtime_error("frame " + path + " was not written: " + err);
+    }
+    ++written_;
 }
 
 game::cli::FrameSinkFactory pngFrameSinkFactory() {

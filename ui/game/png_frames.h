@@ -22,6 +22,7 @@ class PngFrameSink final : public game::FrameSink {
                                                 bool hud, HeadlessBackend backend, std::string& why);
     ~PngFrameSink() override;
 
+    /// Draws and writes the frame; throws std::runtime_error when it cannot be written.
     void frame(const game::Match& match) override;
     /// Files written so far, and the first write error ("" when none).
     int written() const { return written_; }

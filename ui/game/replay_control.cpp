@@ -55,7 +55,7 @@ void ReplayControl::backToLive(const LivePlay& play, MatchView& view) {
     view.observe(play.match());
 }
 
-void ReplayControl::takeOver(LivePlay& play, const PlayerFiles& files, const game::Level& level,
+void ReplayControl::takeOver(LivePlay& play, PlayerFiles& files, const game::Level& level,
                              std::string& status) {
     const double dt = viewer_->match().world().def().tickSeconds;
     const std::uint64_t at = viewer_->player().tick();
@@ -63,7 +63,7 @@ void ReplayControl::takeOver(LivePlay& play, const PlayerFiles& files, const gam
     // A new file per branch: the replay watched stays as it was.
     const std::string record = files.recordFileFor(std::filesystem::path(level.file).stem().string() +
                                                    "-branch-" + std::to_string(at) + ".json");
-    game::SessionOptions options = liveSessionOptions(files.settings(), level, record);
+    game::SessionOptions options = liveSessionOptions(files, level, record, status);
     play.start(std::make_unique<game::Session>(viewer_->takeOver(options)));
     viewer_.reset();
     if (play.match().over()) play.markRecorded(); // a finished game is not scored again

@@ -37,7 +37,7 @@ class ReplayControl {
     /// Plays on from the moment watched as a live game in `play`, recording a new file
     /// per branch in the replays folder (the replay watched stays as it was); `level` is
     /// the level played. Says where in `status` when the branch cannot be saved.
-    void takeOver(LivePlay& play, const PlayerFiles& files, const game::Level& level,
+    void takeOver(LivePlay& play, PlayerFiles& files, const game::Level& level,
                   std::string& status);
 
   private:

@@ -2,7 +2,13 @@
 
 #include <enet/enet.h>
 
+#include <arpa/inet.h>
+#include <cerrno>
 #include <charconv>
+#include <cstring>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 namespace ui::net {
 
@@ -24,10 +30,48 @@ void limit(ENetHost* host) {
     host->maximumWaitingData = 64 * 1024;
 }
 
+/// Why a UDP socket cannot be bound to address:port, "" when it can. ENet says only
+/// that it failed; the system's reason (an address the machine lacks, a port in use)
+/// is found by trying the same bind first.
+std::string bindRefusal(std::uint32_t host, std::uint16_t port, const std::string& shown) {
+    const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+    if (fd < 0) return std::string("cannot open a UDP socket: ") + std::strerror(errno);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_port = htons(port);
+    a.sin_addr.s_addr = host; // ENet keeps it in network order
+    const int rc = ::bind(fd, reinterpret_cast<const sockaddr*>(&a), sizeof a);
+    const int error = errno;
+    ::close(fd);
+    if (rc == 0) return "";
+    const std::string where = "cannot listen on " + shown + ":" + std::to_string(port) + ": ";
+    if (error == EADDRNOTAVAIL)
+        return where + shown + " is not an address of this machine (--bind names one of its "
+                               "own addresses, or 0.0.0.0 for all of them)";
+    if (error == EADDRINUSE) return where + "the port is in use (--port 0 picks a free one)";
+    return where + std::strerror(error);
+}
+
+/// ENet's peer states between "nobody" and "connected", and from "closing" to "closed".
+bool unsettledState(ENetPeerState s) {
+    switch (s) {
+    case ENET_PEER_STATE_CONNECTING:
+    case ENET_PEER_STATE_ACKNOWLEDGING_CONNECT:
+    case ENET_PEER_STATE_CONNECTION_PENDING:
+    case ENET_PEER_STATE_CONNECTION_SUCCEEDED:
+    case ENET_PEER_STATE_DISCONNECT_LATER:
+    case ENET_PEER_STATE_DISCONNECTING:
+    case ENET_PEER_STATE_ACKNOWLEDGING_DISCONNECT:
+        return true;
+    default:
+        return false;
+    }
+}
+
 } // namespace
 
 std::unique_ptr<Link> Link::listen(const std::string& bindAddress, std::uint16_t port,
-                                   std::size_t maxPeers, std::string& why) {
+                                   const HostLimits& limits, std::string& why) {
     if (!initialised()) {
         why = "ENet could not be initialised";
         return nullptr;
@@ -38,12 +82,15 @@ std::unique_ptr<Link> Link::listen(const std::string& bindAddress, std::uint16_t
         return nullptr;
     }
     address.port = port;
-    ENetHost* host = enet_host_create(&address, maxPeers, 1, 0, 0);
+    why = bindRefusal(address.host, port, bindAddress);
+    if (!why.empty()) return nullptr;
+    ENetHost* host = enet_host_create(&address, limits.slots, 1, 0, 0);
     if (!host) {
-        why = "cannot listen on " + bindAddress + ":" + std::to_string(port) + " (port in use?)";
+        why = "cannot listen on " + bindAddress + ":" + std::to_string(port);
         return nullptr;
     }
     limit(host);
+    host->duplicatePeers = limits.perAddress;
     return std::unique_ptr<Link>(new Link(host));
 }
 
@@ -140,6 +187,64 @@ std::string Link::address(PeerId peer) const {
 
 void Link::setTimeout(PeerId peer, std::uint32_t ms) {
     enet_peer_timeout(peer, 0, ms, ms);
+}
+
+void Link::disconnectNow(PeerId peer) {
+    enet_peer_disconnect_now(peer, 0);
+    firstSeen_.erase(peer);
+}
+
+std::vector<std::pair<PeerId, Link::Clock::time_point>> Link::unsettled() {
+    const auto now = Clock::now();
+    std::vector<std::pair<PeerId, Clock::time_point>> out;
+    for (std::size_t i = 0; i < host_->peerCount; ++i) {
+        ENetPeer* p = &host_->peers[i];
+        if (!unsettledState(p->state)) {
+            firstSeen_.erase(p);
+            continue;
+        }
+        auto [it, fresh] = firstSeen_.try_emplace(p, p->connectID, now);
+        if (!fresh && it->second.first != p->connectID) it->second = {p->connectID, now};
+        out.emplace_back(p, it->second.second);
+    }
+    return out;
+}
+
+std::vector<std::string> Link::resetStaleHandshakes(double seconds) {
+    std::vector<std::string> reset;
+    const auto now = Clock::now();
+    for (const auto& [peer, since] : unsettled()) {
+        if (std::chrono::duration<double>(now - since).count() <= seconds) continue;
+        reset.push_back(address(peer));
+        enet_peer_reset(peer);
+        firstSeen_.erase(peer);
+    }
+    return reset;
+}
+
+std::vector<std::pair<PeerId, double>> Link::handshakes() {
+    std::vector<std::pair<PeerId, double>> out;
+    const auto now = Clock::now();
+    for (const auto& [peer, since] : unsettled()) {
+        const ENetPeerState s = peer->state;
+        if (s == ENET_PEER_STATE_DISCONNECT_LATER || s == ENET_PEER_STATE_DISCONNECTING ||
+            s == ENET_PEER_STATE_ACKNOWLEDGING_DISCONNECT)
+            continue; // leaving already
+        out.emplace_back(peer, std::chrono::duration<double>(now - since).count());
+    }
+    return out;
+}
+
+void Link::reset(PeerId peer) {
+    enet_peer_reset(peer);
+    firstSeen_.erase(peer);
+}
+
+std::size_t Link::freeSlots() const {
+    std::size_t free = 0;
+    for (std::size_t i = 0; i < host_->peerCount; ++i)
+        free += host_->peers[i].state == ENET_PEER_STATE_DISCONNECTED;
+    return free;
 }
 
 std::optional<std::pair<std::string, std::uint16_t>> parseAddress(const std::string& text,

@@ -3,7 +3,10 @@
 #include "game/files/text_file.h"
 #include "game/replay.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
+#include <random>
 #include <thread>
 
 namespace ui::net {
@@ -46,6 +49,15 @@ Message offerFor(const game::Level& level, const std::string& name, std::uint64_
     return m;
 }
 
+/// A seat's secret: 64 bits from the system's random source, as 16 hex digits.
+std::string newSeatToken() {
+    std::random_device random;
+    const std::uint64_t bits = (static_cast<std::uint64_t>(random()) << 32) ^ random();
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(bits));
+    return text;
+}
+
 Message reasonMessage(MessageType t, const std::string& why) {
     Message m;
     m.type = t;
@@ -81,7 +93,7 @@ bool NetDuel::start(std::string& why) {
             why = o_.levelFile + ": a network duel needs a duel level with two cannons";
             return false;
         }
-        link_ = Link::listen(o_.bindAddress, o_.port, 8, why);
+        link_ = Link::listen(o_.bindAddress, o_.port, kHostLimits, why);
         if (!link_) return false;
         game::net::LockstepOptions lo;
         lo.localCannon = 0;
@@ -180,52 +192,70 @@ std::string NetDuel::submit(const game::Command& c) {
     return lockstep_->submit(c);
 }
 
+void NetDuel::refuseJoin(PeerId peer, const std::string& why) {
+    link_->send(peer, reasonMessage(MessageType::Refuse, why));
+    closePeer(peer, why);
+}
+
 void NetDuel::hostHello(PeerId peer, const Message& m) {
     const std::string levelName = std::filesystem::path(level_->file).filename().string();
-    if (m.version != game::net::kProgramVersion) {
-        const std::string why = "program version differs: host runs '" +
-                                std::string(game::net::kProgramVersion) + "', " + m.name +
-                                " runs '" + m.version + "'";
-        link_->send(peer, reasonMessage(MessageType::Refuse, why));
-        return closePeer(peer, why);
-    }
-    if (m.levelHash != level_->contentHash) {
-        const std::string why = "level differs: host plays " + levelName + " (content hash " +
-                                level_->contentHash + "), " + m.name +
-                                (m.levelHash.empty() ? " has no level with that name"
-                                                     : " has content hash " + m.levelHash);
-        link_->send(peer, reasonMessage(MessageType::Refuse, why));
-        return closePeer(peer, why);
-    }
+    if (m.version != game::net::kProgramVersion)
+        return refuseJoin(peer, "program version differs: host runs '" +
+                                    std::string(game::net::kProgramVersion) + "', " + m.name +
+                                    " runs '" + m.version + "'");
+    if (m.levelHash != level_->contentHash)
+        return refuseJoin(peer, "level differs: host plays " + levelName + " (content hash " +
+                                    level_->contentHash + "), " + m.name +
+                                    (m.levelHash.empty() ? " has no level with that name"
+                                                         : " has content hash " + m.levelHash));
     greeted_.erase(peer);
+    if (m.spectator) return welcomeSpectator(peer, m);
+    if (const std::string why = seatRefusal(m); !why.empty()) return refuseJoin(peer, why);
+    seatPlayer(peer, m);
+}
+
+void NetDuel::welcomeSpectator(PeerId peer, const Message& m) {
+    if (spectators_.size() >= kMaxSpectators)
+        return refuseJoin(peer, "the host takes at most " + std::to_string(kMaxSpectators) +
+                                    " spectators");
+    spectators_.insert(peer);
     Message welcome;
     welcome.type = MessageType::Welcome;
-    if (m.spectator) {
-        spectators_.insert(peer);
-        welcome.cannon = -1;
-        welcome.name = names_[0];
-        link_->send(peer, welcome);
-        for (const Message& c : lockstep_->catchUp(0, true))
-            link_->send(peer, c);
-        log_.push_back("spectator " + m.name + " joined at tick " +
-                       std::to_string(lockstep_->match().tick()));
-        return;
-    }
-    if (player_ && m.name == names_[1]) {
-        // The same player again from a new connection: its old one went stale before
+    welcome.cannon = -1;
+    welcome.name = names_[0];
+    link_->send(peer, welcome);
+    for (const Message& c : lockstep_->catchUp(0, true))
+        link_->send(peer, c);
+    log_.push_back("spectator " + m.name + " joined at tick " +
+                   std::to_string(lockstep_->match().tick()));
+}
+
+std::string NetDuel::seatRefusal(const Message& m) const {
+    if (seatToken_.empty()) return ""; // the seat is free: the first player takes it
+    if (m.token == seatToken_) return "";
+    // A name is whatever a peer says: only the token the seat's player was given at its
+    // first join takes the seat back.
+    if (!m.token.empty()) return "that is not the seat's token (join with --spectate to watch)";
+    return "the seat is " + names_[1] + "'s" + (player_ ? "" : ", held for its return") +
+           "; a rejoin presents the seat token the host gave at the first join (join with "
+           "--spectate to watch)";
+}
+
+void NetDuel::seatPlayer(PeerId peer, const Message& m) {
+    if (player_ && player_ != peer) {
+        // The seat's player again from a new connection: its old one went stale before
         // the timeout noticed (a cut cable). The new one takes over.
         link_->cut(player_);
         player_ = nullptr;
     }
-    if (player_) {
-        const std::string why = "the match already has two players (join with --spectate to watch)";
-        link_->send(peer, reasonMessage(MessageType::Refuse, why));
-        return closePeer(peer, why);
-    }
+    if (seatToken_.empty()) seatToken_ = newSeatToken();
     player_ = peer;
     names_[1] = m.name;
+    Message welcome;
+    welcome.type = MessageType::Welcome;
     welcome.cannon = 1;
     welcome.name = names_[0];
+    welcome.token = seatToken_;
     lockstep_->forgetPeerProgress();
     welcome.commandIndex = lockstep_->commandCount();
     welcome.tick = static_cast<std::uint32_t>(lockstep_->match().tick());
@@ -243,6 +273,47 @@ void NetDuel::hostHello(PeerId peer, const Message& m) {
     // commands too), then our mark.
     for (const Message& c : lockstep_->catchUp(m.commandIndex, false))
         link_->send(peer, c);
+}
+
+void NetDuel::guardTheDoor() {
+    for (const std::string& who : link_->resetStaleHandshakes(kHandshakeSeconds))
+        log_.push_back("dropped " + who + ": its connection stayed in the handshake for over " +
+                       std::to_string(static_cast<int>(kHandshakeSeconds)) + " s");
+    std::vector<PeerId> silent;
+    for (const auto& [peer, at] : greeted_)
+        if (since(at) > kHelloSeconds) silent.push_back(peer);
+    for (PeerId peer : silent) {
+        log_.push_back("dropped " + link_->address(peer) + ": no hello within " +
+                       std::to_string(static_cast<int>(kHelloSeconds)) + " s");
+        link_->send(peer, reasonMessage(MessageType::Bye, "no hello in time"));
+        link_->flush(); // the goodbye goes before the slot is freed
+        greeted_.erase(peer);
+        link_->disconnectNow(peer);
+    }
+    keepRoom();
+}
+
+void NetDuel::keepRoom() {
+    while (link_->freeSlots() < kReservedSlots) {
+        // The connection unidentified the longest: in ENet's handshake, or connected
+        // without a hello.
+        std::optional<std::pair<PeerId, double>> oldest;
+        bool greeted = false;
+        for (const auto& entry : link_->handshakes())
+            if (!oldest || entry.second > oldest->second) oldest = entry;
+        for (const auto& [peer, at] : greeted_)
+            if (!oldest || since(at) > oldest->second) oldest = {peer, since(at)}, greeted = true;
+        if (!oldest || oldest->second < kGraceSeconds) return;
+        log_.push_back("dropped " + link_->address(oldest->first) +
+                       (greeted ? ": no hello" : ": still in the handshake") +
+                       ", and the host keeps room for its player");
+        if (greeted) {
+            greeted_.erase(oldest->first);
+            link_->disconnectNow(oldest->first);
+        } else {
+            link_->reset(oldest->first);
+        }
+    }
 }
 
 void NetDuel::shareAim(std::optional<game::net::AimSeen> editing) {
@@ -290,75 +361,82 @@ void NetDuel::hostMessage(PeerId peer, const Message& m) {
         closePeer(peer, "protocol error: " + why);
 }
 
+void NetDuel::sendHello(const std::string& levelHash) {
+    Message hello;
+    hello.type = MessageType::Hello;
+    hello.version = game::net::kProgramVersion;
+    hello.name = o_.name;
+    hello.spectator = o_.spectate;
+    hello.levelHash = levelHash;
+    hello.token = o_.spectate ? "" : o_.token;
+    if (lockstep_) {
+        hello.commandIndex = lockstep_->commandCount();
+        hello.tick = static_cast<std::uint32_t>(lockstep_->match().tick());
+    }
+    link_->send(server_, hello);
+}
+
+void NetDuel::onOffer(const Message& m) {
+    if (m.type != MessageType::Offer)
+        return finish(NetResult::Failed, std::string("expected the host's offer, got ") +
+                                             game::net::messageName(m.type));
+    offered_ = true;
+    names_[0] = m.name;
+    const std::filesystem::path file = std::filesystem::path(o_.levelsDir) / m.levelName;
+    std::string levelHash;
+    try {
+        game::Level level = game::loadLevel(file.string());
+        levelHash = level.contentHash;
+        if (level.contentHash == m.levelHash) level_ = std::move(level);
+    } catch (const std::exception&) {
+        // No such level here: the empty hash tells the host, which says what differs.
+    }
+    sendHello(levelHash);
+}
+
+void NetDuel::beforeWelcome(const Message& m) {
+    if (m.type == MessageType::Refuse)
+        return finish(NetResult::Refused, "the host refused: " + m.reason);
+    if (m.type == MessageType::Bye) return finish(NetResult::Refused, "the host closed: " + m.reason);
+    if (m.type == MessageType::Offer && level_) // a reconnect: the host offers again
+        return sendHello(level_->contentHash);
+    if (m.type != MessageType::Welcome)
+        return finish(NetResult::Failed,
+                      std::string("expected welcome, got ") + game::net::messageName(m.type));
+    onWelcome(m);
+}
+
+void NetDuel::onWelcome(const Message& m) {
+    welcomed_ = true;
+    paused_ = false;
+    names_[0] = m.name;
+    if (!m.token.empty() && m.token != o_.token) {
+        o_.token = m.token; // presented again by every reconnect
+        log_.push_back("seat token " + m.token + ": a new process takes this seat back with --token " +
+                       m.token);
+    }
+    if (lockstep_) {
+        log_.push_back("back in the match at tick " + std::to_string(lockstep_->match().tick()));
+        lockstep_->catchUpTo(m.tick);
+        lockstep_->resume(m.commandIndex);
+        return;
+    }
+    game::net::LockstepOptions lo;
+    lo.localCannon = m.cannon;
+    lo.autoplay = o_.autoplay;
+    lo.tamperTick = o_.tamperTick;
+    lockstep_ = std::make_unique<game::net::Lockstep>(*level_, lo);
+    lockstep_->catchUpTo(m.tick);
+    if (m.tick > 0)
+        log_.push_back("rejoining: replaying the match up to tick " + std::to_string(m.tick));
+    log_.push_back(std::string(o_.spectate ? "watching " : "playing ") +
+                   std::filesystem::path(level_->file).filename().string() + " against host " +
+                   m.name);
+}
+
 void NetDuel::joinMessage(const Message& m) {
-    if (!offered_) {
-        if (m.type != MessageType::Offer)
-            return finish(NetResult::Failed, std::string("expected the host's offer, got ") +
-                                                 game::net::messageName(m.type));
-        offered_ = true;
-        names_[0] = m.name;
-        Message hello;
-        hello.type = MessageType::Hello;
-        hello.version = game::net::kProgramVersion;
-        hello.name = o_.name;
-        hello.spectator = o_.spectate;
-        const std::filesystem::path file = std::filesystem::path(o_.levelsDir) / m.levelName;
-        try {
-            game::Level level = game::loadLevel(file.string());
-            hello.levelHash = level.contentHash;
-            if (level.contentHash == m.levelHash) level_ = std::move(level);
-        } catch (const std::exception&) {
-            // No such level here: the empty hash tells the host, which says what differs.
-        }
-        link_->send(server_, hello);
-        return;
-    }
-    if (!welcomed_) {
-        if (m.type == MessageType::Refuse)
-            return finish(NetResult::Refused, "the host refused: " + m.reason);
-        if (m.type == MessageType::Bye)
-            return finish(NetResult::Refused, "the host closed: " + m.reason);
-        if (m.type == MessageType::Offer && level_) { // a reconnect: the host offers again
-            Message hello;
-            hello.type = MessageType::Hello;
-            hello.version = game::net::kProgramVersion;
-            hello.name = o_.name;
-            hello.spectator = o_.spectate;
-            hello.levelHash = level_->contentHash;
-            if (lockstep_) {
-                hello.commandIndex = lockstep_->commandCount();
-                hello.tick = static_cast<std::uint32_t>(lockstep_->match().tick());
-            }
-            link_->send(server_, hello);
-            return;
-        }
-        if (m.type != MessageType::Welcome)
-            return finish(NetResult::Failed,
-                          std::string("expected welcome, got ") + game::net::messageName(m.type));
-        welcomed_ = true;
-        paused_ = false;
-        names_[0] = m.name;
-        if (!lockstep_) {
-            game::net::LockstepOptions lo;
-            lo.localCannon = m.cannon;
-            lo.autoplay = o_.autoplay;
-            lo.tamperTick = o_.tamperTick;
-            lockstep_ = std::make_unique<game::net::Lockstep>(*level_, lo);
-            lockstep_->catchUpTo(m.tick);
-            if (m.tick > 0)
-                log_.push_back("rejoining: replaying the match up to tick " +
-                               std::to_string(m.tick));
-            log_.push_back(std::string(o_.spectate ? "watching " : "playing ") +
-                           std::filesystem::path(level_->file).filename().string() +
-                           " against host " + m.name);
-        } else {
-            log_.push_back("back in the match at tick " +
-                           std::to_string(lockstep_->match().tick()));
-            lockstep_->catchUpTo(m.tick);
-            lockstep_->resume(m.commandIndex);
-        }
-        return;
-    }
+    if (!offered_) return onOffer(m);
+    if (!welcomed_) return beforeWelcome(m);
     if (m.type == MessageType::Bye) {
         peerBye_ = true;
         peerByeReason_ = m.reason;
@@ -380,7 +458,7 @@ void NetDuel::onEvent(const LinkEvent& e) {
         return;
     case LinkEvent::Kind::Connected:
         if (o_.host) {
-            greeted_.insert(e.peer);
+            greeted_[e.peer] = Clock::now();
             link_->send(e.peer, offerFor(*level_, names_[0], game::kDefaultCheckpointEvery));
         } else {
             server_ = e.peer;
@@ -499,6 +577,7 @@ bool NetDuel::pump(std::uint32_t waitMs, std::uint64_t maxTicks) {
          e.kind != LinkEvent::Kind::None && result_ == NetResult::Running; e = link_->poll(0))
         onEvent(e);
     if (result_ != NetResult::Running) return false;
+    if (o_.host) guardTheDoor();
     const bool connected = o_.host ? player_ != nullptr : (server_ != nullptr && welcomed_);
     // After the peer's goodbye the stream is complete: play it out, connected or not, up
     // to the local player's turn, which nobody would see.

@@ -13,6 +13,7 @@
 #include "ui/net/enet_link.h"
 
 #include <chrono>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -22,6 +23,22 @@
 namespace ui::net {
 
 inline constexpr std::uint16_t kDefaultPort = 7777;
+
+// What the host admits, so that nobody can hold its door shut (docs/network.md).
+/// ENet slots and the most one address may hold: the player, its stale connection on
+/// a reconnect, and spectators, from one machine.
+inline constexpr HostLimits kHostLimits{16, 4};
+/// Spectators at most; more are refused.
+inline constexpr std::size_t kMaxSpectators = 4;
+/// Slots kept free for the player it expects: when fewer are free, the connection that
+/// has been unidentified longest (in the handshake, or without a hello) is dropped, if
+/// it has been so for kGraceSeconds (a player needs a round trip or two to say hello:
+/// the newest connection is the one most likely to be the player).
+inline constexpr std::size_t kReservedSlots = 2;
+inline constexpr double kGraceSeconds = 1.0;
+/// A connection must finish ENet's handshake, and then say hello, within this (s).
+inline constexpr double kHandshakeSeconds = 5.0;
+inline constexpr double kHelloSeconds = 5.0;
 
 struct NetOptions {
     bool host = true;
@@ -33,6 +50,9 @@ struct NetOptions {
     std::string address = "127.0.0.1";
     std::string levelsDir = "levels"; ///< where the joiner looks for the host's level
     bool spectate = false;
+    /// The seat token the host gave at the first join (16 hex digits): a new process
+    /// presents it to take the seat back ("" for a first join).
+    std::string token;
     // both
     std::string name = "player";
     bool autoplay = false;
@@ -89,6 +109,21 @@ class NetDuel {
     void hostMessage(PeerId peer, const game::net::Message& m);
     void joinMessage(const game::net::Message& m);
     void hostHello(PeerId peer, const game::net::Message& m);
+    void refuseJoin(PeerId peer, const std::string& why);
+    void welcomeSpectator(PeerId peer, const game::net::Message& m);
+    void seatPlayer(PeerId peer, const game::net::Message& m);
+    /// The seat's token checked: "" when `m` may take the seat, else why not.
+    std::string seatRefusal(const game::net::Message& m) const;
+    /// Host: drops connections that hold a slot without becoming a player or spectator.
+    void guardTheDoor();
+    /// Host: while fewer than kReservedSlots are free, drops the connection unidentified
+    /// the longest (at least kGraceSeconds).
+    void keepRoom();
+    // Joiner: the host's messages before the match, and the welcome.
+    void onOffer(const game::net::Message& m);
+    void sendHello(const std::string& levelHash);
+    void beforeWelcome(const game::net::Message& m);
+    void onWelcome(const game::net::Message& m);
     void stepMatch(std::uint64_t maxTicks);
     void flushOutboxes();
     void finish(NetResult r, std::string message);
@@ -111,7 +146,11 @@ class NetDuel {
     // host
     PeerId player_ = nullptr;
     bool playerEverJoined_ = false;
-    std::set<PeerId> spectators_, greeted_;
+    std::set<PeerId> spectators_;
+    /// Connected, offered the match, no hello yet: since when.
+    std::map<PeerId, Clock::time_point> greeted_;
+    /// The seat's secret, given to its player at the first join ("" while it is free).
+    std::string seatToken_;
     // join
     PeerId server_ = nullptr;
     bool offered_ = false;

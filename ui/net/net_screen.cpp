@@ -1,7 +1,8 @@
 #include "ui/net/net_screen.h"
 
-#include "game/cli/args.h"
 #include "game/audio/synthesizer.h"
+#include "game/cli/args.h"
+#include "game/files/save_folder.h"
 #include "ui/game/aim_input.h"
 #include "ui/game/game_menus.h"
 #include "ui/game/match_frame.h"
@@ -68,14 +69,13 @@ void pickMap(Form& f) {
     ImGui::EndCombo();
 }
 
-/// The player's replays folder's file for the last network duel ("" without a home).
+/// The player's replays folder's file for the last network duel ("" without a home). A
+/// settings folder that cannot be written gives a temporary folder, said on the terminal.
 std::string lastNetworkDuelFile() {
-    const std::string config = configFolder();
-    if (config.empty()) return "";
-    const std::filesystem::path folder = std::filesystem::path(config) / "replays";
-    std::error_code ec;
-    std::filesystem::create_directories(folder, ec);
-    return ec ? "" : (folder / "network-last.json").string();
+    const game::SaveFolder saves(configFolder());
+    if (!saves.notice().empty()) std::cerr << "artillery: " << saves.notice() << "\n";
+    if (saves.replaysFolder().empty()) return "";
+    return (std::filesystem::path(saves.replaysFolder()) / "network-last.json").string();
 }
 
 /// Draws the host/join form; true when the player pressed Host, Join or Watch (and
@@ -237,6 +237,177 @@ bool drawLeaveQuestion(bool& open, const std::string& opponent) {
     return leave;
 }
 
+/// The duel's window and everything that lives as long as it: the form, the duel once
+/// chosen, the local player's aim, the log and the sound. One frame at a time: the
+/// events, the duel's ticks, the picture.
+class DuelWindow {
+  public:
+    DuelWindow(const NetWindowOptions& opt, std::unique_ptr<SdlWindow> window, std::ostream& out)
+        : opt_(opt), out_(out), window_(std::move(window)), imgui_(*window_, window_.get()),
+          chosen_(opt.duel) {
+        // The duel sounds as a game in the game's window does: the synthesizer hears the
+        // match after each frame's ticks (it never writes it: the lockstep hashes are the
+        // same).
+        if (audio_.silent()) std::cerr << "artillery: playing silent (" << audio_.why() << ")\n";
+        sound_.setMix(playerSoundMix(opt.frames.has_value()));
+        form_.maps = duelMaps(opt.duel.levelsDir);
+        copyInto(form_.name, sizeof form_.name, opt.duel.name);
+        if (!opt.duel.levelFile.empty())
+            copyInto(form_.level, sizeof form_.level, opt.duel.levelFile);
+        copyInto(form_.address, sizeof form_.address, opt.duel.address);
+        form_.port = opt.duel.port;
+        form_.autoplay = opt.duel.autoplay;
+        if (opt.startNow) begin(chosen_);
+    }
+
+    int run() {
+        auto last = Clock::now();
+        for (long long f = 0; running_ && (!opt_.frames || f < *opt_.frames); ++f) {
+            handleEvents();
+            const auto now = Clock::now();
+            const double dt = std::chrono::duration<double>(now - last).count();
+            last = now;
+            if (duel_) pumpDuel(dt);
+            drawFrame(dt);
+            const bool lastFrame = !running_ || (opt_.frames && f + 1 == *opt_.frames);
+            if (lastFrame) saveScreenshot();
+            window_->present();
+        }
+        if (!duel_) return game::cli::kCheckFailed;
+        duel_->leave(chosen_.name + leaving_);
+        for (const std::string& line : duel_->takeLog())
+            out_ << line << std::endl;
+        return duel_->result() == NetResult::Over ? game::cli::kOk : game::cli::kCheckFailed;
+    }
+
+  private:
+    void begin(NetOptions o) {
+        // Every game is a replay: without --record, a duel in the window goes where the
+        // game's own replays go (its Replays list), as the last network duel. Check runs
+        // (--frames) leave nothing behind.
+        if (o.recordFile.empty() && !opt_.frames) o.recordFile = lastNetworkDuelFile();
+        duel_ = std::make_unique<NetDuel>(o);
+        std::string why;
+        if (!duel_->start(why)) {
+            formError_ = why;
+            duel_.reset();
+        }
+    }
+
+    void handleEvents() {
+        SDL_Event e;
+        while (SDL_PollEvent(&e)) {
+            if (window_->toggleFullScreenOn(e)) continue;
+            imgui_.processEvent(e);
+            if (e.type == SDL_QUIT) running_ = false;
+            if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_ESCAPE && duel_ &&
+                duel_->result() == NetResult::Running) {
+                askingToLeave_ = !askingToLeave_;
+                aim_.cancelCharge();
+                continue;
+            }
+            if (askingToLeave_) continue; // the question has the keys and the mouse
+            if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_ESCAPE && !duel_ &&
+                !imgui_.wantsKeyboard())
+                running_ = false; // Esc on the form: back (to the level select, if from there)
+            // A key typed into the form's fields, or the mouse over a panel, is the
+            // panels'; a key let go ends a charge wherever it is.
+            const bool forPanels = e.type == SDL_KEYDOWN ? imgui_.wantsKeyboard()
+                                   : e.type == SDL_KEYUP ? false
+                                                         : imgui_.wantsMouse() || imgui_.pressOnWindow(e);
+            if (!forPanels && duel_ && duel_->lockstep())
+                turnEvent(*duel_, e, aim_,
+                          camera_.toPixel(duel_->lockstep()->match().cannon().def.position),
+                          preview_, status_);
+        }
+    }
+
+    /// The match runs at 120 ticks per wall second; lockstep may hold it back.
+    void pumpDuel(double dt) {
+        owed_ = std::min(owed_ + dt * kTicksPerSecond, 16.0);
+        const auto ticks = static_cast<std::uint64_t>(owed_);
+        const std::uint64_t before = duel_->lockstep() ? duel_->lockstep()->match().tick() : 0;
+        duel_->pump(0, ticks);
+        const std::uint64_t after = duel_->lockstep() ? duel_->lockstep()->match().tick() : 0;
+        owed_ -= static_cast<double>(after - before);
+        if (after == before) owed_ = std::min(owed_, 1.0);
+        for (std::string& line : duel_->takeLog()) {
+            out_ << line << std::endl;
+            log_.push_back(std::move(line));
+            if (log_.size() > 6) log_.pop_front();
+        }
+        if (duel_->result() != NetResult::Running && opt_.closeWhenOver && ++overFrames_ > 30)
+            running_ = false;
+        if (duel_->lockstep()) holdTheAim(*duel_, aim_, dt, imgui_.wantsKeyboard(), status_);
+    }
+
+    void drawFrame(double dt) {
+        const int w = window_->width(), h = window_->height();
+        imgui_.newFrame(dt);
+        gl::fn.BindFramebuffer(GL_FRAMEBUFFER, window_->framebuffer());
+        const game::Match* match = duel_ && duel_->lockstep() ? &duel_->lockstep()->match() : nullptr;
+        if (match) {
+            view_.observe(*match);
+            camera_ = levelCamera(*match, w, h);
+            drawMatchFrame(renderer_, view_, *match, camera_, duelView(*duel_, aim_, preview_));
+            if (!audio_.silent()) {
+                sound_.setView({camera_.visibleMin().x, camera_.visibleMax().x});
+                sound_.observe(*match);
+            }
+        } else {
+            gl::fn.Viewport(0, 0, w, h);
+            gl::fn.ClearColor(0.07f, 0.12f, 0.2f, 1.0f);
+            gl::fn.Clear(GL_COLOR_BUFFER_BIT);
+        }
+        if (!duel_) {
+            if (drawForm(form_, chosen_, formError_)) begin(chosen_);
+        } else {
+            drawStatus(*duel_, log_, status_);
+            const int me = duel_->lockstep() ? duel_->lockstep()->localCannon() : 0;
+            if (askingToLeave_ &&
+                drawLeaveQuestion(askingToLeave_, duel_->playerName(me == 0 ? 1 : 0))) {
+                leaving_ = " left";
+                running_ = false; // leaves with a goodbye in run()
+            }
+        }
+        imgui_.drawLabels(renderer_.labels());
+        imgui_.render();
+        if (!audio_.silent()) audio_.feed(sound_);
+    }
+
+    void saveScreenshot() {
+        if (opt_.screenshot.empty()) return;
+        const std::string err = writePng(
+            opt_.screenshot, readFramebuffer(window_->framebuffer(), window_->width(), window_->height()));
+        if (err.empty())
+            out_ << "screenshot: " << opt_.screenshot << std::endl;
+        else
+            std::cerr << "artillery: " << err << "\n";
+    }
+
+    const NetWindowOptions& opt_;
+    std::ostream& out_;
+    std::unique_ptr<SdlWindow> window_; ///< its GL functions loaded (runNetWindow)
+    ImGuiLayer imgui_;
+    AudioDevice audio_;
+    game::audio::Synthesizer sound_{game::audio::SynthesizerDef{.live = true}};
+    Renderer2D renderer_;
+    MatchView view_;
+    Form form_;
+    NetOptions chosen_;
+    std::unique_ptr<NetDuel> duel_;
+    std::deque<std::string> log_;
+    std::string status_, formError_;
+    AimInput aim_;
+    bool preview_ = true; ///< the launch arc, as in a duel at home (P)
+    Camera camera_;       ///< the last frame's: where the cannon is on screen
+    double owed_ = 0.0;
+    long long overFrames_ = 0;
+    bool running_ = true;
+    bool askingToLeave_ = false;               ///< Esc in a running duel
+    std::string leaving_ = " closed the window"; ///< why, as the other side will read it
+};
+
 } // namespace
 
 int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
@@ -251,140 +422,8 @@ int runNetWindow(const NetWindowOptions& opt, std::ostream& out) {
         return game::cli::kBadInput;
     }
     loadGLOrThrow(*window);
-    ImGuiLayer imgui(*window, window.get());
-    // The duel sounds as a game in the game's window does: the synthesizer hears the match
-    // after each frame's ticks (it never writes it: the lockstep hashes are the same).
-    AudioDevice audio;
-    if (audio.silent()) std::cerr << "artillery: playing silent (" << audio.why() << ")\n";
-    game::audio::Synthesizer sound{game::audio::SynthesizerDef{.live = true}};
-    sound.setMix(playerSoundMix(opt.frames.has_value()));
-    Renderer2D renderer;
-    MatchView view;
-    Form form;
-    form.maps = duelMaps(opt.duel.levelsDir);
-    copyInto(form.name, sizeof form.name, opt.duel.name);
-    if (!opt.duel.levelFile.empty()) copyInto(form.level, sizeof form.level, opt.duel.levelFile);
-    copyInto(form.address, sizeof form.address, opt.duel.address);
-    form.port = opt.duel.port;
-    form.autoplay = opt.duel.autoplay;
-    NetOptions chosen = opt.duel;
-    std::unique_ptr<NetDuel> duel;
-    std::deque<std::string> log;
-    std::string status, formError;
-    auto begin = [&](NetOptions o) {
-        // Every game is a replay: without --record, a duel in the window goes where the
-        // game's own replays go (its Replays list), as the last network duel. Check runs
-        // (--frames) leave nothing behind.
-        if (o.recordFile.empty() && !opt.frames) o.recordFile = lastNetworkDuelFile();
-        duel = std::make_unique<NetDuel>(o);
-        std::string why;
-        if (!duel->start(why)) {
-            formError = why;
-            duel.reset();
-        }
-    };
-    if (opt.startNow) begin(chosen);
-    AimInput aim;
-    bool preview = true; // the launch arc, as in a duel at home (P)
-    Camera camera;       // the last frame's: where the cannon is on screen
-    auto last = Clock::now();
-    double owed = 0.0;
-    long long overFrames = 0;
-    bool running = true;
-    bool askingToLeave = false; // Esc in a running duel
-    std::string leaving = " closed the window"; // why, as the other side will read it
-    for (long long f = 0; running && (!opt.frames || f < *opt.frames); ++f) {
-        SDL_Event e;
-        while (SDL_PollEvent(&e)) {
-            if (window->toggleFullScreenOn(e)) continue;
-            imgui.processEvent(e);
-            if (e.type == SDL_QUIT) running = false;
-            if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_ESCAPE && duel &&
-                duel->result() == NetResult::Running) {
-                askingToLeave = !askingToLeave;
-                aim.cancelCharge();
-                continue;
-            }
-            if (askingToLeave) continue; // the question has the keys and the mouse
-            if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_ESCAPE && !duel &&
-                !imgui.wantsKeyboard())
-                running = false; // Esc on the form: back (to the level select, if from there)
-            // A key typed into the form's fields, or the mouse over a panel, is the
-            // panels'; a key let go ends a charge wherever it is.
-            const bool forPanels = e.type == SDL_KEYDOWN ? imgui.wantsKeyboard()
-                                   : e.type == SDL_KEYUP ? false
-                                                         : imgui.wantsMouse() || imgui.pressOnWindow(e);
-            if (!forPanels && duel && duel->lockstep())
-                turnEvent(*duel, e, aim, camera.toPixel(duel->lockstep()->match().cannon().def.position),
-                          preview, status);
-        }
-        const auto now = Clock::now();
-        const double dt = std::chrono::duration<double>(now - last).count();
-        last = now;
-        if (duel) {
-            // The match runs at 120 ticks per wall second; lockstep may hold it back.
-            owed = std::min(owed + dt * kTicksPerSecond, 16.0);
-            const auto ticks = static_cast<std::uint64_t>(owed);
-            const std::uint64_t before = duel->lockstep() ? duel->lockstep()->match().tick() : 0;
-            duel->pump(0, ticks);
-            const std::uint64_t after = duel->lockstep() ? duel->lockstep()->match().tick() : 0;
-            owed -= static_cast<double>(after - before);
-            if (after == before) owed = std::min(owed, 1.0);
-            for (std::string& line : duel->takeLog()) {
-                out << line << std::endl;
-                log.push_back(std::move(line));
-                if (log.size() > 6) log.pop_front();
-            }
-            if (duel->result() != NetResult::Running && opt.closeWhenOver && ++overFrames > 30)
-                running = false;
-            if (duel->lockstep()) holdTheAim(*duel, aim, dt, imgui.wantsKeyboard(), status);
-        }
-        const int w = window->width(), h = window->height();
-        imgui.newFrame(dt);
-        gl::fn.BindFramebuffer(GL_FRAMEBUFFER, window->framebuffer());
-        const game::Match* match = duel && duel->lockstep() ? &duel->lockstep()->match() : nullptr;
-        if (match) {
-            view.observe(*match);
-            camera = levelCamera(*match, w, h);
-            drawMatchFrame(renderer, view, *match, camera, duelView(*duel, aim, preview));
-            if (!audio.silent()) {
-                sound.setView({camera.visibleMin().x, camera.visibleMax().x});
-                sound.observe(*match);
-            }
-        } else {
-            gl::fn.Viewport(0, 0, w, h);
-            gl::fn.ClearColor(0.07f, 0.12f, 0.2f, 1.0f);
-            gl::fn.Clear(GL_COLOR_BUFFER_BIT);
-        }
-        if (!duel) {
-            if (drawForm(form, chosen, formError)) begin(chosen);
-        } else {
-            drawStatus(*duel, log, status);
-            const int me = duel->lockstep() ? duel->lockstep()->localCannon() : 0;
-            if (askingToLeave && drawLeaveQuestion(askingToLeave, duel->playerName(me == 0 ? 1 : 0))) {
-                leaving = " left";
-                running = false; // leaves with a goodbye below
-            }
-        }
-        imgui.drawLabels(renderer.labels());
-        imgui.render();
-        if (!audio.silent()) audio.feed(sound);
-        const bool lastFrame = !running || (opt.frames && f + 1 == *opt.frames);
-        if (lastFrame && !opt.screenshot.empty()) {
-            const std::string err =
-                writePng(opt.screenshot, readFramebuffer(window->framebuffer(), w, h));
-            if (err.empty())
-                out << "screenshot: " << opt.screenshot << std::endl;
-            else
-                std::cerr << "artillery: " << err << "\n";
-        }
-        window->present();
-    }
-    if (!duel) return game::cli::kCheckFailed;
-    duel->leave(chosen.name + leaving);
-    for (const std::string& line : duel->takeLog())
-        out << line << std::endl;
-    return duel->result() == NetResult::Over ? game::cli::kOk : game::cli::kCheckFailed;
+    DuelWindow duelWindow(opt, std::move(window), out);
+    return duelWindow.run();
 }
 
 } // namespace ui::net

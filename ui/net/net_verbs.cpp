@@ -1,6 +1,7 @@
 #include "ui/net/net_verbs.h"
 
 #include "game/files/data_folder.h"
+#include "game/cli/verbs.h"
 #include "game/replay.h"
 #include "ui/net/net_duel.h"
 #include "ui/net/net_screen.h"
@@ -57,10 +58,13 @@ Test hooks (both verbs): --tamper-at-tick N nudges the first shell in flight fro
 on (a tampered client), --drop-at-tick N (join) cuts the connection once and reconnects,
 --quit-at-tick N vanishes without a goodbye.
 Exit: 0 the match was played to the end, 1 it was not (desync, abandoned, refused),
-2 bad input. See docs/network.md.
+2 bad input (an address --bind cannot take, a --record FILE that cannot be written). The
+host drops a connection that says no hello within 5 s, or stays in ENet's handshake for
+over 5 s; takes 4 connections from one address and 4 spectators at most; and gives the
+joining player's seat a secret token, which a rejoin must present. See docs/network.md.
 )";
 
-const char* const kJoinUsage = R"(usage: artillery join HOST[:P] [--name NAME] [--spectate]
+const char* const kJoinUsage = R"(usage: artillery join HOST[:P] [--name NAME] [--token T] [--spectate]
            [--commands FILE | --autoplay] [--record FILE] [--levels DIR] [--timeout S]
            [--wait S] [--window] [--json]
 
@@ -71,6 +75,8 @@ levels) and must have the same content hash; the program version must match too.
 
   HOST[:P]          the host's address and port (default port 7777)
   --name NAME       your name (default guest)
+  --token T         the seat token the host gave at your first join (printed then): a
+                    new process takes your seat back with it; a name alone does not
   --spectate        watch only (the host's read-only command stream)
   --commands FILE   a JSON list of commands for your cannon, applied at their ticks
                     in your turns
@@ -86,7 +92,8 @@ levels) and must have the same content hash; the program version must match too.
 Exit: 0 the match was played to the end, 1 it was not, 2 bad input.
 )";
 
-int runNet(const Args& args, std::ostream& out, bool host) {
+/// LEVEL (host) or HOST[:P] (join), and the options both verbs take.
+NetOptions readNetOptions(const Args& args, bool host) {
     NetOptions o;
     o.host = host;
     args.text("<positional>"); // LEVEL or HOST[:P]
@@ -106,6 +113,10 @@ int runNet(const Args& args, std::ostream& out, bool host) {
         o.port = a->second;
         o.spectate = args.flag("spectate");
         o.levelsDir = args.text("levels", game::levelsFolder());
+        o.token = args.text("token", "");
+        if (!o.token.empty() && (o.token.size() != 16 || o.token.find_first_not_of(
+                                                             "0123456789abcdef") != std::string::npos))
+            args.fail("--token expects the 16 hex digits the host gave, got '" + o.token + "'");
     }
     o.name = args.text("name", host ? "host" : "guest");
     if (o.name.empty() || o.name.size() > game::net::kMaxNameBytes)
@@ -114,9 +125,9 @@ int runNet(const Args& args, std::ostream& out, bool host) {
         if (c < 0x20 || c > 0x7e) args.fail("--name expects printable ASCII characters");
     o.autoplay = args.flag("autoplay");
     o.recordFile = args.text("record", "");
+    if (!o.recordFile.empty()) requireWritableFile(args, "record", o.recordFile);
     o.timeoutSeconds = args.number("timeout", 60.0, 0.1, 86400.0, "s");
     o.waitSeconds = args.number("wait", 120.0, 0.1, 86400.0, "s");
-    const double limitSeconds = args.number("limit", 3600.0, 1.0, 86400.0, "s");
     if (args.has("tamper-at-tick"))
         o.tamperTick = static_cast<std::uint64_t>(args.integer("tamper-at-tick", 0, 0, 1'000'000));
     if (args.has("drop-at-tick"))
@@ -127,11 +138,63 @@ int runNet(const Args& args, std::ostream& out, bool host) {
         try {
             o.script = game::loadCommands(*file);
         } catch (const std::exception& e) {
-            std::cerr << e.what() << "\n";
-            return game::cli::kBadInput;
+            throw game::cli::UsageError(e.what());
         }
     }
+    return o;
+}
+
+/// The duel without a window, to its end: bounded by every wait inside (each has its
+/// own timeout) and by --limit for the whole run. Ctrl+C leaves with a goodbye.
+int playHeadless(NetDuel& duel, const NetOptions& o, double limitSeconds, std::ostream& log) {
+    const auto started = std::chrono::steady_clock::now();
+    auto printLog = [&] {
+        for (const std::string& line : duel.takeLog())
+            log << line << std::endl;
+    };
+    printLog();
+    gStopRequested = 0;
+    std::signal(SIGINT, requestStop);
+    std::signal(SIGTERM, requestStop);
+    int code = game::cli::kOk;
+    while (duel.pump(5, 240)) {
+        printLog();
+        if (gStopRequested) {
+            duel.leave(o.name + " stopped");
+            printLog();
+            break;
+        }
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
+            limitSeconds) {
+            duel.leave(o.name + " stopped after --limit " +
+                       std::to_string(static_cast<int>(limitSeconds)) + " s");
+            log << "stopped after --limit " << limitSeconds << " s\n";
+            code = game::cli::kCheckFailed;
+            break;
+        }
+    }
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+    printLog();
+    if (code != game::cli::kOk) return code;
+    return duel.result() == NetResult::Over ? game::cli::kOk : game::cli::kCheckFailed;
+}
+
+void printResultJson(const NetDuel& duel, std::ostream& out) {
+    const auto* ls = duel.lockstep();
+    std::string msg;
+    for (char c : duel.message())
+        msg += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+    out << "{\"result\":\"" << netResultName(duel.result()) << "\",\"message\":\"" << msg
+        << "\",\"ticks\":" << (ls ? ls->match().tick() : 0) << ",\"final_hash\":\""
+        << (ls ? game::hex(ls->match().hash()) : "")
+        << "\",\"winner\":" << (ls ? ls->match().winner() : -1) << "}\n";
+}
+
+int runNet(const Args& args, std::ostream& out, bool host) {
+    const NetOptions o = readNetOptions(args, host);
     const bool json = args.flag("json");
+    const double limitSeconds = args.number("limit", 3600.0, 1.0, 86400.0, "s");
     // A person plays in a window; only the computer, a script or a spectator plays
     // without one.
     const bool player = !o.autoplay && !args.has("commands") && !o.spectate;
@@ -149,57 +212,18 @@ int runNet(const Args& args, std::ostream& out, bool host) {
         wo.personPlays = player;
         // The form is for choosing: a level or an address on the command line (or a
         // player other than you) has chosen already.
-        wo.startNow = o.autoplay || o.spectate || args.has("commands") || !pos.empty();
+        wo.startNow = o.autoplay || o.spectate || args.has("commands") || !args.positionals().empty();
         return runNetWindow(wo, out);
     }
-
     NetDuel duel(o);
     std::string why;
     if (!duel.start(why)) {
         std::cerr << "artillery " << (host ? "host" : "join") << ": " << why << "\n";
         return game::cli::kBadInput;
     }
-    std::ostream& log = json ? std::cerr : out;
-    const auto started = std::chrono::steady_clock::now();
-    auto printLog = [&] {
-        for (const std::string& line : duel.takeLog())
-            log << line << std::endl;
-    };
-    printLog();
-    gStopRequested = 0;
-    std::signal(SIGINT, requestStop);
-    std::signal(SIGTERM, requestStop);
-    // Bounded: every wait inside has its own timeout, and the whole run has --limit.
-    while (duel.pump(5, 240)) {
-        printLog();
-        if (gStopRequested) {
-            duel.leave(o.name + " stopped");
-            printLog();
-            break;
-        }
-        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
-            limitSeconds) {
-            duel.leave(o.name + " stopped after --limit " +
-                       std::to_string(static_cast<int>(limitSeconds)) + " s");
-            log << "stopped after --limit " << limitSeconds << " s\n";
-            printLog();
-            return game::cli::kCheckFailed;
-        }
-    }
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
-    printLog();
-    if (json) {
-        const auto* ls = duel.lockstep();
-        std::string msg;
-        for (char c : duel.message())
-            msg += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
-        out << "{\"result\":\"" << netResultName(duel.result()) << "\",\"message\":\"" << msg
-            << "\",\"ticks\":" << (ls ? ls->match().tick() : 0) << ",\"final_hash\":\""
-            << (ls ? game::hex(ls->match().hash()) : "")
-            << "\",\"winner\":" << (ls ? ls->match().winner() : -1) << "}\n";
-    }
-    return duel.result() == NetResult::Over ? game::cli::kOk : game::cli::kCheckFailed;
+    const int code = playHeadless(duel, o, limitSeconds, json ? std::cerr : out);
+    if (json) printResultJson(duel, out);
+    return code;
 }
 
 int runHost(const Args& args, std::ostream& out) {

@@ -122,7 +122,8 @@ mouse: wheel zooms at the pointer, right drag pans, Home re-frames
 controller: left stick aims, triggers set power, A fires, B ends the turn
 
 Headless, frames advance 1/60 s each, so a run gives the same picture every time.
-Exit codes: 0 ok, 1 the frame could not be drawn or saved, 2 bad input.
+Exit codes: 0 ok, 2 bad input (a --screenshot that cannot be written included: refused
+before anything is drawn), 3 the frame could not be drawn or saved, or the game failed.
 )";
 
 struct PlayOptions {
@@ -180,6 +181,7 @@ PlayOptions parseOptions(const Args& args) {
     o.screenshot = args.text("screenshot", "");
     if (!o.screenshot.empty() && std::filesystem::path(o.screenshot).extension() != ".png")
         args.fail("--screenshot expects a file name ending in .png, got '" + o.screenshot + "'");
+    if (!o.screenshot.empty()) game::cli::requireWritableFile(args, "screenshot", o.screenshot);
     o.headless = args.flag("headless");
     const std::string context = args.text("context", "auto");
     if (context == "auto")
@@ -319,7 +321,7 @@ int runHeadless(const PlayOptions& o, RunReport& report) {
     auto context = createHeadlessContext(o.width, o.height, o.backend, error);
     if (!context) {
         std::cerr << "artillery play: no headless GL context: " << error << "\n";
-        return game::cli::kCheckFailed;
+        return game::cli::kWorkFailed;
     }
     report.context = context->name();
     const auto screenPtr = makeScreen(*context, nullptr, o);
@@ -335,7 +337,7 @@ int runHeadless(const PlayOptions& o, RunReport& report) {
         accumulate(report, ms);
     }
     report.layout = screen.layoutJson();
-    return saveIfAsked(screen, o, report) ? game::cli::kOk : game::cli::kCheckFailed;
+    return saveIfAsked(screen, o, report) ? game::cli::kOk : game::cli::kWorkFailed;
 }
 
 /// Returns -1 when no window could be opened (the caller falls back to headless).
@@ -368,7 +370,7 @@ int runWindow(const PlayOptions& o, RunReport& report) {
                 std::cout << "screenshot: " << absolute(name) << std::endl;
         }
         if (lastFrame) report.layout = screen.layoutJson();
-        if (lastFrame && !saveIfAsked(screen, o, report)) return game::cli::kCheckFailed;
+        if (lastFrame && !saveIfAsked(screen, o, report)) return game::cli::kWorkFailed;
         window->present();
         const double ms = msSince(now);
         screen.setMeasuredFrameMs(ms);
@@ -446,9 +448,12 @@ int play(PlayOptions o, std::ostream& out) {
             o = headlessDemo(o);
             code = runHeadless(o, report);
         }
+    } catch (const game::LoadError& e) { // a level or replay the game was given
+        std::cerr << "artillery play: " << e.what() << "\n";
+        return game::cli::kBadInput;
     } catch (const std::exception& e) {
         std::cerr << "artillery play: " << e.what() << "\n";
-        return game::cli::kCheckFailed;
+        return game::cli::kWorkFailed;
     }
     if (code == game::cli::kOk) printReport(out, report, o, o.json);
     return code;
