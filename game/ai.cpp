@@ -1,5 +1,6 @@
 #include "game/ai.h"
 
+#include "game/ai_cover.h"
 #include "game/ai_weapons.h"
 #include "game/weapons.h"
 
@@ -43,6 +44,9 @@ namespace {
 
 /// A path that passes this close to the aim point is on target, m.
 constexpr double kOnTarget = 0.5;
+/// How far a trial path keeps from a block beyond the shell's radius, m: the aim error
+/// added afterwards must not turn a path that grazes its own wall into a hit on it.
+constexpr double kCoverMargin = 0.3;
 
 // Closest approach of a previewed path (a sample a tick, from the muzzle) to the target:
 // how close, m, and when, s after the shot.
@@ -70,14 +74,22 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
     AimSolution out;
     const double g = -match.world().def().forces.gravity.y;
     int bounces = 0; // contacts a trial shot flies on through
+    // In a duel a trial path ends at the first block in its way (the preview flies through
+    // bodies): the blocks are the castles' cover. In practice they are what the shot is
+    // for, and a shell into the blocks in front of a target block is a fair way to it.
+    const Ammo ammo = match.ammoAt(projectile.value_or(c.projectile));
+    const BlockCover cover = match.level().mode == Mode::Duel
+                                 ? BlockCover(match, target, 0.5 * ammo.preset.diameter + kCoverMargin)
+                                 : BlockCover();
     // Past the budget a trial is a miss, not flown; the chosen path's own flight time is
     // always measured (`budgeted` false).
     auto approach = [&](double angleDeg, double speed, bool budgeted = true) {
         if (budgeted && out.trialTicks >= kMaxTrialTicks) return Approach{};
         ++out.trials;
-        const std::vector<Vec2> path =
+        std::vector<Vec2> path =
             match.previewTrajectory(angleDeg, speed, 20.0, target.x, projectile, bounces);
         out.trialTicks += static_cast<long>(path.size());
+        path.resize(std::min(path.size(), cover.firstBlocked(path) + 1));
         return closestApproach(path, target, match.world().def().tickSeconds);
     };
     auto flown = [&](double angleDeg, double speed) { return approach(angleDeg, speed).miss; };
@@ -229,16 +241,20 @@ const TargetState* movingTargetAt(const Match& match, Vec2 target) {
     return nullptr;
 }
 
-AimSolution aimToFireNow(const Match& match, Vec2 target, std::optional<std::size_t> projectile) {
+AimSolution aimToFireNow(const Match& match, Vec2 target, std::optional<std::size_t> projectile,
+                         double delaySeconds) {
+    const TargetState* moving = movingTargetAt(match, target);
+    const double fired = match.time() + delaySeconds;
+    if (moving) target = targetPositionAt(moving->def, fired);
     AimSolution aim = aimAt(match, target, projectile);
-    if (const TargetState* moving = movingTargetAt(match, target))
+    if (moving)
         for (int pass = 0; pass < 2; ++pass)
-            aim = aimAt(match, targetPositionAt(moving->def, match.time() + aim.flightSeconds),
-                        projectile);
+            aim = aimAt(match, targetPositionAt(moving->def, fired + aim.flightSeconds), projectile);
     return aim;
 }
 
-std::vector<Command> ComputerPlayer::takeTurn(const Match& match, std::uint64_t tick) {
+std::vector<Command> ComputerPlayer::takeTurn(const Match& match, std::uint64_t tick,
+                                              double delaySeconds) {
     std::vector<Command> out;
     const auto target = chooseTarget(match);
     if (!target) {
@@ -256,14 +272,14 @@ std::vector<Command> ComputerPlayer::takeTurn(const Match& match, std::uint64_t 
     };
     std::size_t projectile = c.projectile;
     if (const auto weapon = chooseWeapon(match, *target)) projectile = indexOf(*weapon);
-    AimSolution aim = aimToFireNow(match, *target, projectile);
+    AimSolution aim = aimToFireNow(match, *target, projectile, delaySeconds);
     // What it chose does not reach (a light ball into a headwind): another projectile
     // with rounds left that does, or comes closest.
     if (!(aim.missM < kOnTarget))
         for (std::size_t k = 0; k < list.size(); ++k) {
             const bool spent = k < c.ammoLeft.size() && c.ammoLeft[k] == 0;
             if (k == projectile || spent || !knownProjectile(list[k])) continue;
-            const AimSolution other = aimToFireNow(match, *target, k);
+            const AimSolution other = aimToFireNow(match, *target, k, delaySeconds);
             if (other.missM < aim.missM) aim = other, projectile = k;
         }
     if (projectile != c.projectile) {

@@ -55,17 +55,19 @@ AimSolution aimAt(const Match& match, phys::Vec2 target,
 /// The moving target (a disc on a path) at `target`, if the point is one; else null.
 const TargetState* movingTargetAt(const Match& match, phys::Vec2 target);
 
-/// aimAt for a shot fired now: a moving target is led, aimed at where it will be when
-/// the shell gets there (the flight time of the aim at where it is now, then of the aim
-/// at that point). The computer's turn and the window's hint aim by it.
+/// aimAt for a shot fired `delaySeconds` from now (0: now): a moving target is led, aimed
+/// at where it will be when the shell gets there (the flight time of the aim at where it
+/// is now, then of the aim at that point). The computer's turn and the window's hint aim
+/// by it.
 AimSolution aimToFireNow(const Match& match, phys::Vec2 target,
-                         std::optional<std::size_t> projectile = {});
+                         std::optional<std::size_t> projectile = {}, double delaySeconds = 0.0);
 
 class ComputerPlayer {
   public:
     explicit ComputerPlayer(Difficulty d, std::uint64_t seed) : difficulty_(d), rng_(seed) {}
-    /// Commands for the current turn (aim, power, fire), stamped at `tick`.
-    std::vector<Command> takeTurn(const Match& match, std::uint64_t tick);
+    /// Commands for the current turn (select, aim, power, fire, or end_turn), all stamped
+    /// at `tick`, for a shot fired `delaySeconds` after it (a moving target is led for then).
+    std::vector<Command> takeTurn(const Match& match, std::uint64_t tick, double delaySeconds = 0.0);
     Difficulty difficulty() const { return difficulty_; }
 
   private:

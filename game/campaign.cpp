@@ -13,7 +13,8 @@ namespace {
 
 constexpr std::size_t kMaxChapters = 64;
 constexpr std::size_t kMaxLevelsPerChapter = 64;
-constexpr std::size_t kMaxLessonCharacters = 2000;
+/// A lesson a player reads in ten seconds: three short sentences at most.
+constexpr std::size_t kMaxLessonCharacters = 400;
 constexpr int kStarsPerLevel = 3;
 /// The campaign's own file name: the levels folder lists it beside the levels.
 constexpr const char* kCampaignFileName = "campaign.json";
@@ -39,6 +40,11 @@ Chapter parseChapter(const Node& n) {
     c.title = n.at("title").string(80);
     c.lesson = n.at("lesson").string(kMaxLessonCharacters);
     c.formula = n.at("formula").string(200);
+    if (const auto picture = n.find("picture")) {
+        std::vector<std::string> names;
+        for (const LessonPicture& p : lessonPictures()) names.emplace_back(p.name);
+        c.picture = picture->choice(names);
+    }
     c.starsToOpen = static_cast<int>(n.integer("stars_to_open", 0, 0, 1000));
     for (const Node& level : n.at("levels").elements(kMaxLevelsPerChapter, 1))
         c.levels.push_back(levelFileName(level));
@@ -47,6 +53,30 @@ Chapter parseChapter(const Node& n) {
 }
 
 } // namespace
+
+const std::vector<LessonPicture>& lessonPictures() {
+    static const std::vector<LessonPicture> pictures{
+        {"firing-solution",
+         "the two trajectories of the firing solution from the cannon to one target: the flat "
+         "one and the steep one"},
+        {"moon-vs-earth", "the same shot (same speed and angle) on the Moon and on Earth: six "
+                          "times the range and the height"},
+        {"drag-vs-vacuum", "the same shot in vacuum, in still air and into a headwind: each "
+                           "shorter and steeper at the end"},
+        {"bounce", "a ball dropped from H bouncing, each apex lower by e²: H, e²H, e⁴H"},
+        {"arsenal", "the eight weapons' moves in a row: the mortar's near-vacuum arc, the "
+                    "airburst bursting 5 m up, the cluster splitting at its apex, the bouncer's "
+                    "three bounces, the grenade's fuse, the roller rolling, the sticky charge "
+                    "stuck to a wall, the digger's tunnel"},
+        {"spring", "a mass bobbing on a spring, with the period 2π/ω of ω = √(k/m)"},
+        {"topple", "a block tipping over once its centre of mass passes the edge of its base"},
+        {"step-size", "explicit Euler's steps drifting off the exact parabola at a large step, "
+                      "and hugging it at a small one"},
+        {"models", "one scene with each object labelled by its model: the closed-form "
+                   "parabola, the integrated shell in air, the rope of rods, the rigid block"},
+    };
+    return pictures;
+}
 
 Campaign parseCampaign(const std::string& file, const std::string& text) {
     const nlohmann::json doc = parseJson(file, text);

@@ -1,6 +1,5 @@
-// The campaign: the shipped levels in chapters that follow the game-physics sources
-// (docs/references.md), each
-// chapter opening with a one-screen lesson and its formula. Read from levels/campaign.json
+// The campaign: the shipped levels in chapters, from the closed-form parabola to stiff
+// springs, each chapter opening with a short lesson, its formula and a picture of the idea. Read from levels/campaign.json
 // (format in levels/README.md) strictly: every error names the file, the JSON path and
 // what was expected, and a campaign is loaded whole or not at all.
 //
@@ -24,8 +23,9 @@ namespace game {
 struct Chapter {
     std::string id;      ///< short name, unique in the campaign ("drag")
     std::string title;   ///< shown as the chapter's heading
-    std::string lesson;  ///< the one-screen lesson shown before its first level
-    std::string formula; ///< the formula the lesson is about, as plain text
+    std::string lesson;  ///< the lesson shown before its first level (<= 400 characters)
+    std::string formula; ///< the formula the lesson is about, in real symbols (θ, √, ²)
+    std::string picture; ///< the picture of the idea the lesson screen draws (lessonPictures)
     /// Stars the previous chapter must have earned for this one to open (0 for the first).
     int starsToOpen = 0;
     std::vector<std::string> levels; ///< level file names in the levels folder, in order
@@ -55,6 +55,14 @@ std::vector<MissingLevel> missingLevels(const Campaign& campaign, const std::str
 /// 03_gone.json, which cannot be played (no such level file in levels): the levels after
 /// it open without it".
 std::string describe(const Campaign& campaign, const MissingLevel& missing);
+/// A picture the lesson screen draws for a chapter: its name in campaign.json and what
+/// it shows.
+struct LessonPicture {
+    const char* name;
+    const char* shows;
+};
+/// Every picture a chapter may name, in campaign order.
+const std::vector<LessonPicture>& lessonPictures();
 
 /// Parses a campaign strictly; throws LoadError (file, JSON path, what was expected).
 Campaign parseCampaign(const std::string& file, const std::string& text);

@@ -288,6 +288,9 @@ std::string Match::apply(const Command& cmd) {
         const auto& list = c.def.projectiles;
         const auto it = std::find(list.begin(), list.end(), cmd.text);
         if (it == list.end()) {
+            // A weapon or ball by name that this level does not offer (the window's fixed
+            // weapon keys send these): one short line the player can read at a glance.
+            if (knownProjectile(cmd.text)) return refuse("this level has no " + cmd.text);
             std::string names;
             for (const auto& n : list) names += (names.empty() ? "" : ", ") + n;
             return refuse("this cannon fires " + names + ", not \"" + cmd.text + "\"");
@@ -698,10 +701,15 @@ std::vector<Vec2> Match::previewTrajectory(double angleDeg, double speedMps, dou
     World w(world_.def());
     w.setProfiling(false); // stepped up to 2,400 times for one look ahead
     w.shapes = world_.shapes;
+    // The materials as they are now (a live restitution setting), and the shell's own
+    // material as fire() gives it: a bouncer's e = 0.9, not its rubber body's 0.828.
+    w.materials = world_.materials;
     const double a = angleDeg * kDegToRad;
     const Ammo ammo = ammoAt(projectile.value_or(cannon().projectile));
     ParticleDef pd = particleDef(ammo.preset, muzzle(angleDeg),
                                  {speedMps * std::cos(a), speedMps * std::sin(a)});
+    pd.material = ammo.weapon ? weaponMaterial(w.materials, ammo)
+                              : projectileMaterial(w.materials, ammo.preset);
     const ParticleId id = w.particles.add(pd);
     std::vector<Vec2> out{pd.position};
     const long steps = std::lround(seconds / w.def().tickSeconds);

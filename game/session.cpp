@@ -6,7 +6,7 @@ namespace game {
 
 Session::Session(const Level& level, const SessionOptions& options)
     : match_(std::make_unique<Match>(level)), options_(options),
-      cpu_(options.difficulty, options.cpuSeed) {
+      cpu_(options.difficulty, options.cpuSeed, options.cpuDelayTicks) {
     replay_.levelFile = level.file;
     replay_.levelHash = level.contentHash;
     replay_.difficulty = difficultyName(options.difficulty);
@@ -25,15 +25,7 @@ void Session::step() {
     Match& m = *match_;
     const bool cpuTurn = !options_.hotseat && !m.over() && !m.shell() &&
                          (options_.autoplay || m.cannon().def.player == "cpu");
-    if (cpuTurn) {
-        if (!cpuFireTick_) cpuFireTick_ = m.tick() + options_.cpuDelayTicks;
-        if (m.tick() >= *cpuFireTick_) {
-            cpuFireTick_.reset();
-            for (Command c : cpu_.takeTurn(m, m.tick())) submit(c);
-        }
-    } else {
-        cpuFireTick_.reset();
-    }
+    for (Command c : cpu_.due(m, cpuTurn)) submit(c);
     m.step();
     if (m.tick() % options_.checkpointEvery == 0) replay_.checkpoints.push_back(checkpointOf(m));
     // Save at the end of each turn and of the match.
@@ -87,10 +79,9 @@ void Session::rewindTo(std::uint64_t tick, std::unique_ptr<Match> start) {
     }
     replay_.commands = std::move(keep);
     eventsSeen_ = match_->events().size();
-    cpuFireTick_.reset();
     // Draw the computer's generator forward past the turns it has already taken, so a
     // branch does not repeat its earlier aim errors.
-    cpu_ = ComputerPlayer(options_.difficulty, options_.cpuSeed + tick);
+    cpu_ = ComputerTurns(options_.difficulty, options_.cpuSeed + tick, options_.cpuDelayTicks);
 }
 
 void Session::continueAs(const SessionOptions& options) {
@@ -101,8 +92,7 @@ void Session::continueAs(const SessionOptions& options) {
     replay_.cpuSeed = options.cpuSeed;
     // As after a rewind: the computer's generator is seeded from the branch point, so a
     // branch does not replay the original's aim errors.
-    cpu_ = ComputerPlayer(options.difficulty, options.cpuSeed + match_->tick());
-    cpuFireTick_.reset();
+    cpu_ = ComputerTurns(options.difficulty, options.cpuSeed + match_->tick(), options.cpuDelayTicks);
 }
 
 } // namespace game

@@ -1,10 +1,11 @@
 // A session drives a match the way a player sees it: commands from the window, a script
 // or a replay are stamped with the current tick, applied and recorded; the computer
-// takes its turns after a short pause; the recording is a replay with checkpoints,
-// saved atomically at the end of every turn so a crash loses at most the last turn.
+// takes its turns after a short pause, aiming visibly (game/ai_turn.h); the recording
+// is a replay with checkpoints, saved atomically at the end of every turn so a crash
+// loses at most the last turn.
 #pragma once
 
-#include "game/ai.h"
+#include "game/ai_turn.h"
 #include "game/match.h"
 #include "game/replay.h"
 
@@ -18,7 +19,8 @@ namespace game {
 struct SessionOptions {
     Difficulty difficulty = Difficulty::Normal;
     std::uint64_t cpuSeed = 1;
-    /// Ticks the computer "thinks" before it fires (so a player can see its turn).
+    /// Ticks the computer "thinks" before it starts to aim (so a player can see its turn);
+    /// its barrel and power then move for kAimSweepSeconds before it fires.
     std::uint64_t cpuDelayTicks = 60;
     std::uint64_t checkpointEvery = kDefaultCheckpointEvery;
     /// Replay file written at the end of every turn and of the match ("" = none).
@@ -70,9 +72,8 @@ class Session {
     void saveAtTurnEnd();
     std::unique_ptr<Match> match_;
     SessionOptions options_;
-    ComputerPlayer cpu_;
+    ComputerTurns cpu_;
     Replay replay_;
-    std::optional<std::uint64_t> cpuFireTick_;
     std::size_t eventsSeen_ = 0;
 };
 

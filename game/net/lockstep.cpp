@@ -19,7 +19,8 @@ std::string desyncMessage(std::uint64_t tick, const Checkpoint& a, const Checkpo
 Lockstep::Lockstep(const Level& level, const LockstepOptions& options)
     : match_(std::make_unique<Match>(level)), options_(options),
       cpu_(options.difficulty,
-           options.cpuSeed + static_cast<std::uint64_t>(std::max(0, options.localCannon))),
+           options.cpuSeed + static_cast<std::uint64_t>(std::max(0, options.localCannon)),
+           options.cpuDelayTicks),
       levelHash_(level.contentHash) {
     if (options_.checkpointEvery == 0) options_.checkpointEvery = kDefaultCheckpointEvery;
     if (options_.advanceEvery == 0) options_.advanceEvery = 1;
@@ -87,14 +88,8 @@ void Lockstep::applyPending() {
 }
 
 void Lockstep::computerTurn() {
-    if (!options_.autoplay || !localTurn() || catchingUp() || match_->shell()) {
-        cpuFireTick_.reset();
-        return;
-    }
-    if (!cpuFireTick_) cpuFireTick_ = match_->tick() + options_.cpuDelayTicks;
-    if (match_->tick() < *cpuFireTick_) return;
-    cpuFireTick_.reset();
-    for (const Command& c : cpu_.takeTurn(*match_, match_->tick()))
+    const bool turn = options_.autoplay && localTurn() && !catchingUp() && !match_->shell();
+    for (const Command& c : cpu_.due(*match_, turn))
         submit(c);
 }
 

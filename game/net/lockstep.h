@@ -16,7 +16,7 @@
 // takeOutbox() returns, so every rule is unit-tested without a network.
 #pragma once
 
-#include "game/ai.h"
+#include "game/ai_turn.h"
 #include "game/match.h"
 #include "game/net/message.h"
 #include "game/replay.h"
@@ -110,8 +110,7 @@ class Lockstep {
 
     std::unique_ptr<Match> match_;
     LockstepOptions options_;
-    ComputerPlayer cpu_;
-    std::optional<std::uint64_t> cpuFireTick_;
+    ComputerTurns cpu_;
     std::string levelHash_;
     std::vector<Command> commands_;
     std::vector<int> players_; ///< whose cannon each command is

@@ -6,7 +6,7 @@ cli_test(check_json 1 "\"ok\":false.*\"path\":\"\\$\\.cannons\\[0\\]\\.speed_mps
          "check;--json;${PROJECT_SOURCE_DIR}/tests/data/bad_levels/cannon_speed_over_max.json")
 cli_test(check_no_files 2 "name at least one level file" "check")
 # The campaign file is checked against the levels folder beside it.
-cli_test(check_campaign 0 "ok +.*campaign.json  campaign: 8 chapter\\(s\\), 36 level\\(s\\), 1 outside"
+cli_test(check_campaign 0 "ok +.*campaign.json  campaign: 9 chapter\\(s\\), 44 level\\(s\\), 1 outside"
          "check;${PROJECT_SOURCE_DIR}/levels/campaign.json")
 cli_test(check_campaign_bad 1 "FAIL +.*campaign.json: \\$\\.chapters\\[0\\]\\.levels\\[0\\]: the level does not load.*FAIL +.*campaign.json: \\$\\.chapters: the level loose.json is in no chapter"
          "check;${PROJECT_SOURCE_DIR}/tests/data/bad_campaign/campaign.json")

@@ -3,6 +3,32 @@
 # that cannot be won fails; bad usage.
 file(GLOB SHIPPED_LEVELS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/levels/*.json)
 list(FILTER SHIPPED_LEVELS EXCLUDE REGEX "/campaign\\.json$") # the chapters, not a level
+# The arsenal's levels, each with the weapon its three stars need: solved with it (three
+# stars, and the best game fires it) and without it (fewer stars), by solve_weapon.cmake.
+set(WEAPON_LEVELS
+    38_into_the_gale mortar
+    39_crows_nests airburst
+    40_scatter cluster
+    41_steel_causeway bouncer
+    42_round_the_corner grenade
+    43_downhill roller
+    44_water_tower sticky
+    45_under_the_lid digger)
+list(LENGTH WEAPON_LEVELS pairs)
+math(EXPR lastPair "${pairs} - 1")
+foreach(i RANGE 0 ${lastPair} 2)
+  math(EXPR w "${i} + 1")
+  list(GET WEAPON_LEVELS ${i} name)
+  list(GET WEAPON_LEVELS ${w} weapon)
+  list(FILTER SHIPPED_LEVELS EXCLUDE REGEX "/${name}\\.json$") # solved here, with and without
+  add_test(NAME solve_level.${name}.${weapon}
+           COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:artillery>
+                   -DLEVEL=${PROJECT_SOURCE_DIR}/levels/${name}.json -DWEAPON=${weapon}
+                   -DOUT=${CMAKE_CURRENT_BINARY_DIR}/solve_weapon
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/solve_weapon.cmake
+           WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(solve_level.${name}.${weapon} PROPERTIES TIMEOUT 170)
+endforeach()
 foreach(level ${SHIPPED_LEVELS})
   get_filename_component(name ${level} NAME_WE)
   add_test(NAME solve_level.${name}

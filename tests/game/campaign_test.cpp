@@ -50,34 +50,102 @@ Campaign twoChapters() {
 
 TEST(Campaign, ShippedCampaignIsSound) {
     const Campaign c = loadCampaign((kSource / "levels/campaign.json").string());
-    EXPECT_EQ(c.chapters.size(), 8u);
+    EXPECT_EQ(c.chapters.size(), 9u);
     std::size_t levels = 0;
     for (const Chapter& ch : c.chapters) {
         EXPECT_GE(ch.levels.size(), 3u) << ch.id;
-        EXPECT_LE(ch.levels.size(), 5u) << ch.id;
+        EXPECT_LE(ch.levels.size(), 8u) << ch.id << ": one page of tiles";
         EXPECT_FALSE(ch.lesson.empty()) << ch.id;
         EXPECT_FALSE(ch.formula.empty()) << ch.id;
+        EXPECT_FALSE(ch.picture.empty()) << ch.id << ": every lesson has its picture";
         levels += ch.levels.size();
     }
-    EXPECT_GE(levels, 30u) << "the campaign has at least thirty levels";
+    EXPECT_GE(levels, 44u) << "the campaign has the arsenal's eight levels besides the rest";
     const std::vector<std::string> problems = campaignProblems(c, (kSource / "levels").string());
     for (const std::string& p : problems)
         ADD_FAILURE() << p;
-    // The chapters follow the game-physics sources in order (docs/references.md).
-    const char* order[] = {"flight",  "worlds", "drag",      "bounce",
+    // From the closed-form parabola to stiff springs; the arsenal once drag and restitution
+    // have been taught.
+    const char* order[] = {"flight",  "worlds", "drag",      "bounce", "arsenal",
                            "springs", "rigid",  "stability", "finals"};
     for (std::size_t i = 0; i < c.chapters.size() && i < std::size(order); ++i)
         EXPECT_EQ(c.chapters[i].id, order[i]);
 }
 
+namespace {
+
+std::size_t characters(const std::string& s) {
+    std::size_t n = 0;
+    for (const unsigned char ch : s) n += (ch & 0xC0) != 0x80; // not a UTF-8 continuation byte
+    return n;
+}
+
+/// Sentences: ". " ("e.g." and decimals have no space after the point), "! ", "? ", and
+/// the end of the text.
+std::size_t sentences(const std::string& s) {
+    std::size_t n = 1;
+    for (std::size_t i = 0; i + 1 < s.size(); ++i)
+        n += (s[i] == '.' || s[i] == '!' || s[i] == '?') && s[i + 1] == ' ';
+    return n;
+}
+
+/// What a lesson must not hold: sources (they belong in docs/references.md), and
+/// formulas in ASCII where the symbols exist.
+std::string lessonProblem(const std::string& text) {
+    for (const char* word : {"notes", "Millington", "section", "theta", "sqrt", "omega", "rho",
+                             "^2", "+-", " pi ", "->", "degrees"})
+        if (text.find(word) != std::string::npos) return std::string("holds \"") + word + "\"";
+    return "";
+}
+
+} // namespace
+
+TEST(Campaign, LessonsAreReadInTenSeconds) {
+    const Campaign c = loadCampaign((kSource / "levels/campaign.json").string());
+    for (const Chapter& ch : c.chapters) {
+        EXPECT_LE(characters(ch.lesson), 400u) << ch.id;
+        EXPECT_LE(sentences(ch.lesson), 3u) << ch.id << ": " << ch.lesson;
+        EXPECT_EQ(lessonProblem(ch.lesson), "") << ch.id << ": " << ch.lesson;
+        EXPECT_EQ(lessonProblem(ch.formula), "") << ch.id << ": " << ch.formula;
+    }
+}
+
 TEST(Campaign, EveryChapterLevelTeachesOneIdea) {
     const Campaign c = loadCampaign((kSource / "levels/campaign.json").string());
-    for (const Chapter& ch : c.chapters)
-        for (const std::string& file : ch.levels) {
-            const Level l = loadLevel((kSource / "levels" / file).string());
-            EXPECT_FALSE(l.lesson.empty()) << file;
-            EXPECT_LE(l.lesson.size(), 200u) << file << ": a lesson is one line";
-        }
+    std::vector<std::string> files = c.outside;
+    for (const Chapter& ch : c.chapters) files.insert(files.end(), ch.levels.begin(), ch.levels.end());
+    for (const std::string& file : files) {
+        const Level l = loadLevel((kSource / "levels" / file).string());
+        EXPECT_FALSE(l.lesson.empty()) << file;
+        EXPECT_LE(characters(l.lesson), 200u) << file << ": a lesson is one line";
+        EXPECT_LE(sentences(l.lesson), 3u) << file << ": " << l.lesson;
+        EXPECT_EQ(lessonProblem(l.lesson), "") << file << ": " << l.lesson;
+        EXPECT_EQ(l.description.find("notes"), std::string::npos) << file << ": " << l.description;
+    }
+}
+
+TEST(Campaign, ALessonPictureIsOneTheRendererDraws) {
+    const std::string chapter = R"({"format": 1, "chapters": [{"id": "a", "title": "A",
+        "lesson": "l", "formula": "f", "levels": ["1.json"])";
+    const Campaign c = parseCampaign("c.json", chapter + R"(, "picture": "bounce"}]})");
+    EXPECT_EQ(c.chapters[0].picture, "bounce");
+    EXPECT_EQ(parseCampaign("c.json", chapter + "}]}").chapters[0].picture, "")
+        << "a chapter without one draws none";
+    const std::string refused = refusal(chapter + R"(, "picture": "sunset"}]})");
+    EXPECT_NE(refused.find("c.json: $.chapters[0].picture: expected one of \"firing-solution\""),
+              std::string::npos)
+        << refused;
+    EXPECT_NE(refused.find("\"sunset\""), std::string::npos) << refused;
+    for (const LessonPicture& p : lessonPictures()) EXPECT_GT(std::string(p.shows).size(), 20u) << p.name;
+}
+
+TEST(Campaign, AChapterLessonPastFourHundredCharactersIsRefused) {
+    const std::string longLesson(401, 'x');
+    const std::string refused = refusal(R"({"format": 1, "chapters": [{"id": "a", "title": "A",
+        "lesson": ")" + longLesson + R"(", "formula": "f", "levels": ["1.json"]}]})");
+    EXPECT_NE(refused.find("$.chapters[0].lesson: expected a string of at most 400 characters"),
+              std::string::npos)
+        << refused;
 }
 
 TEST(Campaign, ProblemsNameTheFileAndPath) {

@@ -100,10 +100,11 @@ TEST(NetLockstep, ATamperedSideIsCaughtAtTheNextCheckpoint) {
     Lockstep host(duel(), side(0, true));
     Lockstep joiner(duel(), side(1, true, 0));
     play(host, joiner, 3);
-    // The host fires first, after the computer's 60-tick pause: the shell flies from
-    // tick 61, is nudged there on the joiner's side, and the checkpoint at 120 differs.
-    EXPECT_EQ(host.stopped(), "desync at tick 120 (particles differ)");
-    EXPECT_EQ(joiner.stopped(), "desync at tick 120 (particles differ)");
+    // The host fires first, after the computer's 60-tick pause and its second (120
+    // ticks) of aiming: the shell flies from tick 181, is nudged there on the joiner's
+    // side, and the checkpoint at 240 differs.
+    EXPECT_EQ(host.stopped(), "desync at tick 240 (particles differ)");
+    EXPECT_EQ(joiner.stopped(), "desync at tick 240 (particles differ)");
     EXPECT_FALSE(host.over());
 }
 

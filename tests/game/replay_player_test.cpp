@@ -167,13 +167,16 @@ TEST(ReplayPlayer, JumpsBetweenShots) {
 
 TEST(ReplayPlayer, AChangedCommandIsReportedAtTheFirstCheckpointAfterIt) {
     Golden g = golden("03_windy_valley.replay.json");
-    std::uint64_t changedAt = 0;
-    for (Command& c : g.replay.commands)
-        if (c.kind == CommandKind::Aim) {
-            c.number += 0.01;
-            changedAt = c.tick;
-            break;
-        }
+    // The aim the first shot is fired at: the last before the first fire (the computer's
+    // earlier aims are its barrel on the way there).
+    Command* aim = nullptr;
+    for (Command& c : g.replay.commands) {
+        if (c.kind == CommandKind::Fire) break;
+        if (c.kind == CommandKind::Aim) aim = &c;
+    }
+    ASSERT_NE(aim, nullptr);
+    aim->number += 0.01;
+    const std::uint64_t changedAt = aim->tick;
     ReplayPlayer p(g.level, g.replay);
     p.seek(p.lastTick());
     ASSERT_TRUE(p.divergence().has_value());

@@ -45,12 +45,15 @@ TEST(Replay, RoundTripsThroughJsonAndReSimulatesBitForBit) {
 
 TEST(Replay, ATamperedCommandIsFoundAtTheFirstCheckpointAfterIt) {
     Replay r = record();
-    // Change the aim of the first shot by a hundredth of a degree.
-    for (Command& c : r.commands)
-        if (c.kind == CommandKind::Aim) {
-            c.number += 0.01;
-            break;
-        }
+    // Change the aim of the first shot by a hundredth of a degree: the last aim before
+    // the first fire (the computer's earlier aims are its barrel on the way there).
+    Command* aim = nullptr;
+    for (Command& c : r.commands) {
+        if (c.kind == CommandKind::Fire) break;
+        if (c.kind == CommandKind::Aim) aim = &c;
+    }
+    ASSERT_NE(aim, nullptr);
+    aim->number += 0.01;
     const VerifyResult v = verifyReplay(level("03_windy_valley.json"), r);
     EXPECT_FALSE(v.ok);
     ASSERT_TRUE(v.firstDivergentTick.has_value());

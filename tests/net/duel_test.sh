@@ -82,12 +82,14 @@ relay)
 tamper)
     duel tamper -- --tamper-at-tick 0
     [ $JOIN_RC = 1 ] && [ $HOST_RC = 1 ] || fail "expected exit 1 on both sides, got $HOST_RC/$JOIN_RC"
-    grep -qx "desync at tick 120 (particles differ)" "$WORK/tamper.host.log" || fail "host: no desync message"
-    grep -qx "desync at tick 120 (particles differ)" "$WORK/tamper.join.log" || fail "joiner: no desync message"
+    # The computer fires at tick 180 (its pause, then a second of aiming): the shell is
+    # nudged from there, and the checkpoint at 240 differs.
+    grep -qx "desync at tick 240 (particles differ)" "$WORK/tamper.host.log" || fail "host: no desync message"
+    grep -qx "desync at tick 240 (particles differ)" "$WORK/tamper.join.log" || fail "joiner: no desync message"
     # Both keep their replay; the honest host's verifies, the tampered one's does not.
     "$EXE" replay verify "$WORK/tamper.host.json" || fail "the host's replay does not verify"
     "$EXE" replay verify "$WORK/tamper.join.json" > "$WORK/verify.log" 2>&1 && fail "the tampered replay verifies"
-    grep -q "tick 120" "$WORK/verify.log" || fail "verify does not name tick 120"
+    grep -q "tick 240" "$WORK/verify.log" || fail "verify does not name tick 240"
     ;;
 reconnect)
     duel plain --

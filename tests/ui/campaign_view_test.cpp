@@ -5,6 +5,8 @@
 #include "ui/game/campaign_view.h"
 #include "ui/game/game_menus.h"
 #include "ui/game/game_screen.h"
+#include "ui/game/lesson_pictures.h"
+#include "ui/game/menu_flow.h"
 #include "ui/platform/gl_context.h"
 
 #include <SDL.h>
@@ -12,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -122,4 +125,34 @@ TEST(CampaignView, AMissingLevelIsNamedAndPlayGoesOnPastIt) {
     EXPECT_EQ(*next, (game::LevelPlace{0, 2}));
     EXPECT_EQ(fileName(menu, *next), "03_after.json");
     fs::remove_all(dir);
+}
+
+TEST(CampaignView, EveryChaptersLessonHasItsPictureAndCaption) {
+    const ui::CampaignMenu menu = ui::campaignMenu(kLevels, ui::listLevels(kLevels));
+    ASSERT_TRUE(menu.error.empty()) << menu.error;
+    const std::vector<std::string>& drawn = ui::lessonPictureNames();
+    for (const game::LessonPicture& p : game::lessonPictures()) {
+        EXPECT_NE(std::find(drawn.begin(), drawn.end(), p.name), drawn.end()) << p.name;
+        EXPECT_FALSE(ui::lessonPictureCaption(p.name).empty()) << p.name;
+    }
+    for (const game::Chapter& c : menu.campaign.chapters)
+        EXPECT_FALSE(ui::lessonPictureCaption(c.picture).empty()) << c.id << ": " << c.picture;
+}
+
+TEST(CampaignView, AWeaponIsIntroducedByTheFirstLevelThatOffersIt) {
+    const ui::MenuFlow flow(kLevels);
+    const ui::CampaignMenu menu = ui::campaignMenu(kLevels, ui::listLevels(kLevels));
+    std::vector<std::string> introduced;
+    for (const std::vector<ui::LevelEntry>& chapter : menu.chapters)
+        for (const ui::LevelEntry& e : chapter) {
+            const std::string line = flow.weaponIntroduction(e.file);
+            const bool offersANewOne = std::any_of(e.weapons.begin(), e.weapons.end(), [&](const std::string& w) {
+                return std::find(introduced.begin(), introduced.end(), w) == introduced.end();
+            });
+            EXPECT_EQ(!line.empty(), offersANewOne) << e.file;
+            introduced.insert(introduced.end(), e.weapons.begin(), e.weapons.end());
+        }
+    // Every one of the eight weapons is met somewhere in the campaign.
+    for (const std::string w : {"cluster", "bouncer", "roller", "grenade", "mortar", "airburst", "digger", "sticky"})
+        EXPECT_NE(std::find(introduced.begin(), introduced.end(), w), introduced.end()) << w;
 }

@@ -102,11 +102,15 @@ TEST(TargetInset, InADuelFramesTheOtherCannon) {
     EXPECT_FALSE(mine.x >= box->first.x && mine.x <= box->second.x);
 }
 
-// The other cannon is framed standing on its ground: on the castle duel it stands on a
-// pedestal 4 m above it, which a box of the cannon alone (and its margin) left out, so the
-// close-up showed a cannon on a column in the sky.
+// The other cannon is framed standing on its ground: on a pedestal 6 m above it (as the
+// castle duel's cannons once stood), a box of the cannon alone (and its margin) left out
+// the ground, so the close-up showed a cannon on a column in the sky.
 TEST(TargetInset, InADuelFramesTheGroundTheOtherCannonStandsOn) {
-    const game::Match m(game::loadLevel(sourceDir() + "/levels/37_castle_duel.json"));
+    const game::Match m(game::parseLevel("pedestals.json", R"({"format": 1, "name": "pedestals",
+        "mode": "duel", "world": {"min": [0, -10], "max": [300, 150]},
+        "terrain": {"points": [[0, 5], [300, 5]]},
+        "cannons": [{"position": [25, 12], "player": "1"},
+                    {"position": [275, 12], "angle_deg": 135, "player": "cpu"}]})"));
     const auto box = ui::aimedAtBox(m);
     ASSERT_TRUE(box);
     const Vec2 other = m.cannons()[1].def.position;

@@ -77,7 +77,7 @@ TEST(TurnControls, TabCyclesTheBallsAndEachNumberIsAWeapon) {
     const auto none = ui::pressTurnKey(SDLK_1, aim, m, &message);
     ASSERT_TRUE(none) << "a turn key even where the level has no such weapon";
     EXPECT_TRUE(none->empty());
-    EXPECT_EQ(message, "no cluster in this level");
+    EXPECT_EQ(message, "select: this level has no cluster");
     EXPECT_EQ(m.cannon().projectile, 1u);
 
     const auto root = std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();

@@ -405,7 +405,7 @@ ui::VideoExport::State waitFor(ui::VideoExport& e) {
 }
 
 TEST(VideoExport, WritesAReplayThroughTheRunVerbInAChildProcess) {
-    // A one-second replay: the castle's golden commands for 120 ticks, recorded anew.
+    // A two-second replay: the castle's golden commands for 240 ticks, recorded anew.
     const std::string golden = sourceDir() + "/tests/replays/05_castle.replay.json";
     const game::Replay r = game::loadReplay(golden);
     const std::string levelFile = fs::absolute(sourceDir() + "/levels/05_castle.json").string();
@@ -416,7 +416,7 @@ TEST(VideoExport, WritesAReplayThroughTheRunVerbInAChildProcess) {
     o.session.hotseat = true;
     o.session.cpuSeed = r.cpuSeed;
     o.session.recordFile = replay;
-    o.ticks = 120;
+    o.ticks = 240;
     game::runHeadless(level, o);
 
     ui::VideoExport exporter;
@@ -426,16 +426,16 @@ TEST(VideoExport, WritesAReplayThroughTheRunVerbInAChildProcess) {
     ASSERT_EQ(waitFor(exporter), ui::VideoExport::State::Done) << exporter.message();
     EXPECT_NE(exporter.message().find("video in"), std::string::npos) << exporter.message();
     const Decoded d = decode(out);
-    EXPECT_EQ(d.frames, 30);
+    EXPECT_EQ(d.frames, 60);
     EXPECT_EQ(d.width, 96);
     EXPECT_EQ(d.audioStreams, 1);
     // The track is the match's sound: quiet at first, then the report and the whistle
-    // from the shot at tick 60, 0.5 s (windows clear of the AAC encoder's 1024-sample
-    // delay).
+    // from the shot at tick 180, 1.5 s, once the computer has aimed (windows clear of the
+    // AAC encoder's 1024-sample delay).
     ASSERT_EQ(d.sampleRate, 48000);
     EXPECT_LT(rms(d.left, 0.0, 0.25), 0.005); // blocks settle with a thud at 0.31 s
-    EXPECT_GT(rms(d.left, 0.5, 0.75), 0.03);
-    EXPECT_GT(rms(d.right, 0.5, 0.75), 0.005);
+    EXPECT_GT(rms(d.left, 1.5, 1.75), 0.03);
+    EXPECT_GT(rms(d.right, 1.5, 1.75), 0.005);
 
     const std::string bad = scratch("castle_second.avi");
     ASSERT_TRUE(exporter.start(ARTILLERY_EXE, levelFile, replay, bad));

@@ -6,6 +6,7 @@
 #include "game/files/text_file.h"
 #include "game/level.h"
 #include "game/replay.h"
+#include "game/weapons.h"
 #include "ui/platform/imgui_layer.h"
 
 #include <imgui.h>
@@ -157,6 +158,11 @@ std::vector<LevelEntry> listLevels(const std::string& folder) {
             e.name = l.name;
             e.lesson = l.lesson.empty() ? l.description : l.lesson;
             e.mode = l.mode;
+            for (const game::Cannon& c : l.cannons)
+                for (const std::string& p : c.projectiles)
+                    if (game::weaponFromName(p) &&
+                        std::find(e.weapons.begin(), e.weapons.end(), p) == e.weapons.end())
+                        e.weapons.push_back(p);
         } catch (const std::exception& err) {
             e.name = f.path().filename().string();
             e.error = err.what();

@@ -25,6 +25,7 @@ struct LevelEntry {
     std::string lesson;
     game::Mode mode = game::Mode::Practice; ///< what the file says (when it loads)
     std::string error; ///< why it does not load ("" when it does)
+    std::vector<std::string> weapons; ///< the weapons its cannons offer, in their order
 };
 
 /// Every *.json in `folder`, sorted by file name, each loaded to read its name and lesson.

@@ -87,6 +87,11 @@ void GameScreen::openLevel(const std::string& file) {
     replays_.close();
     restart();
     menus_.close();
+    // A weapon met for the first time is introduced in a line, while the player has no
+    // result on the level that brings it.
+    if (!files_.progress().result(level_.file))
+        if (const std::string intro = menus_.weaponIntroduction(level_.file); !intro.empty())
+            play_.say(intro, 8.0);
 }
 
 bool GameScreen::hotseatInUse() const {

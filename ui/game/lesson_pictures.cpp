@@ -106,25 +106,35 @@ void bounce(Renderer2D& r) {
     ball(r, {0.0, 1.0}, 0.05, Color::hex(0xd7e84a));
 }
 
-/// A golf ball at 40 m/s, 40 degrees: in a vacuum (the parabola) and through air (the
-/// quadratic drag F = -1/2 rho Cd A |v| v, stepped here with the midpoint rule).
-void drag(Renderer2D& r) {
-    r.begin(Camera::framing({-6.0, -8.0}, {170.0, 48.0}, r.camera().width, r.camera().height));
-    sky(r);
-    ground(r, 0.0);
-    const Vec2 v0{40.0 * std::cos(40.0 * kDeg), 40.0 * std::sin(40.0 * kDeg)};
-    r.polyline(parabola({0.0, 0.0}, v0, kG, 2.0 * v0.y / kG), Color::hex(0xffffff, 0.8f), 3.0f);
+/// A golf ball's path under quadratic drag F = -1/2 rho Cd A |v - w| (v - w) in a wind w,
+/// stepped here with the midpoint rule until it comes down.
+std::vector<Vec2> dragPath(Vec2 v0, double windX) {
     const double k = 0.5 * 1.2 * 0.25 * std::numbers::pi * 0.0214 * 0.0214 / 0.0459; // rho Cd A / 2m
-    auto accel = [&](Vec2 v) { return Vec2{0.0, -kG} - v * (k * length(v)); };
+    auto accel = [&](Vec2 v) {
+        const Vec2 air = v - Vec2{windX, 0.0};
+        return Vec2{0.0, -kG} - air * (k * length(air));
+    };
     std::vector<Vec2> path{{0.0, 0.0}};
     Vec2 p{0.0, 0.0}, v = v0;
-    for (double dt = 0.01; p.y >= 0.0 && path.size() < 4000;) {
+    for (const double dt = 0.01; p.y >= 0.0 && path.size() < 4000;) {
         const Vec2 vm = v + accel(v) * (0.5 * dt);
         p += vm * dt;
         v += accel(vm) * dt;
         path.push_back(p);
     }
-    r.polyline(path, team(1), 4.0f);
+    return path;
+}
+
+/// A golf ball at 40 m/s, 40 degrees: in a vacuum (the parabola), through still air and
+/// into a 10 m/s headwind, each shorter and steeper at its end.
+void dragVsVacuum(Renderer2D& r) {
+    r.begin(Camera::framing({-6.0, -8.0}, {170.0, 48.0}, r.camera().width, r.camera().height));
+    sky(r);
+    ground(r, 0.0);
+    const Vec2 v0{40.0 * std::cos(40.0 * kDeg), 40.0 * std::sin(40.0 * kDeg)};
+    r.polyline(parabola({0.0, 0.0}, v0, kG, 2.0 * v0.y / kG), Color::hex(0xffffff, 0.8f), 3.0f);
+    r.polyline(dragPath(v0, 0.0), team(1), 4.0f);
+    r.polyline(dragPath(v0, -10.0), kGold, 4.0f);
     ball(r, {0.0, 0.0}, 1.5, Color::hex(0xf4f4f4));
 }
 
@@ -163,23 +173,94 @@ void topple(Renderer2D& r) {
     ball(r, pivot, 0.08, kTargetRed);
 }
 
-/// Explicit Euler at 0.2 s against the exact path: each step uses the start's velocity,
-/// so the path climbs g dt t / 2 above the parabola (Rabin (ed.), ch. 4.3).
-void eulerDrift(Renderer2D& r) {
+/// Explicit Euler's steps of `dt` from the same shot as the exact path: each step uses
+/// the start's velocity, so the path climbs g dt t / 2 above the parabola (Rabin (ed.),
+/// ch. 4.3).
+std::vector<Vec2> eulerSteps(Vec2 v0, double dt) {
+    std::vector<Vec2> steps{{0.0, 0.0}};
+    Vec2 p{0.0, 0.0}, v = v0;
+    while (p.y >= 0.0 && steps.size() < 400) {
+        p += v * dt;
+        v += Vec2{0.0, -kG} * dt;
+        steps.push_back(p);
+    }
+    return steps;
+}
+
+/// Explicit Euler at 0.2 s drifts off the exact path; at 0.05 s it hugs it.
+void stepSize(Renderer2D& r) {
     r.begin(Camera::framing({-2.0, -3.0}, {40.0, 20.0}, r.camera().width, r.camera().height));
     sky(r);
     ground(r, 0.0);
     const Vec2 v0{12.0, 16.0};
     r.polyline(parabola({0.0, 0.0}, v0, kG, 2.0 * v0.y / kG), Color::hex(0xffffff, 0.9f), 3.0f);
-    std::vector<Vec2> steps{{0.0, 0.0}};
-    Vec2 p{0.0, 0.0}, v = v0;
-    while (p.y >= 0.0 && steps.size() < 100) {
-        p += v * 0.2;
-        v += Vec2{0.0, -kG} * 0.2;
-        steps.push_back(p);
+    const std::vector<Vec2> large = eulerSteps(v0, 0.2), small = eulerSteps(v0, 0.05);
+    r.polyline(large, kTargetRed, 3.0f);
+    for (const Vec2 s : large) ball(r, s, 0.35, kTargetRed);
+    r.polyline(small, kGold, 2.0f);
+    for (const Vec2 s : small) ball(r, s, 0.18, kGold);
+}
+
+/// The arsenal's eight moves side by side, a column each (cluster, bouncer, roller,
+/// grenade, mortar, airburst, digger, sticky), each sketched from its rule.
+void arsenal(Renderer2D& r) {
+    r.begin(Camera::framing({-1.0, -4.0}, {81.0, 14.0}, r.camera().width, r.camera().height));
+    sky(r);
+    ground(r, 0.0);
+    const Color path = Color::hex(0xffffff, 0.85f), burst = Color::hex(0xffb347, 0.9f);
+    auto arc = [&](Vec2 from, Vec2 v, double seconds) { r.polyline(parabola(from, v, kG, seconds), path, 2.5f); };
+    // cluster: splits in four at its apex
+    arc({1.0, 0.0}, {3.0, 10.0}, 10.0 / kG);
+    for (const double vx : {-2.0, 0.0, 2.0, 4.0}) arc({1.0 + 30.0 / kG, 50.0 / kG}, {vx, 0.0}, 1.0);
+    // bouncer: e = 0.9, bounce after bounce
+    double x = 12.0, up = 9.0;
+    for (int k = 0; k < 3; ++k, up *= 0.9) {
+        arc({x, 0.0}, {2.0, up}, 2.0 * up / kG);
+        x += 4.0 * up / kG;
     }
-    r.polyline(steps, kTargetRed, 3.0f);
-    for (const Vec2 s : steps) ball(r, s, 0.35, kTargetRed);
+    // roller: comes down and rolls along the ground
+    arc({22.0, 0.0}, {2.0, 8.0}, 16.0 / kG);
+    r.line({22.0 + 32.0 / kG, 0.15}, {30.0, 0.15}, path, 2.5f);
+    ball(r, {30.0, 0.5}, 0.5, kShell);
+    // grenade: bounces until its fuse burns down, then bursts
+    arc({32.0, 0.0}, {2.0, 7.0}, 14.0 / kG);
+    arc({32.0 + 28.0 / kG, 0.0}, {2.0, 3.5}, 7.0 / kG);
+    r.fillCircle({32.0 + 42.0 / kG, 0.6}, 1.4, burst);
+    // mortar: heavy and finned, the near-vacuum arc
+    arc({42.0, 0.0}, {2.0, 11.0}, 22.0 / kG);
+    // airburst: bursts 5 m above the ground
+    arc({52.0, 0.0}, {2.5, 11.0}, 1.6);
+    r.fillCircle(Vec2{52.0, 0.0} + Vec2{2.5 * 1.6, 11.0 * 1.6 - 0.5 * kG * 1.6 * 1.6}, 1.8, burst);
+    // digger: a tunnel under the ground
+    arc({61.0, 0.0}, {2.0, 8.0}, 16.0 / kG);
+    r.fillRectGradient({61.0 + 32.0 / kG, -2.2}, {69.0, -0.6}, Color::hex(0x1a120c), Color::hex(0x1a120c));
+    // sticky: e = 0 against a wall, stuck where it struck
+    r.fillRectGradient({78.0, 0.0}, {79.2, 10.0}, Color::hex(0x9c978c), Color::hex(0x9c978c));
+    arc({71.0, 0.0}, {5.0, 9.0}, 7.0 / 5.0);
+    ball(r, Vec2{71.0, 0.0} + Vec2{7.0, 9.0 * 1.4 - 0.5 * kG * 1.4 * 1.4}, 0.5, kTargetRed);
+}
+
+/// One scene, a model for each thing: the closed-form parabola (white), the shell
+/// integrated through air (red), a rope of rods (gold) and a rigid block (brown).
+void models(Renderer2D& r) {
+    r.begin(Camera::framing({-2.0, -3.0}, {60.0, 24.0}, r.camera().width, r.camera().height));
+    sky(r);
+    ground(r, 0.0);
+    const Vec2 v0{16.0, 14.0};
+    r.polyline(parabola({0.0, 0.0}, v0, kG, 2.0 * v0.y / kG), Color::hex(0xffffff, 0.9f), 3.0f);
+    r.polyline(dragPath(v0 * 1.6, 0.0), kTargetRed, 3.0f);
+    std::vector<Vec2> rope;
+    for (int i = 0; i <= 10; ++i) {
+        const double t = i / 10.0;
+        rope.push_back({34.0 + 14.0 * t, 16.0 - 5.0 * std::sin(std::numbers::pi * t)});
+    }
+    r.line({34.0, 0.0}, {34.0, 16.0}, Color::hex(0x5a3d24), 4.0f);
+    r.line({48.0, 0.0}, {48.0, 16.0}, Color::hex(0x5a3d24), 4.0f);
+    r.polyline(rope, kGold, 3.0f);
+    for (const Vec2 p : rope) ball(r, p, 0.3, kGold);
+    const Vec2 block[] = {{51.0, 0.0}, {56.0, 0.0}, {56.0, 5.0}, {51.0, 5.0}};
+    r.fillConvex(block, Color::hex(0x9a6b3f));
+    r.polyline(block, Color::hex(0x5a3d24), 2.0f, true);
 }
 
 struct Picture {
@@ -188,17 +269,23 @@ struct Picture {
     const char* caption;
 };
 
+// In campaign order, as game::lessonPictures() names them.
 const Picture kPictures[] = {
     {"firing-solution", firingSolution,
      "From (10, 2) at 30 m/s two angles reach the flag at (50, 20): 39.1° and 75.2°."},
     {"moon-vs-earth", moonVsEarth,
      "The same shot, 45° at 15 m/s: 22.9 m on Earth (blue), six times as far on the Moon."},
+    {"drag-vs-vacuum", dragVsVacuum,
+     "A golf ball at 40 m/s: in a vacuum (white), through still air (red), into a 10 m/s headwind (gold)."},
     {"bounce", bounce, "e = 0.712: each bounce climbs to e² = 0.51 of the one before."},
-    {"drag", drag, "A golf ball at 40 m/s: in a vacuum (white) and through air (red)."},
+    {"arsenal", arsenal,
+     "Cluster, bouncer, roller, grenade, mortar, airburst, digger, sticky: each moves by its own rule."},
     {"spring", spring, "x(t) = A cos(ωt): the same period, whatever the swing."},
     {"topple", topple, "Past the edge of its base, the centre of mass pulls the block over."},
-    {"euler-drift", eulerDrift,
-     "Explicit Euler at dt = 0.2 s (red) climbs above the exact parabola (white)."},
+    {"step-size", stepSize,
+     "Explicit Euler at dt = 0.2 s (red) climbs above the exact parabola (white); at 0.05 s (gold) it hugs it."},
+    {"models", models,
+     "A model for each thing: the closed form (white), a shell through air (red), a rope of rods, a rigid block."},
 };
 
 const Picture* find(const std::string& name) {

@@ -10,13 +10,6 @@
 
 namespace ui {
 
-namespace {
-
-/// How long a refused command stays on the HUD, s of wall time.
-constexpr double kNoticeSeconds = 3.0;
-
-} // namespace
-
 game::SessionOptions liveSessionOptions(PlayerFiles& files, const game::Level& level,
                                         const std::string& recordFile, std::string& status) {
     game::SessionOptions o;
@@ -65,9 +58,9 @@ std::string LivePlay::submit(const game::Command& command) {
     return notice_;
 }
 
-void LivePlay::say(std::string text) {
+void LivePlay::say(std::string text, double seconds) {
     notice_ = std::move(text);
-    noticeSeconds_ = kNoticeSeconds;
+    noticeSeconds_ = seconds;
 }
 
 std::string LivePlay::submit(const std::vector<game::Command>& commands) {

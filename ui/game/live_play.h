@@ -85,8 +85,9 @@ class LivePlay {
     std::string banner() const;
     /// The refused command the HUD shows now ("spawn: ..."), "" for none.
     std::string notice() const { return noticeSeconds_ > 0.0 ? notice_ : std::string(); }
-    /// Shows `text` on the HUD a while, as a refusal is (a key with nothing to do here).
-    void say(std::string text);
+    /// Shows `text` on the HUD a while, as a refusal is (a key with nothing to do here):
+    /// `seconds` of wall time, a few by default.
+    void say(std::string text, double seconds = 3.0);
     /// The notice fades with wall time.
     void fadeNotice(double wallSeconds);
 

@@ -1,25 +1,27 @@
 #include "ui/game/menu_flow.h"
 
-#include <map>
+#include "game/weapon_text.h"
+
+#include <algorithm>
 
 namespace ui {
 
-namespace {
-
-/// The picture of a chapter's lesson, by the chapter.
-std::string lessonPicture(const game::Chapter& chapter) {
-    static const std::map<std::string, std::string> byChapter = {
-        {"flight", "firing-solution"}, {"worlds", "moon-vs-earth"}, {"drag", "drag"},
-        {"bounce", "bounce"},          {"springs", "spring"},       {"rigid", "topple"},
-        {"stability", "euler-drift"}};
-    const auto it = byChapter.find(chapter.id);
-    return it == byChapter.end() ? "" : it->second;
-}
-
-} // namespace
-
 MenuFlow::MenuFlow(const std::string& levelsFolder)
     : levels_(listLevels(levelsFolder)), campaign_(campaignMenu(levelsFolder, levels_)) {}
+
+std::string MenuFlow::weaponIntroduction(const std::string& levelFile) const {
+    std::vector<std::string> met; // the weapons the levels before it offer, in play order
+    for (const std::vector<LevelEntry>& chapter : campaign_.chapters)
+        for (const LevelEntry& e : chapter) {
+            if (e.file == levelFile) {
+                for (const std::string& w : e.weapons)
+                    if (std::find(met.begin(), met.end(), w) == met.end()) return game::weaponIntroduction(w);
+                return "";
+            }
+            met.insert(met.end(), e.weapons.begin(), e.weapons.end());
+        }
+    return "";
+}
 
 void MenuFlow::drawHelp() {
     if (helpOpen_) helpOverlay(helpOpen_);
@@ -41,7 +43,7 @@ MenuChoice MenuFlow::draw(const game::Progress& progress, PlayerSettings& settin
                                    {&randomMap_, &editorForm_, &levels_});
     if (overlay_ == Overlay::Lesson)
         choice = lessonScreen(campaign_.campaign, lessonChapter_, lessonThenLevel_,
-                              {lessonPicture(campaign_.campaign.chapters.at(lessonChapter_)),
+                              {campaign_.campaign.chapters.at(lessonChapter_).picture,
                                &lessonPictures_, fbo});
     if (overlay_ == Overlay::Replays) choice = replaysScreen(replays_, replaysFolder);
     if (overlay_ == Overlay::Pause) choice = pauseMenu(settings, silentWhy, match, rewind);

@@ -54,6 +54,10 @@ class MenuFlow {
     /// help). True when a lesson read for the first time went into `progress` (save it).
     bool follow(const MenuChoice& choice, game::Progress& progress, const std::string& replaysFolder);
 
+    /// The one line that introduces the weapon `levelFile` is the first of the campaign's
+    /// levels to offer ("New: the grenade bounces ..."), "" when it offers none first.
+    std::string weaponIntroduction(const std::string& levelFile) const;
+
     /// The first level that loads, drawn behind the level select (none once a game starts).
     void showBackdrop();
     const game::Match* backdrop() const { return backdrop_.get(); }

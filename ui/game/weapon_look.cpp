@@ -164,10 +164,8 @@ void icon(ImDrawList* draw, ImVec2 lo, float size, const std::string& name, bool
 /// The bar's key for projectile `name`: its weapon's fixed number ("1" .. "8"), or Tab
 /// for a ball.
 std::string barKey(const std::string& name) {
-    const auto all = game::weapons();
-    for (std::size_t k = 0; k < all.size(); ++k)
-        if (name == all[k].name) return std::to_string(k + 1);
-    return "Tab";
+    const auto key = game::keyOfProjectile(name);
+    return key ? std::to_string(*key) : "Tab";
 }
 
 } // namespace
@@ -217,12 +215,11 @@ std::optional<std::size_t> projectileBar(const game::CannonState& c) {
 }
 
 std::optional<std::size_t> weaponByKey(const game::CannonState& c, int number, std::string& why) {
-    const auto all = game::weapons();
-    if (number < 1 || number > static_cast<int>(all.size())) return std::nullopt;
-    const std::string name = all[static_cast<std::size_t>(number - 1)].name;
+    const auto name = game::weaponOnKey(number);
+    if (!name) return std::nullopt;
     for (std::size_t i = 0; i < c.def.projectiles.size(); ++i)
-        if (c.def.projectiles[i] == name) return i;
-    why = "no " + name + " in this level";
+        if (c.def.projectiles[i] == *name) return i;
+    why = "select: this level has no " + *name; // as the match refuses a select of it
     return std::nullopt;
 }
 

@@ -1,0 +1,67 @@
+# A weapon's campaign level needs its weapon, as the solver proves it:
+#   1. solve-level LEVEL reaches three stars, and its best game fires WEAPON;
+#   2. the same level with WEAPON taken off every cannon's list earns fewer stars.
+# cmake -DEXE=artillery -DLEVEL=levels/40_scatter.json -DWEAPON=cluster -DOUT=dir -P solve_weapon.cmake
+file(MAKE_DIRECTORY ${OUT})
+execute_process(COMMAND ${EXE} solve-level ${LEVEL} --json --require-stars 3
+                RESULT_VARIABLE rc OUTPUT_VARIABLE with ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "with the ${WEAPON}: solve-level exited ${rc}, fewer than 3 stars?\n${with}${err}")
+endif()
+string(JSON stars GET "${with}" stars)
+# The solver selects before every shot, so a select of the weapon is a shot fired with it.
+string(JSON count LENGTH "${with}" commands)
+set(fired 0)
+math(EXPR last "${count} - 1")
+foreach(i RANGE ${last})
+  string(JSON cmd GET "${with}" commands ${i} cmd)
+  if(cmd STREQUAL "select")
+    string(JSON projectile GET "${with}" commands ${i} projectile)
+    if(projectile STREQUAL WEAPON)
+      math(EXPR fired "${fired} + 1")
+    endif()
+  endif()
+endforeach()
+if(fired EQUAL 0)
+  message(FATAL_ERROR "the solver's best game (${stars} stars) fires no ${WEAPON}:\n${with}")
+endif()
+
+# The level without the weapon: every cannon's list less its entries, bare or counted.
+file(READ ${LEVEL} level)
+string(JSON cannons LENGTH "${level}" cannons)
+math(EXPR lastCannon "${cannons} - 1")
+foreach(c RANGE ${lastCannon})
+  string(JSON n ERROR_VARIABLE none LENGTH "${level}" cannons ${c} projectiles)
+  if(none)
+    continue()
+  endif()
+  # Backwards, so removing an entry leaves the indices still to visit in place.
+  math(EXPR j "${n} - 1")
+  while(j GREATER_EQUAL 0)
+    string(JSON type TYPE "${level}" cannons ${c} projectiles ${j})
+    if(type STREQUAL "OBJECT")
+      string(JSON name GET "${level}" cannons ${c} projectiles ${j} name)
+    else()
+      string(JSON name GET "${level}" cannons ${c} projectiles ${j})
+    endif()
+    if(name STREQUAL WEAPON)
+      string(JSON level REMOVE "${level}" cannons ${c} projectiles ${j})
+    endif()
+    math(EXPR j "${j} - 1")
+  endwhile()
+endforeach()
+get_filename_component(stem ${LEVEL} NAME_WE)
+set(without ${OUT}/${stem}_without_${WEAPON}.json)
+file(WRITE ${without} "${level}")
+execute_process(COMMAND ${EXE} solve-level ${without} --json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "without the ${WEAPON}: solve-level exited ${rc}:\n${out}${err}")
+endif()
+string(JSON starsWithout GET "${out}" stars)
+if(NOT starsWithout LESS stars)
+  message(FATAL_ERROR "without the ${WEAPON} the solver still earns ${starsWithout} stars "
+                      "(${stars} with it):\n${out}")
+endif()
+message(STATUS "${stem}: ${stars} stars with the ${WEAPON} (fired in ${fired} of its shots), "
+               "${starsWithout} without")
