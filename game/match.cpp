@@ -266,103 +266,6 @@ MaterialsInPlay Match::materialsInPlay() const {
     return in;
 }
 
-std::string Match::apply(const Command& cmd) {
-    auto refuse = [&](std::string why) {
-        emit(EventKind::Refused, current_, {}, 0.0, std::string(commandName(cmd.kind)) + ": " + why);
-        return why;
-    };
-    CannonState& c = cannons_[static_cast<std::size_t>(current_)];
-    switch (cmd.kind) {
-    case CommandKind::Aim:
-        if (!(cmd.number >= -180.0 && cmd.number <= 180.0))
-            return refuse("angle must be in [-180, 180] degrees");
-        c.angleDeg = cmd.number;
-        return "";
-    case CommandKind::Power:
-        if (!(cmd.number >= 0.0 && cmd.number <= c.def.maxSpeedMps))
-            return refuse("muzzle speed must be in [0, " + std::to_string(c.def.maxSpeedMps) +
-                          "] m/s for this cannon");
-        c.speedMps = cmd.number;
-        return "";
-    case CommandKind::Select: {
-        const auto& list = c.def.projectiles;
-        const auto it = std::find(list.begin(), list.end(), cmd.text);
-        if (it == list.end()) {
-            // A weapon or ball by name that this level does not offer (the window's fixed
-            // weapon keys send these): one short line the player can read at a glance.
-            if (knownProjectile(cmd.text)) return refuse("this level has no " + cmd.text);
-            std::string names;
-            for (const auto& n : list) names += (names.empty() ? "" : ", ") + n;
-            return refuse("this cannon fires " + names + ", not \"" + cmd.text + "\"");
-        }
-        // A name the level lists but no preset or weapon has would fire a shell of nothing.
-        if (!knownProjectile(cmd.text)) return refuse("\"" + cmd.text + "\" is not a projectile or weapon");
-        c.projectile = static_cast<std::size_t>(it - list.begin());
-        return "";
-    }
-    case CommandKind::Fire:
-        if (over_) return refuse("the match is over");
-        if (shell_ != kNoParticle) return refuse("a shell is still in flight");
-        if (c.shotsLeft <= 0 && !sandbox()) return refuse("no shots left");
-        if (c.projectile < c.ammoLeft.size() && c.ammoLeft[c.projectile] == 0 && !sandbox())
-            return refuse("no " + c.def.projectiles[c.projectile] + " left");
-        fire();
-        return "";
-    case CommandKind::EndTurn:
-        if (over_) return refuse("the match is over");
-        if (shell_ != kNoParticle) return refuse("wait until the shell lands");
-        nextTurn();
-        return "";
-    case CommandKind::Set: {
-        LiveSettings live = liveSettings();
-        if (std::string why = applySetting(live, cmd.text, cmd.value); !why.empty()) return refuse(why);
-        world_.setDef(live.world);
-        world_.materials = std::move(live.materials); // its pair cache is rebuilt: next contact
-        RigidWorldDef rd = rigid_->def();
-        rd.gravity = live.world.forces.gravity;
-        rigid_->setDef(rd);
-        emit(EventKind::SettingChanged, current_, {}, 0.0, cmd.text + " = " + describe(cmd.value));
-        return "";
-    }
-    case CommandKind::Assist: {
-        // A learning aid in view: the result can no longer earn the third star.
-        const int bit = cmd.text == "hint" ? kAssistHint : cmd.text == "preview" ? kAssistPreview : 0;
-        if (bit == 0) return refuse("expected preview or hint, got \"" + cmd.text + "\"");
-        if (!(assisted_ & bit)) emit(EventKind::SettingChanged, current_, {}, 0.0, "assist = " + cmd.text);
-        assisted_ |= bit;
-        return "";
-    }
-    case CommandKind::Sandbox:
-        if (sandbox()) return refuse("the level is already a sandbox");
-        level_.mode = Mode::Sandbox;
-        over_ = false;
-        emit(EventKind::SettingChanged, current_, {}, 0.0, "mode = sandbox");
-        return "";
-    case CommandKind::Spawn:
-    case CommandKind::Grab:
-    case CommandKind::Drag:
-    case CommandKind::Release: {
-        if (!sandbox())
-            return refuse("only in the sandbox (open the level as a sandbox, or send \"sandbox\" first)");
-        std::string why;
-        switch (cmd.kind) {
-        case CommandKind::Spawn: why = spawn(cmd); break;
-        case CommandKind::Grab: why = grabAt(cmd.at); break;
-        case CommandKind::Drag:
-            if (grab_.kind == GrabState::Kind::None) why = "nothing is grabbed";
-            else dragTo(cmd.at);
-            break;
-        default:
-            if (grab_.kind == GrabState::Kind::None) why = "nothing is grabbed";
-            else release();
-            break;
-        }
-        return why.empty() ? why : refuse(why);
-    }
-    }
-    return refuse("unknown command");
-}
-
 void Match::fire() {
     CannonState& c = cannons_[static_cast<std::size_t>(current_)];
     shellAmmo_ = selectedAmmo();
@@ -514,7 +417,17 @@ void Match::updateTargets() {
         if (s.def.path.size() >= 2) s.position = targetPositionAt(s.def, time());
 }
 
+// One tick, as named phases: the physics, what it knocked over, the fragments, then the
+// shell's own story (its passes, a duel hit, its contacts, its weapon, its end).
 void Match::step() {
+    if (!stepPhysics()) return;
+    scoreToppled();
+    stepFragments();
+    if (shell_ == kNoParticle) return finishWhenAllDown();
+    stepShell();
+}
+
+bool Match::stepPhysics() {
     coupling_.prepare(world_, *rigid_);
     world_.step();
     // The guard: nothing non-finite or runaway survives the tick, and the player is told
@@ -524,14 +437,17 @@ void Match::step() {
         emit(EventKind::Unstable, current_, {}, g.removed, g.cause);
         if (shellAlive && !world_.particles.alive(shell_)) {
             endShot(closestMiss_);
-            return;
+            return false;
         }
     }
     coupling_.exchange(world_, *rigid_);
     pullGrabbed();
     rigid_->step(world_.def().tickSeconds);
     updateTargets();
+    return true;
+}
 
+void Match::scoreToppled() {
     CannonState& shooter = cannons_[static_cast<std::size_t>(current_)];
     // Structures knocked off their place score for whoever fired last.
     for (BlockState& b : blocks_) {
@@ -564,72 +480,84 @@ void Match::step() {
             emit(EventKind::Toppled, current_, p, kTargetBlobPoints);
         }
     }
+}
 
-    stepFragments();
-    if (shell_ == kNoParticle) {
-        if (!over_ && level_.mode == Mode::Practice) {
-            bool allDown = true;
-            for (const auto& t : targets_) allDown = allDown && t.hit;
-            for (const auto& b : blocks_) allDown = allDown && (!b.def.target || b.toppled);
-            for (const auto& b : blobs_) allDown = allDown && (!b.def.target || b.toppled);
-            if (allDown && shotsFired_ > 0) finish();
-        }
-        return;
-    }
+void Match::finishWhenAllDown() {
+    if (over_ || level_.mode != Mode::Practice) return;
+    bool allDown = true;
+    for (const auto& t : targets_) allDown = allDown && t.hit;
+    for (const auto& b : blocks_) allDown = allDown && (!b.def.target || b.toppled);
+    for (const auto& b : blobs_) allDown = allDown && (!b.def.target || b.toppled);
+    if (allDown && shotsFired_ > 0) finish();
+}
 
+void Match::stepShell() {
     const Vec2 p = world_.particles.position(shell_);
     const double r = world_.particles.radius[shell_];
-    // Targets: a hit scores by how close to the centre the shell passes, judged at the
-    // closest point of its pass (the first tick inside is usually near the rim).
+    followTargetPasses(p, r);
+    scorePasses(false);
+    if (level_.mode == Mode::Duel && hitEnemyCannon(p, r)) return;
+    const ShellTouch touch = shellContacts();
+    if (stepWeapon(p, touch.touched, touch.impact)) return;
+    if (shellIsDone(p)) endShot(closestMiss_);
+}
+
+void Match::followTargetPasses(Vec2 p, double r) {
+    // A hit scores by how close to the centre the shell passes, judged at the closest point
+    // of its pass (the first tick inside is usually near the rim).
     for (TargetState& t : targets_) {
         if (t.hit) continue;
         const double d = length(p - t.position);
         closestMiss_ = std::min(closestMiss_, std::max(0.0, d - t.def.radius));
         if (d <= t.def.radius + r && d <= t.closestInside) t.closestInside = d;
     }
-    scorePasses(false);
-    // Duel: passing through an enemy cannon hits it and ends the shot.
-    if (level_.mode == Mode::Duel)
-        for (std::size_t i = 0; i < cannons_.size(); ++i) {
-            CannonState& k = cannons_[i];
-            if (static_cast<int>(i) == current_ || k.hitPoints <= 0) continue;
-            const double d = length(p - k.def.position);
-            closestMiss_ = std::min(closestMiss_, std::max(0.0, d - kCannonRadius));
-            if (d <= kCannonRadius + r) {
-                --k.hitPoints;
-                emit(EventKind::CannonHit, static_cast<int>(i), p, k.hitPoints);
-                if (shellAmmo_.blastRadius > 0.0) {
-                    burst(p, static_cast<int>(i)); // which must not hit it a second time
-                } else {
-                    world_.particles.remove(shell_);
-                }
-                return endShot(0.0);
+}
+
+bool Match::hitEnemyCannon(Vec2 p, double r) {
+    // Passing through an enemy cannon hits it and ends the shot.
+    for (std::size_t i = 0; i < cannons_.size(); ++i) {
+        CannonState& k = cannons_[i];
+        if (static_cast<int>(i) == current_ || k.hitPoints <= 0) continue;
+        const double d = length(p - k.def.position);
+        closestMiss_ = std::min(closestMiss_, std::max(0.0, d - kCannonRadius));
+        if (d <= kCannonRadius + r) {
+            --k.hitPoints;
+            emit(EventKind::CannonHit, static_cast<int>(i), p, k.hitPoints);
+            if (shellAmmo_.blastRadius > 0.0) {
+                burst(p, static_cast<int>(i)); // which must not hit it a second time
+            } else {
+                world_.particles.remove(shell_);
             }
+            endShot(0.0);
+            return true;
         }
-    // Impacts: a shell bursts on its first; a ball bounces.
-    bool touched = false, impact = false;
+    }
+    return false;
+}
+
+Match::ShellTouch Match::shellContacts() {
+    // Impacts: a shell bursts on its first; a ball bounces. A body it struck has already
+    // taken the shell's impulse (the coupling ran first).
+    ShellTouch touch;
+    const auto touching = [&](Vec2 where, double closingSpeed) {
+        touch.touched = true;
+        touch.impact = touch.impact || closingSpeed > 1.0;
+        if (shellAmmo_.behaviour.onImpact == OnImpact::Bounce && closingSpeed > 1.0)
+            emit(EventKind::Bounce, current_, where, closingSpeed);
+    };
     for (const ContactEvent& e : world_.contacts())
-        if (e.a == shell_ || e.b == shell_) {
-            touched = true;
-            impact = impact || e.closingSpeed > 1.0;
-            if (shellAmmo_.behaviour.onImpact == OnImpact::Bounce && e.closingSpeed > 1.0)
-                emit(EventKind::Bounce, current_, e.position, e.closingSpeed);
-        }
-    // A body it struck has already taken the shell's impulse (the coupling ran first).
+        if (e.a == shell_ || e.b == shell_) touching(e.position, e.closingSpeed);
     for (const BodyContactEvent& e : coupling_.events())
-        if (e.particle == shell_) {
-            touched = true;
-            impact = impact || e.closingSpeed > 1.0;
-            if (shellAmmo_.behaviour.onImpact == OnImpact::Bounce && e.closingSpeed > 1.0)
-                emit(EventKind::Bounce, current_, e.point, e.closingSpeed);
-        }
-    if (stepWeapon(p, touched, impact)) return;
+        if (e.particle == shell_) touching(e.point, e.closingSpeed);
+    return touch;
+}
+
+bool Match::shellIsDone(Vec2 p) const {
     const double flight = static_cast<double>(tick() - shellFiredTick_) * world_.def().tickSeconds;
     const bool outside = p.x < level_.worldMin.x || p.x > level_.worldMax.x || p.y < level_.worldMin.y;
     const bool resting = !shellHeld() && ((world_.particles.flags[shell_] & kSleeping) ||
                          (flight > 1.0 && length(world_.particles.velocity(shell_)) < 0.05));
-    if (outside || resting || flight > kMaxFlightSeconds || !std::isfinite(p.x) || !std::isfinite(p.y))
-        endShot(closestMiss_);
+    return outside || resting || flight > kMaxFlightSeconds || !std::isfinite(p.x) || !std::isfinite(p.y);
 }
 
 int Match::score() const {

@@ -242,6 +242,31 @@ class Match {
     void finish();
     void emit(EventKind kind, int player, phys::Vec2 where, double value, std::string text = {});
     void updateTargets();
+    // The commands (match_commands.cpp): each refused with one line, as a Refused event.
+    std::string refuse(const Command& cmd, std::string why);
+    std::string select(const Command& cmd);
+    std::string set(const Command& cmd);
+    std::string sandboxTool(const Command& cmd);
+    // The phases of step(), in order.
+    /// The particles, the coupling and the rigid bodies; false when the guard removed the
+    /// shell (the shot is over).
+    bool stepPhysics();
+    /// Target blocks and blobs knocked off their place score for whoever fired last.
+    void scoreToppled();
+    /// With no shell in flight, a practice level whose targets are all down is won.
+    void finishWhenAllDown();
+    /// The shell's tick: its passes, a duel hit, its contacts, its weapon, its end.
+    void stepShell();
+    void followTargetPasses(phys::Vec2 p, double r);
+    /// True when the shell hit an enemy cannon (the shot has ended).
+    bool hitEnemyCannon(phys::Vec2 p, double r);
+    struct ShellTouch {
+        bool touched = false; ///< the shell touched anything this tick
+        bool impact = false;  ///< at a closing speed over 1 m/s
+    };
+    ShellTouch shellContacts();
+    /// Out of the world, at rest, flown too long or not finite.
+    bool shellIsDone(phys::Vec2 p) const;
     /// Scores targets the shell has passed through and is now leaving (or all, at the end).
     void scorePasses(bool shotEnding);
     /// An explosive shell bursts at `at`; `spared` (a cannon index) was already hit directly.
