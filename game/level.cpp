@@ -249,15 +249,8 @@ bool inside(const Level& l, Vec2 p) {
     return p.x >= l.worldMin.x && p.x <= l.worldMax.x && p.y >= l.worldMin.y && p.y <= l.worldMax.y;
 }
 
-} // namespace
-
-Level parseLevel(const std::string& file, const std::string& text) {
-    const nlohmann::json doc = parseJson(file, text);
-    const Node root(doc, file);
-    if (!root.isObject()) root.fail("expected a level object { \"format\": 1, ... }");
-    Level l;
-    l.file = file;
-    l.contentHash = contentHash(text);
+/// The format, the name, the texts and the mode.
+void readHeader(const Node& root, Level& l) {
     l.format = static_cast<int>(root.at("format").integer(1, 1000));
     if (l.format != kLevelFormat)
         root.at("format").fail("this game reads level format " + std::to_string(kLevelFormat) +
@@ -270,7 +263,10 @@ Level parseLevel(const std::string& file, const std::string& text) {
                                  ? root.at("mode").choice({"practice", "duel", "sandbox"})
                                  : "practice";
     l.mode = mode == "duel" ? Mode::Duel : mode == "sandbox" ? Mode::Sandbox : Mode::Practice;
+}
 
+/// The world's bounds and physics, the terrain and the obstacles: what does not move.
+void readStage(const Node& root, Level& l) {
     if (auto world = root.find("world")) {
         l.worldMin = world->at("min").vec2(kMaxCoordinate);
         l.worldMax = world->at("max").vec2(kMaxCoordinate);
@@ -304,46 +300,57 @@ Level parseLevel(const std::string& file, const std::string& text) {
                        " points in all obstacles together");
         }
     }
-    const Node cannons = root.at("cannons");
-    const auto cannonNodes = cannons.elements(kMaxCannons, 1);
-    for (const Node& n : cannonNodes) l.cannons.push_back(readCannon(n));
-    // Placement: everything that moves or is hit starts inside the world and above the
-    // ground (a cannon below it fires into rock; a target below it cannot be reached).
-    const Heightfield ground(l.terrain.points);
-    const auto placed = [&](const Node& n, Vec2 p, const char* what) {
-        if (!inside(l, p)) n.fail("expected a point inside the world bounds");
-        if (p.y < ground.heightAt(p.x) - 1e-6)
+}
+
+/// Placement: everything that moves or is hit starts inside the world and above the
+/// ground (a cannon below it fires into rock; a target below it cannot be reached).
+class Placement {
+public:
+    explicit Placement(const Level& l) : level_(l), ground_(l.terrain.points) {}
+    void check(const Node& n, Vec2 p, const char* what) const {
+        if (!inside(level_, p)) n.fail("expected a point inside the world bounds");
+        if (p.y < ground_.heightAt(p.x) - 1e-6)
             n.fail(std::string("expected ") + what + " above the ground, but the ground there is at y = " +
-                   std::to_string(ground.heightAt(p.x)).substr(0, 8) + " m");
-    };
-    for (std::size_t i = 0; i < l.cannons.size(); ++i)
-        placed(cannonNodes[i].at("position"), l.cannons[i].position, "the cannon");
+                   std::to_string(ground_.heightAt(p.x)).substr(0, 8) + " m");
+    }
+
+private:
+    const Level& level_;
+    Heightfield ground_;
+};
+
+void readTargets(const Node& root, Level& l, const Placement& placed) {
     if (auto list = root.find("targets"))
         for (const Node& n : list->elements(kMaxTargets)) {
             l.targets.push_back(readTarget(n));
-            placed(n.at("position"), l.targets.back().position, "the target's centre");
+            placed.check(n.at("position"), l.targets.back().position, "the target's centre");
             if (auto path = n.find("path")) {
                 const auto nodes = path->elements(64);
                 for (std::size_t i = 0; i < nodes.size(); ++i)
-                    placed(nodes[i], l.targets.back().path[i], "the target's path");
+                    placed.check(nodes[i], l.targets.back().path[i], "the target's path");
             }
         }
-    if (auto list = root.find("blocks")) {
-        const auto nodes = list->elements(kMaxBlocks);
-        std::vector<Box> boxes;
-        for (const Node& n : nodes) {
-            l.blocks.push_back(readBlock(n));
-            const Block& b = l.blocks.back();
-            placed(n.at("position"), b.position, "the block's centre");
-            boxes.push_back({b.position, b.size, b.angleDeg});
-        }
-        // Overlapping blocks are pushed apart by Box2D at up to its maximum correction
-        // every step; many at one point make every step a dense n^2 contact solve.
-        if (const auto [i, j] = firstOverlap(boxes, kBlockOverlapSlack); i >= 0)
-            nodes[static_cast<std::size_t>(j)].fail(
-                "expected blocks not to overlap, but this one overlaps block " +
-                std::to_string(i) + " by more than 2 cm");
+}
+
+void readBlocks(const Node& root, Level& l, const Placement& placed) {
+    const auto list = root.find("blocks");
+    if (!list) return;
+    const auto nodes = list->elements(kMaxBlocks);
+    std::vector<Box> boxes;
+    for (const Node& n : nodes) {
+        l.blocks.push_back(readBlock(n));
+        const Block& b = l.blocks.back();
+        placed.check(n.at("position"), b.position, "the block's centre");
+        boxes.push_back({b.position, b.size, b.angleDeg});
     }
+    // Overlapping blocks are pushed apart by Box2D at up to its maximum correction
+    // every step; many at one point make every step a dense n^2 contact solve.
+    if (const auto [i, j] = firstOverlap(boxes, kBlockOverlapSlack); i >= 0)
+        nodes[static_cast<std::size_t>(j)].fail("expected blocks not to overlap, but this one overlaps block " +
+                                                std::to_string(i) + " by more than 2 cm");
+}
+
+void readRopesAndBlobs(const Node& root, Level& l, const Placement& placed) {
     if (auto list = root.find("ropes")) {
         long long segments = 0;
         for (const Node& n : list->elements(kMaxRopes)) {
@@ -353,19 +360,19 @@ Level parseLevel(const std::string& file, const std::string& text) {
                 n.at("segments").fail("expected at most " + std::to_string(kMaxRopeSegments) +
                                       " segments in all ropes together (each costs simulation "
                                       "time every tick), got " + std::to_string(segments));
-            placed(n.at("from"), l.ropes.back().from, "the rope's end");
-            placed(n.at("to"), l.ropes.back().to, "the rope's end");
+            placed.check(n.at("from"), l.ropes.back().from, "the rope's end");
+            placed.check(n.at("to"), l.ropes.back().to, "the rope's end");
         }
     }
     if (auto list = root.find("blobs"))
         for (const Node& n : list->elements(kMaxBlobs)) {
             l.blobs.push_back(readBlob(n));
-            placed(n.at("center"), l.blobs.back().center, "the blob's centre");
+            placed.check(n.at("center"), l.blobs.back().center, "the blob's centre");
         }
-    l.shots = static_cast<int>(root.integer("shots", l.shots, 1, 100));
-    l.seed = static_cast<std::uint64_t>(root.integer("seed", 1, 0, 0x7fffffffffffffffll));
+}
 
-    // Rules that span fields.
+/// Rules that span fields: a duel's two sides, a practice level's something to hit.
+void checkModeRules(const Node& root, const Node& cannons, const Level& l) {
     if (l.mode == Mode::Duel) {
         bool two = false;
         for (const auto& c : l.cannons) two = two || c.player != l.cannons.front().player;
@@ -380,6 +387,31 @@ Level parseLevel(const std::string& file, const std::string& text) {
             root.fail("a practice level needs something to hit: \"targets\", or \"blocks\" or "
                       "\"blobs\" with \"target\": true");
     }
+}
+
+} // namespace
+
+Level parseLevel(const std::string& file, const std::string& text) {
+    const nlohmann::json doc = parseJson(file, text);
+    const Node root(doc, file);
+    if (!root.isObject()) root.fail("expected a level object { \"format\": 1, ... }");
+    Level l;
+    l.file = file;
+    l.contentHash = contentHash(text);
+    readHeader(root, l);
+    readStage(root, l);
+    const Node cannons = root.at("cannons");
+    const auto cannonNodes = cannons.elements(kMaxCannons, 1);
+    for (const Node& n : cannonNodes) l.cannons.push_back(readCannon(n));
+    const Placement placed(l);
+    for (std::size_t i = 0; i < l.cannons.size(); ++i)
+        placed.check(cannonNodes[i].at("position"), l.cannons[i].position, "the cannon");
+    readTargets(root, l, placed);
+    readBlocks(root, l, placed);
+    readRopesAndBlobs(root, l, placed);
+    l.shots = static_cast<int>(root.integer("shots", l.shots, 1, 100));
+    l.seed = static_cast<std::uint64_t>(root.integer("seed", 1, 0, 0x7fffffffffffffffll));
+    checkModeRules(root, cannons, l);
     root.finish();
     return l;
 }

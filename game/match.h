@@ -7,8 +7,8 @@
 // Section index
 //   set-up     Match(level), the world built from the level (terrain, obstacles,
 //              blocks, ropes, blobs)
-//   commands   apply(): aim, power, select, fire, end_turn, set
-//   tick       step(): particles, coupling, rigid bodies, targets, shell, turn
+//   commands   apply(): aim, power, select, fire, end_turn, set (match_commands.cpp)
+//   tick       step(): the physics, what it toppled, the fragments, the shell
 //   state      cannons, targets, wind, score, stars, events, hash
 //   sandbox    sandbox(), spawn, grab, drag, release (match_sandbox.cpp)
 #pragma once
