@@ -67,69 +67,83 @@ Approach closestApproach(const std::vector<Vec2>& path, Vec2 target, double tick
     return best;
 }
 
-} // namespace
+/// One aim at one target: the exact solution in the open, else trial shots through the
+/// same simulation. Counts its trials in the solution it fills.
+class Aimer {
+public:
+    Aimer(const Match& match, Vec2 target, std::optional<std::size_t> projectile)
+        : match_(match), c_(match.cannon()), target_(target), projectile_(projectile),
+          g_(-match.world().def().forces.gravity.y), cover_(coverFor(match, target, projectile)) {}
 
-AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> projectile) {
-    const CannonState& c = match.cannon();
-    AimSolution out;
-    const double g = -match.world().def().forces.gravity.y;
-    int bounces = 0; // contacts a trial shot flies on through
+    AimSolution aim() {
+        if (match_.ballisticOnly() && exactInTheOpen()) return out_;
+        trialSearch(0);
+        // No straight path reaches: paths that fly on through up to two contacts (a ceiling
+        // to bank off, water to skip on).
+        if (!(out_.missM < kOnTarget)) trialSearch(2);
+        bounces_ = found_;
+        if (std::isfinite(out_.missM))
+            out_.flightSeconds = approach(out_.angleDeg, out_.speedMps, false).seconds;
+        return out_;
+    }
+
+private:
     // In a duel a trial path ends at the first block in its way (the preview flies through
     // bodies): the blocks are the castles' cover. In practice they are what the shot is
     // for, and a shell into the blocks in front of a target block is a fair way to it.
-    const Ammo ammo = match.ammoAt(projectile.value_or(c.projectile));
-    const BlockCover cover = match.level().mode == Mode::Duel
-                                 ? BlockCover(match, target, 0.5 * ammo.preset.diameter + kCoverMargin)
-                                 : BlockCover();
+    static BlockCover coverFor(const Match& match, Vec2 target, std::optional<std::size_t> projectile) {
+        const Ammo ammo = match.ammoAt(projectile.value_or(match.cannon().projectile));
+        return match.level().mode == Mode::Duel
+                   ? BlockCover(match, target, 0.5 * ammo.preset.diameter + kCoverMargin)
+                   : BlockCover();
+    }
+
     // Past the budget a trial is a miss, not flown; the chosen path's own flight time is
     // always measured (`budgeted` false).
-    auto approach = [&](double angleDeg, double speed, bool budgeted = true) {
-        if (budgeted && out.trialTicks >= kMaxTrialTicks) return Approach{};
-        ++out.trials;
+    Approach approach(double angleDeg, double speed, bool budgeted = true) {
+        if (budgeted && out_.trialTicks >= kMaxTrialTicks) return Approach{};
+        ++out_.trials;
         std::vector<Vec2> path =
-            match.previewTrajectory(angleDeg, speed, 20.0, target.x, projectile, bounces);
-        out.trialTicks += static_cast<long>(path.size());
-        path.resize(std::min(path.size(), cover.firstBlocked(path) + 1));
-        return closestApproach(path, target, match.world().def().tickSeconds);
-    };
-    auto flown = [&](double angleDeg, double speed) { return approach(angleDeg, speed).miss; };
-    if (match.ballisticOnly()) {
-        // Exact in the open: the smallest speed step from the current power that reaches,
-        // the low arc, then the high one. The closed form knows no walls or ceilings, so
-        // each arc is flown once through the same simulation and kept only if nothing
-        // stops it short of the target (a wall to lob over, a ceiling to stay under).
-        for (double s = std::max(5.0, c.speedMps); s <= c.def.maxSpeedMps + 1e-9; s += 2.5)
+            match_.previewTrajectory(angleDeg, speed, 20.0, target_.x, projectile_, bounces_);
+        out_.trialTicks += static_cast<long>(path.size());
+        path.resize(std::min(path.size(), cover_.firstBlocked(path) + 1));
+        return closestApproach(path, target_, match_.world().def().tickSeconds);
+    }
+
+    // Exact in the open: the smallest speed step from the current power that reaches, the
+    // low arc, then the high one. The closed form knows no walls or ceilings, so each arc
+    // is flown once through the same simulation and kept only if nothing stops it short of
+    // the target (a wall to lob over, a ceiling to stay under).
+    bool exactInTheOpen() {
+        for (double s = std::max(5.0, c_.speedMps); s <= c_.def.maxSpeedMps + 1e-9; s += 2.5)
             for (std::size_t arc = 0; arc < 2; ++arc) {
                 // The muzzle moves with the angle; two fixed-point passes settle it.
-                double angle = c.angleDeg;
+                double angle = c_.angleDeg;
                 std::vector<FiringSolution> sol;
                 for (int pass = 0; pass < 3; ++pass) {
-                    sol = solveFiring(match.muzzle(angle), target, s, g);
+                    sol = solveFiring(match_.muzzle(angle), target_, s, g_);
                     if (sol.size() <= arc) break;
                     angle = sol[arc].angleDeg;
                 }
                 if (sol.size() <= arc) continue;
                 const Approach a = approach(angle, s);
                 if (!(a.miss < kOnTarget)) continue;
-                out.angleDeg = angle;
-                out.speedMps = s;
-                out.missM = 0.0;
-                out.exact = true;
-                out.flightSeconds = a.seconds;
-                return out;
+                out_.angleDeg = angle;
+                out_.speedMps = s;
+                out_.missM = 0.0;
+                out_.exact = true;
+                out_.flightSeconds = a.seconds;
+                return true;
             }
+        return false;
     }
-    // Trial shots through the same simulation: a coarse sweep of elevations, then a
-    // golden-section search on the closest approach, at increasing power from what a
-    // vacuum shot would need until a path passes within half a metre.
-    const double dir = target.x >= c.def.position.x ? 1.0 : -1.0;
-    auto toAngle = [&](double elevation) { return dir > 0 ? elevation : 180.0 - elevation; };
-    auto trial = [&](double elevation, double speed) { return flown(toAngle(elevation), speed); };
-    const Vec2 d = target - c.def.position;
-    const double vacuum = std::sqrt(std::max(0.0, g * (d.y + length(d)))); // least speed in vacuum
-    const double step = 0.1 * c.def.maxSpeedMps;
+
+    double direction() const { return target_.x >= c_.def.position.x ? 1.0 : -1.0; }
+    double toAngle(double elevation) const { return direction() > 0 ? elevation : 180.0 - elevation; }
+    double trial(double elevation, double speed) { return approach(toAngle(elevation), speed).miss; }
+
     // Golden section on [elevation - 10, elevation + 10]: one new trial per iteration.
-    auto refine = [&](double elevation, double s) {
+    std::pair<double, double> refine(double elevation, double s) {
         const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
         double lo = std::max(0.0, elevation - 10.0), hi = std::min(89.0, elevation + 10.0);
         double x1 = hi - phi * (hi - lo), x2 = lo + phi * (hi - lo);
@@ -150,52 +164,71 @@ AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> pr
             }
         }
         return m1 < m2 ? std::pair{x1, m1} : std::pair{x2, m2};
-    };
-    // At increasing power: the coarse sweep, its best elevation refined, and when that does
-    // not reach, the best of the other family (below 45 degrees, or above) refined too: a
-    // low path that ends on cover near the target can come closer than a steep one that
-    // drops onto it. Paths fly on through `allowed` ticks with a contact.
-    int found = 0; // the allowance the best path was found with
-    auto trialSearch = [&](int allowed) {
-        bounces = allowed;
-        for (double s = std::min(c.def.maxSpeedMps, std::max(10.0, 1.15 * vacuum));;
-             s = std::min(c.def.maxSpeedMps, s + step)) {
-            double bestElev = 45.0, bestMiss = INFINITY;
-            double coarse[8];
-            for (int k = 0; k < 8; ++k) {
-                const double e = 10.0 + 10.0 * k;
-                coarse[k] = trial(e, s);
-                if (coarse[k] < bestMiss) {
-                    bestMiss = coarse[k];
-                    bestElev = e;
-                }
+    }
+
+    // Trial shots through the same simulation, at increasing power from what a vacuum shot
+    // would need until a path passes within half a metre: the coarse sweep, its best
+    // elevation refined, and when that does not reach, the best of the other family (below
+    // 45 degrees, or above) refined too: a low path that ends on cover near the target can
+    // come closer than a steep one that drops onto it. Paths fly on through `allowed` ticks
+    // with a contact.
+    void trialSearch(int allowed) {
+        bounces_ = allowed;
+        const Vec2 d = target_ - c_.def.position;
+        const double vacuum = std::sqrt(std::max(0.0, g_ * (d.y + length(d)))); // least speed in vacuum
+        const double step = 0.1 * c_.def.maxSpeedMps;
+        for (double s = std::min(c_.def.maxSpeedMps, std::max(10.0, 1.15 * vacuum));;
+             s = std::min(c_.def.maxSpeedMps, s + step)) {
+            const auto [bestElev, bestMiss] = bestAt(s);
+            if (bestMiss < out_.missM) {
+                out_.missM = bestMiss;
+                out_.angleDeg = toAngle(bestElev);
+                out_.speedMps = s;
+                found_ = bounces_;
             }
-            const bool steep = bestElev > 45.0; // the family of the best coarse elevation
-            if (const auto [e, m] = refine(bestElev, s); m < bestMiss) bestMiss = m, bestElev = e;
-            if (!(bestMiss < kOnTarget)) {
-                double otherElev = 0.0, otherMiss = INFINITY;
-                for (int k = 0; k < 8; ++k)
-                    if ((10.0 + 10.0 * k > 45.0) != steep && coarse[k] < otherMiss)
-                        otherMiss = coarse[k], otherElev = 10.0 + 10.0 * k;
-                if (const auto [e, m] = refine(otherElev, s); m < bestMiss) bestMiss = m, bestElev = e;
-            }
-            if (bestMiss < out.missM) {
-                out.missM = bestMiss;
-                out.angleDeg = toAngle(bestElev);
-                out.speedMps = s;
-                found = bounces;
-            }
-            if (bestMiss < kOnTarget || s >= c.def.maxSpeedMps) break;
+            if (bestMiss < kOnTarget || s >= c_.def.maxSpeedMps) break;
         }
-    };
-    trialSearch(0);
-    // No straight path reaches: paths that fly on through up to two contacts (a ceiling
-    // to bank off, water to skip on).
-    if (!(out.missM < kOnTarget)) trialSearch(2);
-    bounces = found;
-    if (std::isfinite(out.missM))
-        out.flightSeconds = approach(out.angleDeg, out.speedMps, false).seconds;
-    return out;
+    }
+
+    /// The best elevation at speed `s` and its miss.
+    std::pair<double, double> bestAt(double s) {
+        double bestElev = 45.0, bestMiss = INFINITY;
+        double coarse[8];
+        for (int k = 0; k < 8; ++k) {
+            const double e = 10.0 + 10.0 * k;
+            coarse[k] = trial(e, s);
+            if (coarse[k] < bestMiss) {
+                bestMiss = coarse[k];
+                bestElev = e;
+            }
+        }
+        const bool steep = bestElev > 45.0; // the family of the best coarse elevation
+        if (const auto [e, m] = refine(bestElev, s); m < bestMiss) bestMiss = m, bestElev = e;
+        if (!(bestMiss < kOnTarget)) {
+            double otherElev = 0.0, otherMiss = INFINITY;
+            for (int k = 0; k < 8; ++k)
+                if ((10.0 + 10.0 * k > 45.0) != steep && coarse[k] < otherMiss)
+                    otherMiss = coarse[k], otherElev = 10.0 + 10.0 * k;
+            if (const auto [e, m] = refine(otherElev, s); m < bestMiss) bestMiss = m, bestElev = e;
+        }
+        return {bestElev, bestMiss};
+    }
+
+    const Match& match_;
+    const CannonState& c_;
+    const Vec2 target_;
+    const std::optional<std::size_t> projectile_;
+    const double g_;
+    const BlockCover cover_;
+    AimSolution out_;
+    int bounces_ = 0; ///< contacts a trial shot flies on through
+    int found_ = 0;   ///< the allowance the best path was found with
+};
+
+} // namespace
+
+AimSolution aimAt(const Match& match, Vec2 target, std::optional<std::size_t> projectile) {
+    return Aimer(match, target, projectile).aim();
 }
 
 std::optional<Vec2> chooseTarget(const Match& match) {
