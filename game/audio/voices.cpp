@@ -81,106 +81,125 @@ Timbre timbreOf(const std::string& m) {
     return Timbre::Earth;
 }
 
+// The next sample: the voice's age in seconds, then the kind's own synthesis.
 double Voice::next() {
     const double t = static_cast<double>(age) * kDt;
     ++age;
-    auto white = [&] { return 2.0 * noise.unit() - 1.0; };
     switch (kind) {
-    case VoiceKind::Report: {
-        // Muzzle blast: low-passed noise (x3 restores the power the filter takes out of
-        // white noise, var = a / (2 - a)) with the report's decay.
-        low += lowPass(2500.0) * (white() - low);
-        const double burst = 3.0 * low * std::exp(-t / decaySeconds);
-        // Thump: a sine falling from pitchHz to 40 Hz over ~40 ms, dying 3x slower.
-        const double hz = 40.0 + (pitchHz - 40.0) * std::exp(-t / 0.04);
-        phase[0] += kTwoPi * hz * kDt;
-        const double thump = std::sin(phase[0]) * std::exp(-t / (3.0 * decaySeconds));
-        return gain * (0.6 * burst + 0.7 * thump);
-    }
-    case VoiceKind::Whistle: {
-        const std::int64_t now = start + age - 1;
-        while (!keys.empty() && keys.front().sample <= now) {
-            const WhistleKey k = keys.front();
-            keys.erase(keys.begin());
-            targetHz = k.pitchHz;
-            targetGain = k.last ? 0.0 : k.gain;
-            pan = k.pan;
-            if (nowHz == 0.0) nowHz = targetHz;
-            if (k.last && !ending) {
-                ending = true;
-                length = age + samples(0.12);
-            }
-        }
-        // Pitch and loudness glide to the shell's over 15 ms (no zipper steps per tick).
-        const double glide = lowPass(1.0 / (kTwoPi * 0.015));
-        nowHz += glide * (targetHz - nowHz);
-        nowGain += glide * (targetGain - nowGain);
-        phase[0] += kTwoPi * nowHz * kDt;
-        // Breath: slow noise (30 Hz) wobbles the tone's loudness like air past a shell.
-        low += lowPass(30.0) * (white() - low);
-        return nowGain * std::sin(phase[0]) * (1.0 + 2.0 * low);
-    }
-    case VoiceKind::Impact: {
-        double ring = 0.0;
-        for (int i = 0; i < 3; ++i)
-            ring += modes.weight[i] * std::sin(kTwoPi * modes.hz[i] * t) *
-                    std::exp(-t * (i + 1) / modes.decaySeconds);
-        low += lowPass(modes.noiseCutoffHz) * (white() - low);
-        const double click = 3.0 * low * std::exp(-t / 0.004);
-        return gain * (0.55 * ring + 0.6 * click);
-    }
-    case VoiceKind::Blast: {
-        const double hz = 28.0 + 50.0 * std::exp(-t / 0.15);
-        phase[0] += kTwoPi * hz * kDt;
-        const double boom = std::sin(phase[0]) * std::exp(-t / decaySeconds);
-        // Rumble: noise through two poles at 150 Hz, longer than the boom.
-        low += lowPass(150.0) * (white() - low);
-        low2 += lowPass(150.0) * (low - low2);
-        const double rumble = 8.0 * low2 * std::exp(-t / (1.5 * decaySeconds));
-        band += lowPass(4000.0) * (white() - band);
-        const double crackle = 2.0 * band * std::exp(-t / 0.02);
-        return gain * (0.6 * boom + 0.5 * rumble + 0.4 * crackle);
-    }
-    case VoiceKind::Splash: {
-        // Plop: the cavity's bubble, a chirp rising from 400 Hz as it closes (~30 ms).
-        const double hz = 400.0 + 900.0 * (1.0 - std::exp(-t / 0.03));
-        phase[0] += kTwoPi * hz * kDt;
-        const double plop = std::sin(phase[0]) * std::exp(-t / 0.03);
-        // Spray: noise between 800 Hz and 5 kHz (difference of two low-passes), its
-        // loudness broken up by droplets (noise at 40 Hz), rising in 20 ms, dying slowly.
-        const double w = white();
-        low += lowPass(5000.0) * (w - low);
-        low2 += lowPass(800.0) * (w - low2);
-        band += lowPass(40.0) * (white() - band);
-        const double envelope = (1.0 - std::exp(-t / 0.02)) * std::exp(-t / decaySeconds);
-        const double spray = 2.5 * (low - low2) * envelope * std::clamp(0.6 + 6.0 * band, 0.0, 1.5);
-        return gain * (0.5 * plop + 0.7 * spray);
-    }
-    case VoiceKind::Crack: {
-        const double w = white();
-        low += lowPass(1000.0) * (w - low); // white minus its low part: a bright snap
-        const double snap = (w - low) * std::exp(-t / 0.012);
-        const double ring = std::sin(kTwoPi * 1800.0 * t) * std::exp(-t / 0.03);
-        return gain * (0.7 * snap + 0.4 * ring);
-    }
-    case VoiceKind::Chime: {
-        // A bell's partials 1 : 2.76 : 5.40 for each note, notes 110 ms apart.
-        double sum = 0.0;
-        double hz = pitchHz;
-        for (int k = 0; k < notes; ++k, hz *= step) {
-            const double tk = t - 0.11 * k;
-            if (tk < 0.0) break;
-            const double env = std::exp(-tk / decaySeconds);
-            sum += env * (std::sin(kTwoPi * hz * tk) + 0.4 * std::sin(kTwoPi * 2.76 * hz * tk) +
-                          0.2 * std::sin(kTwoPi * 5.40 * hz * tk) * std::exp(-tk / 0.05));
-        }
-        return gain * 0.5 * sum;
-    }
-    case VoiceKind::Click:
-        return gain * (std::sin(kTwoPi * 2600.0 * t) * std::exp(-t / 0.006) +
-                       0.5 * white() * std::exp(-t / 0.0015));
+    case VoiceKind::Report: return sampleReport(t);
+    case VoiceKind::Whistle: return sampleWhistle();
+    case VoiceKind::Impact: return sampleImpact(t);
+    case VoiceKind::Blast: return sampleBlast(t);
+    case VoiceKind::Splash: return sampleSplash(t);
+    case VoiceKind::Crack: return sampleCrack(t);
+    case VoiceKind::Chime: return sampleChime(t);
+    case VoiceKind::Click: return sampleClick(t);
     }
     return 0.0;
+}
+
+double Voice::white() { return 2.0 * noise.unit() - 1.0; }
+
+double Voice::sampleReport(double t) {
+    // Muzzle blast: low-passed noise (x3 restores the power the filter takes out of
+    // white noise, var = a / (2 - a)) with the report's decay.
+    low += lowPass(2500.0) * (white() - low);
+    const double burst = 3.0 * low * std::exp(-t / decaySeconds);
+    // Thump: a sine falling from pitchHz to 40 Hz over ~40 ms, dying 3x slower.
+    const double hz = 40.0 + (pitchHz - 40.0) * std::exp(-t / 0.04);
+    phase[0] += kTwoPi * hz * kDt;
+    const double thump = std::sin(phase[0]) * std::exp(-t / (3.0 * decaySeconds));
+    return gain * (0.6 * burst + 0.7 * thump);
+}
+
+double Voice::sampleWhistle() {
+    const std::int64_t now = start + age - 1;
+    while (!keys.empty() && keys.front().sample <= now) {
+        const WhistleKey k = keys.front();
+        keys.erase(keys.begin());
+        targetHz = k.pitchHz;
+        targetGain = k.last ? 0.0 : k.gain;
+        pan = k.pan;
+        if (nowHz == 0.0) nowHz = targetHz;
+        if (k.last && !ending) {
+            ending = true;
+            length = age + samples(0.12);
+        }
+    }
+    // Pitch and loudness glide to the shell's over 15 ms (no zipper steps per tick).
+    const double glide = lowPass(1.0 / (kTwoPi * 0.015));
+    nowHz += glide * (targetHz - nowHz);
+    nowGain += glide * (targetGain - nowGain);
+    phase[0] += kTwoPi * nowHz * kDt;
+    // Breath: slow noise (30 Hz) wobbles the tone's loudness like air past a shell.
+    low += lowPass(30.0) * (white() - low);
+    return nowGain * std::sin(phase[0]) * (1.0 + 2.0 * low);
+}
+
+double Voice::sampleImpact(double t) {
+    double ring = 0.0;
+    for (int i = 0; i < 3; ++i)
+        ring += modes.weight[i] * std::sin(kTwoPi * modes.hz[i] * t) *
+                std::exp(-t * (i + 1) / modes.decaySeconds);
+    low += lowPass(modes.noiseCutoffHz) * (white() - low);
+    const double click = 3.0 * low * std::exp(-t / 0.004);
+    return gain * (0.55 * ring + 0.6 * click);
+}
+
+double Voice::sampleBlast(double t) {
+    const double hz = 28.0 + 50.0 * std::exp(-t / 0.15);
+    phase[0] += kTwoPi * hz * kDt;
+    const double boom = std::sin(phase[0]) * std::exp(-t / decaySeconds);
+    // Rumble: noise through two poles at 150 Hz, longer than the boom.
+    low += lowPass(150.0) * (white() - low);
+    low2 += lowPass(150.0) * (low - low2);
+    const double rumble = 8.0 * low2 * std::exp(-t / (1.5 * decaySeconds));
+    band += lowPass(4000.0) * (white() - band);
+    const double crackle = 2.0 * band * std::exp(-t / 0.02);
+    return gain * (0.6 * boom + 0.5 * rumble + 0.4 * crackle);
+}
+
+double Voice::sampleSplash(double t) {
+    // Plop: the cavity's bubble, a chirp rising from 400 Hz as it closes (~30 ms).
+    const double hz = 400.0 + 900.0 * (1.0 - std::exp(-t / 0.03));
+    phase[0] += kTwoPi * hz * kDt;
+    const double plop = std::sin(phase[0]) * std::exp(-t / 0.03);
+    // Spray: noise between 800 Hz and 5 kHz (difference of two low-passes), its
+    // loudness broken up by droplets (noise at 40 Hz), rising in 20 ms, dying slowly.
+    const double w = white();
+    low += lowPass(5000.0) * (w - low);
+    low2 += lowPass(800.0) * (w - low2);
+    band += lowPass(40.0) * (white() - band);
+    const double envelope = (1.0 - std::exp(-t / 0.02)) * std::exp(-t / decaySeconds);
+    const double spray = 2.5 * (low - low2) * envelope * std::clamp(0.6 + 6.0 * band, 0.0, 1.5);
+    return gain * (0.5 * plop + 0.7 * spray);
+}
+
+double Voice::sampleCrack(double t) {
+    const double w = white();
+    low += lowPass(1000.0) * (w - low); // white minus its low part: a bright snap
+    const double snap = (w - low) * std::exp(-t / 0.012);
+    const double ring = std::sin(kTwoPi * 1800.0 * t) * std::exp(-t / 0.03);
+    return gain * (0.7 * snap + 0.4 * ring);
+}
+
+double Voice::sampleChime(double t) {
+    // A bell's partials 1 : 2.76 : 5.40 for each note, notes 110 ms apart.
+    double sum = 0.0;
+    double hz = pitchHz;
+    for (int k = 0; k < notes; ++k, hz *= step) {
+        const double tk = t - 0.11 * k;
+        if (tk < 0.0) break;
+        const double env = std::exp(-tk / decaySeconds);
+        sum += env * (std::sin(kTwoPi * hz * tk) + 0.4 * std::sin(kTwoPi * 2.76 * hz * tk) +
+                      0.2 * std::sin(kTwoPi * 5.40 * hz * tk) * std::exp(-tk / 0.05));
+    }
+    return gain * 0.5 * sum;
+}
+
+double Voice::sampleClick(double t) {
+    return gain * (std::sin(kTwoPi * 2600.0 * t) * std::exp(-t / 0.006) +
+                   0.5 * white() * std::exp(-t / 0.0015));
 }
 
 // ---- makers ----------------------------------------------------------------------------

@@ -78,6 +78,18 @@ struct Voice {
     /// The next sample (mono, before panning and the mix) and one sample older.
     double next();
     bool done() const { return age >= length; }
+
+private:
+    double white(); ///< white noise in [-1, 1)
+    // One sample of each kind at age `t` seconds.
+    double sampleReport(double t);
+    double sampleWhistle();
+    double sampleImpact(double t);
+    double sampleBlast(double t);
+    double sampleSplash(double t);
+    double sampleCrack(double t);
+    double sampleChime(double t);
+    double sampleClick(double t);
 };
 
 // ---- makers: one per sound, from its physics ------------------------------------------
