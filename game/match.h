@@ -275,6 +275,11 @@ class Match {
     // Weapon behaviours (match_weapons.cpp): fuse, bounce count, airburst, apex split,
     // tunnel, stick. True when the shell's shot has ended.
     bool stepWeapon(phys::Vec2 p, bool touched, bool impact);
+    /// Bursts at `at` and ends the shot; true (the shot has ended).
+    bool burstAndEnd(phys::Vec2 at);
+    /// The digger's tunnel: begun at its first touch, carved on each tick until its length.
+    void startTunnel(phys::Vec2 p);
+    bool stepTunnel();
     /// Whether the shell must not be ended for resting (a fuse or a stuck charge waits).
     bool shellHeld() const;
     void splitShell();

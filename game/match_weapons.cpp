@@ -29,57 +29,73 @@ bool Match::shellHeld() const {
            (shellAmmo_.weapon && !flight_.inContact);
 }
 
+bool Match::burstAndEnd(Vec2 at) {
+    burst(at);
+    endShot(closestMiss_);
+    return true;
+}
+
+void Match::startTunnel(Vec2 p) {
+    const Vec2 in = flight_.lastVelocity;
+    const double speed = length(in);
+    flight_.digging = true;
+    flight_.digOrigin = p;
+    flight_.digDirection = speed > 0.0 ? in * (1.0 / speed) : Vec2{0.0, -1.0};
+    flight_.digSpeed = std::max(speed, 5.0);
+    world_.particles.setVelocity(shell_, {0.0, 0.0});
+    world_.particles.invMass[shell_] = 0.0;
+}
+
+bool Match::stepTunnel() {
+    // The tunnel: the tip moves on at its impact speed along its incoming direction,
+    // carving as it goes, and bursts at p0 + L d (exactly, on the last tick).
+    const Behaviour& b = shellAmmo_.behaviour;
+    const double dt = world_.def().tickSeconds;
+    flight_.dug = std::min(b.digLength, flight_.dug + flight_.digSpeed * dt);
+    const Vec2 tip = flight_.digOrigin + flight_.digDirection * flight_.dug;
+    world_.particles.setPosition(shell_, tip);
+    const bool done = flight_.dug >= b.digLength;
+    if ((done || flight_.dug - flight_.carvedTo >= 0.5 * b.digRadius) &&
+        level_.terrain.destructible && terrain_.carve(tip, b.digRadius)) {
+        flight_.carvedTo = flight_.dug;
+        rebuildStaticShapes();
+        world_.wakeAll();
+        emit(EventKind::Crater, current_, tip, b.digRadius);
+    }
+    return done ? burstAndEnd(tip) : false;
+}
+
 bool Match::stepWeapon(Vec2 p, bool touched, bool impact) {
     const Behaviour& b = shellAmmo_.behaviour;
     const double dt = world_.def().tickSeconds;
     const std::uint64_t flown = tick() - shellFiredTick_;
     const Vec2 v = world_.particles.velocity(shell_);
-    auto burstAt = [&](Vec2 at) {
-        burst(at);
-        endShot(closestMiss_);
-        return true;
-    };
     flight_.flown = static_cast<double>(flown) * dt;
     const bool newImpact = impact && !flight_.touching;
     flight_.touching = impact;
     flight_.inContact = touched;
 
-    if (flight_.digging) {
-        // The tunnel: the tip moves on at its impact speed along its incoming direction,
-        // carving as it goes, and bursts at p0 + L d (exactly, on the last tick).
-        flight_.dug = std::min(b.digLength, flight_.dug + flight_.digSpeed * dt);
-        const Vec2 tip = flight_.digOrigin + flight_.digDirection * flight_.dug;
-        world_.particles.setPosition(shell_, tip);
-        const bool done = flight_.dug >= b.digLength;
-        if ((done || flight_.dug - flight_.carvedTo >= 0.5 * b.digRadius) &&
-            level_.terrain.destructible && terrain_.carve(tip, b.digRadius)) {
-            flight_.carvedTo = flight_.dug;
-            rebuildStaticShapes();
-            world_.wakeAll();
-            emit(EventKind::Crater, current_, tip, b.digRadius);
-        }
-        return done ? burstAt(tip) : false;
-    }
+    if (flight_.digging) return stepTunnel();
     if (flight_.stuckTick) {
-        if (tick() - *flight_.stuckTick >= ticksOf(b.stickSeconds, dt)) return burstAt(p);
+        if (tick() - *flight_.stuckTick >= ticksOf(b.stickSeconds, dt)) return burstAndEnd(p);
         return false;
     }
-    if (b.fuseSeconds > 0.0 && flown >= ticksOf(b.fuseSeconds, dt)) return burstAt(p);
+    if (b.fuseSeconds > 0.0 && flown >= ticksOf(b.fuseSeconds, dt)) return burstAndEnd(p);
     if (b.airburstHeight > 0.0 && v.y < 0.0 && p.y - terrain_.heightAt(p.x) <= b.airburstHeight)
-        return burstAt(p);
+        return burstAndEnd(p);
     if (b.apexFragments > 0 && !flight_.split && flight_.lastVelocity.y > 0.0 && v.y <= 0.0) {
         splitShell();
         return false;
     }
     switch (b.onImpact) {
     case OnImpact::Burst:
-        if (touched) return burstAt(p);
+        if (touched) return burstAndEnd(p);
         break;
     case OnImpact::Bounce:
         if (newImpact) {
             ++flight_.impacts;
             if (b.burstAfterBounces > 0 && flight_.impacts >= b.burstAfterBounces)
-                return burstAt(p);
+                return burstAndEnd(p);
         }
         break;
     case OnImpact::Stick:
@@ -88,26 +104,17 @@ bool Match::stepWeapon(Vec2 p, bool touched, bool impact) {
             world_.particles.setVelocity(shell_, {0.0, 0.0});
             world_.particles.invMass[shell_] = 0.0;
             flight_.stuckTick = tick();
-            if (b.stickSeconds <= 0.0) return burstAt(p);
+            if (b.stickSeconds <= 0.0) return burstAndEnd(p);
         }
         break;
     case OnImpact::Dig:
-        if (touched) {
-            const Vec2 in = flight_.lastVelocity;
-            const double speed = length(in);
-            flight_.digging = true;
-            flight_.digOrigin = p;
-            flight_.digDirection = speed > 0.0 ? in * (1.0 / speed) : Vec2{0.0, -1.0};
-            flight_.digSpeed = std::max(speed, 5.0);
-            world_.particles.setVelocity(shell_, {0.0, 0.0});
-            world_.particles.invMass[shell_] = 0.0;
-        }
+        if (touched) startTunnel(p);
         break;
     }
     if (b.burstAtRest) {
         const bool resting = (world_.particles.flags[shell_] & kSleeping) ||
                              (touched && static_cast<double>(flown) * dt > 1.0 && length(v) < 0.05);
-        if (resting) return burstAt(p);
+        if (resting) return burstAndEnd(p);
     }
     flight_.lastVelocity = v;
     return false;
