@@ -50,6 +50,48 @@ std::optional<std::vector<game::Level>> shippedDuels(const std::string& folder) 
     return duels;
 }
 
+/// The pairs of "A-B,..." , or nullopt after a line saying what is wrong.
+std::optional<std::vector<std::pair<DuelPlayer, DuelPlayer>>> parsePairs(const std::string& pairList) {
+    std::vector<std::pair<DuelPlayer, DuelPlayer>> pairs;
+    std::stringstream list(pairList);
+    for (std::string item; std::getline(list, item, ',');) {
+        const auto dash = item.find('-');
+        const auto a = playerFromName(item.substr(0, dash));
+        const auto b = dash == std::string::npos ? std::nullopt : playerFromName(item.substr(dash + 1));
+        if (!a || !b) {
+            std::fprintf(stderr,
+                         "bench_duel_ai: --pairs expects A-B with A, B in easy, normal, "
+                         "hard, solver; got '%s'\n",
+                         item.c_str());
+            return std::nullopt;
+        }
+        pairs.emplace_back(*a, *b);
+    }
+    return pairs;
+}
+
+/// The shipped duels and `generated` generated ones, or nullopt after a line.
+std::optional<std::vector<game::Level>> duelMaps(int generated) {
+    auto shipped = shippedDuels("levels");
+    if (!shipped) {
+        std::fprintf(stderr, "bench_duel_ai: cannot read the folder levels/ (run it from the "
+                             "source tree)\n");
+        return std::nullopt;
+    }
+    std::vector<game::Level> maps = std::move(*shipped);
+    for (int s = 1; s <= generated; ++s) {
+        game::generate::GenerateDef def;
+        def.seed = static_cast<std::uint64_t>(s);
+        def.mode = game::Mode::Duel;
+        maps.push_back(game::generate::generateLevel(def).level);
+    }
+    if (maps.empty()) {
+        std::fprintf(stderr, "bench_duel_ai: no duel in levels/ and --maps 0: nothing to play on\n");
+        return std::nullopt;
+    }
+    return maps;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -72,40 +114,11 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    std::vector<std::pair<DuelPlayer, DuelPlayer>> pairs;
-    std::stringstream list(pairList);
-    for (std::string item; std::getline(list, item, ',');) {
-        const auto dash = item.find('-');
-        const auto a = playerFromName(item.substr(0, dash));
-        const auto b =
-            dash == std::string::npos ? std::nullopt : playerFromName(item.substr(dash + 1));
-        if (!a || !b) {
-            std::fprintf(stderr,
-                         "bench_duel_ai: --pairs expects A-B with A, B in easy, normal, "
-                         "hard, solver; got '%s'\n",
-                         item.c_str());
-            return 2;
-        }
-        pairs.emplace_back(*a, *b);
-    }
-
-    auto shipped = shippedDuels("levels");
-    if (!shipped) {
-        std::fprintf(stderr, "bench_duel_ai: cannot read the folder levels/ (run it from the "
-                             "source tree)\n");
-        return 2;
-    }
-    std::vector<game::Level> maps = std::move(*shipped);
-    for (int s = 1; s <= generated; ++s) {
-        game::generate::GenerateDef def;
-        def.seed = static_cast<std::uint64_t>(s);
-        def.mode = game::Mode::Duel;
-        maps.push_back(game::generate::generateLevel(def).level);
-    }
-    if (maps.empty()) {
-        std::fprintf(stderr, "bench_duel_ai: no duel in levels/ and --maps 0: nothing to play on\n");
-        return 2;
-    }
+    const auto pairs = parsePairs(pairList);
+    if (!pairs) return 2;
+    const auto found = duelMaps(generated);
+    if (!found) return 2;
+    const std::vector<game::Level>& maps = *found;
     std::printf("maps: %s", maps[0].name.c_str());
     for (std::size_t k = 1; k < maps.size(); ++k)
         std::printf(", %s", maps[k].name.c_str());
@@ -114,7 +127,7 @@ int main(int argc, char** argv) {
     std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
     std::fflush(stdout);
     const auto start = std::chrono::steady_clock::now();
-    for (const auto& [a, b] : pairs) {
+    for (const auto& [a, b] : *pairs) {
         const auto t0 = std::chrono::steady_clock::now();
         int wins[2] = {0, 0}, draws = 0;
         long shots = 0;

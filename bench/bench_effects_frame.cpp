@@ -26,6 +26,7 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,32 +44,84 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
+struct Options {
     std::string file = "levels/05_castle.json";
     int frames = 30, after = 20;
+};
+
+/// The options, or nullopt after the usage line.
+std::optional<Options> parseOptions(int argc, char** argv) {
+    Options o;
     for (int i = 1; i < argc; ++i) {
         bool ok = true;
         if (!std::strcmp(argv[i], "--frames") && i + 1 < argc)
-            ok = bench_args::countOption("bench_effects_frame", "--frames", argv[++i], frames, 1);
+            ok = bench_args::countOption("bench_effects_frame", "--frames", argv[++i], o.frames, 1);
         else if (!std::strcmp(argv[i], "--after") && i + 1 < argc)
-            ok = bench_args::countOption("bench_effects_frame", "--after", argv[++i], after, 0);
+            ok = bench_args::countOption("bench_effects_frame", "--after", argv[++i], o.after, 0);
         else
-            file = argv[i];
+            o.file = argv[i];
         if (ok) continue;
-        std::fprintf(
-            stderr,
-            "usage: bench_effects_frame [LEVEL.json] [--frames N >= 1] [--after TICKS >= 0]\n");
-        return 2;
+        std::fprintf(stderr, "usage: bench_effects_frame [LEVEL.json] [--frames N >= 1] [--after TICKS >= 0]\n");
+        return std::nullopt;
     }
-    game::Level level;
+    return o;
+}
+
+/// The castle's own cannon fires a cannonball low at the castle; it bursts among the
+/// blocks (the shot of docs/effects-and-camera.md). The burst event, or null after a line.
+const game::GameEvent* fireUntilBurst(game::Match& m, ui::MatchView& view, const std::string& file) {
+    for (auto [kind, number] : {std::pair{game::CommandKind::Aim, 20.0},
+                                {game::CommandKind::Power, 48.0},
+                                {game::CommandKind::Fire, 0.0}}) {
+        game::Command c;
+        c.kind = kind;
+        c.number = number;
+        if (const std::string why = m.apply(c); !why.empty()) {
+            std::fprintf(stderr, "bench_effects_frame: %s refused the shot: %s\n", file.c_str(), why.c_str());
+            return nullptr;
+        }
+    }
+    for (int k = 0; k < 30 * 120; ++k) {
+        m.step();
+        view.observe(m);
+        for (const game::GameEvent& e : m.events())
+            if (e.kind == game::EventKind::Burst) return &e;
+    }
+    std::fprintf(stderr, "bench_effects_frame: the shot on %s never burst (a level without cannonballs?)\n",
+                 file.c_str());
+    return nullptr;
+}
+
+/// Mean microseconds of Effects::observe over `ticks` ticks after the burst.
+double observeMicroseconds(game::Match& m, ui::MatchView& view, int ticks) {
+    double us = 0.0;
+    for (int k = 0; k < ticks; ++k) {
+        m.step();
+        const auto t0 = std::chrono::steady_clock::now();
+        view.observe(m);
+        us += std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+    }
+    return ticks ? us / ticks : 0.0;
+}
+
+std::optional<game::Level> load(const std::string& file) {
     try {
-        level = game::loadLevel(file);
+        return game::loadLevel(file);
     } catch (const game::LoadError& e) {
         std::fprintf(stderr, "%s\n", e.what());
-        return 2;
+        return std::nullopt;
     }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const std::optional<Options> opt = parseOptions(argc, argv);
+    if (!opt) return 2;
+    const auto [file, frames, after] = *opt;
+    const std::optional<game::Level> loaded = load(file);
+    if (!loaded) return 2;
+    const game::Level& level = *loaded;
     const int W = 1280, H = 720;
     std::string error;
     auto context = ui::createHeadlessContext(W, H, ui::HeadlessBackend::Auto, error);
@@ -83,51 +136,15 @@ int main(int argc, char** argv) {
     auto imgui = std::make_unique<ui::ImGuiLayer>(*context, nullptr);
     auto renderer = std::make_unique<ui::Renderer2D>();
 
-    // The castle's own cannon fires a cannonball low at the castle; it bursts among the
-    // blocks (the shot of docs/effects-and-camera.md).
     game::Match m(level);
     ui::MatchView view;
-    for (auto [kind, number] : {std::pair{game::CommandKind::Aim, 20.0},
-                                {game::CommandKind::Power, 48.0},
-                                {game::CommandKind::Fire, 0.0}}) {
-        game::Command c;
-        c.kind = kind;
-        c.number = number;
-        if (const std::string why = m.apply(c); !why.empty()) {
-            std::fprintf(stderr, "bench_effects_frame: %s refused the shot: %s\n", file.c_str(),
-                         why.c_str());
-            return 2;
-        }
-    }
-    const game::GameEvent* burst = nullptr;
-    double observeUs = 0.0;
-    int observed = 0;
-    for (int k = 0; k < 30 * 120 && !burst; ++k) {
-        m.step();
-        view.observe(m);
-        for (const game::GameEvent& e : m.events())
-            if (e.kind == game::EventKind::Burst) burst = &e;
-    }
-    if (!burst) {
-        std::fprintf(
-            stderr,
-            "bench_effects_frame: the shot on %s never burst (a level without cannonballs?)\n",
-            file.c_str());
-        return 2;
-    }
-    for (int k = 0; k < after; ++k) {
-        m.step();
-        const auto t0 = std::chrono::steady_clock::now();
-        view.observe(m);
-        observeUs +=
-            std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0)
-                .count();
-        ++observed;
-    }
+    const game::GameEvent* burst = fireUntilBurst(m, view, file);
+    if (!burst) return 2;
+    const phys::Vec2 burstAt = burst->where; // the event list grows as the match steps
+    const double observeUs = observeMicroseconds(m, view, after);
     ui::Camera cam = ui::levelCamera(m, W, H);
     cam.pixelsPerMetre *= 2.2; // the rig's impact zoom
-    cam.center = burst->where + phys::Vec2{0.0, cam.metres(0.15 * H)};
-
+    cam.center = burstAt + phys::Vec2{0.0, cam.metres(0.15 * H)};
     // The level as it opens, framed whole: the plain frame of a game before any shot.
     const game::Match opening(level);
     ui::MatchView openingView;
@@ -168,8 +185,7 @@ int main(int argc, char** argv) {
     std::printf(
         "the level as it opens (home framing, no shot yet) median %.2f ms; blast / that %.3f\n",
         median(opened), b / median(opened));
-    std::printf("effects per tick (Effects::observe) mean %.1f us over %d ticks\n",
-                observed ? observeUs / observed : 0.0, observed);
+    std::printf("effects per tick (Effects::observe) mean %.1f us over %d ticks\n", observeUs, after);
     std::printf("load average before %s, after %s\n", loadBefore.c_str(), loadAfter.c_str());
     // Labels and GL objects go before the context.
     renderer.reset();

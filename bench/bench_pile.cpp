@@ -34,6 +34,7 @@
 #include "physics/world.h"
 
 #include <algorithm>
+#include <optional>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -145,9 +146,8 @@ void runDrop(long n, double seconds) {
     printSettling(*w, seconds);
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
+/// The options, or nullopt after saying what is wrong and the usage.
+std::optional<Options> parseOptions(int argc, char** argv) {
     Options o;
     using bench_args::countOption, bench_args::realOption;
     constexpr const char* kName = "bench_pile";
@@ -198,9 +198,73 @@ int main(int argc, char** argv) {
                          "[--side particles|rigid|both] [--tuned] [--trace] [--csv]\n"
                          "       bench_pile --heap N >= 1 [--seconds S > 0]\n"
                          "       bench_pile --drop N >= 1 [--seconds S > 0]\n");
-            return 2;
+            return std::nullopt;
         }
     }
+    return o;
+}
+
+/// ms per tick of the particle pile over o.ticks after settling (and a line unless --csv).
+double timeParticlePile(const Options& o) {
+    auto w = game::bench::particlePile(o.balls);
+    for (int t = 0; t < game::bench::kPileSettleTicks + o.skip; ++t)
+        w->step();
+    const auto t0 = Clock::now();
+    if (o.trace) // what each tick did, to see where a window's work falls
+        for (int t = 0; t < o.ticks; ++t) {
+            const auto tickStart = Clock::now();
+            stepParticlePile(*w, 1);
+            const double ms = msSince(tickStart);
+            const CollisionStats& s = w->collisionStats();
+            std::printf("tick %d: %.4f ms, %zu contacts, %d pairs, %d passes (%d of "
+                        "changes only), %d broad phases, %d asleep, %d worked on\n",
+                        game::bench::kPileSettleTicks + o.skip + t + 1, ms,
+                        w->contacts().size(), s.pairs, s.passes, s.changesOnly, s.broadPhases,
+                        sleepers(w->particles), s.active);
+        }
+    else
+        stepParticlePile(*w, o.ticks);
+    const double particleMs = msSince(t0) / o.ticks;
+    const CollisionStats& s = w->collisionStats();
+    if (!o.csv)
+        std::printf("particles %ld balls: %.4f ms/tick; last tick: %zu contacts, %d pairs, "
+                    "%d passes, %d broad phases, %d asleep; hash %016llx\n",
+                    o.balls, particleMs, w->contacts().size(), s.pairs, s.passes, s.broadPhases,
+                    sleepers(w->particles), static_cast<unsigned long long>(w->hash()));
+    return particleMs;
+}
+
+/// ms per tick of the Box2D pile, the same way.
+double timeRigidPile(const Options& o) {
+    auto w = o.tuned ? game::bench::rigidPile(o.balls, game::bench::kTunedBox2D)
+                     : game::bench::rigidPile(o.balls);
+    const double tick = WorldDef{}.tickSeconds;
+    for (int t = 0; t < game::bench::kPileSettleTicks + o.skip; ++t)
+        w->step(tick);
+    const auto t0 = Clock::now();
+    if (o.trace)
+        for (int t = 0; t < o.ticks; ++t) {
+            const auto tickStart = Clock::now();
+            stepRigidPile(*w, 1, tick);
+            std::printf("box2d tick %d: %.4f ms\n",
+                        game::bench::kPileSettleTicks + o.skip + t + 1, msSince(tickStart));
+        }
+    else
+        stepRigidPile(*w, o.ticks, tick);
+    const double rigidMs = msSince(t0) / o.ticks;
+    if (!o.csv)
+        std::printf("box2d%s %ld balls: %.4f ms/tick; hash %016llx\n",
+                    o.tuned ? " (tuned)" : "    ", o.balls, rigidMs,
+                    static_cast<unsigned long long>(w->hash()));
+    return rigidMs;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const std::optional<Options> parsed = parseOptions(argc, argv);
+    if (!parsed) return 2;
+    const Options& o = *parsed;
     if (o.heap > 0) {
         runHeap(o.heap, o.seconds);
         return 0;
@@ -210,56 +274,8 @@ int main(int argc, char** argv) {
         return 0;
     }
 
-    double particleMs = NAN, rigidMs = NAN;
-    if (o.particles) {
-        auto w = game::bench::particlePile(o.balls);
-        for (int t = 0; t < game::bench::kPileSettleTicks + o.skip; ++t)
-            w->step();
-        const auto t0 = Clock::now();
-        if (o.trace) // what each tick did, to see where a window's work falls
-            for (int t = 0; t < o.ticks; ++t) {
-                const auto tickStart = Clock::now();
-                stepParticlePile(*w, 1);
-                const double ms = msSince(tickStart);
-                const CollisionStats& s = w->collisionStats();
-                std::printf("tick %d: %.4f ms, %zu contacts, %d pairs, %d passes (%d of "
-                            "changes only), %d broad phases, %d asleep, %d worked on\n",
-                            game::bench::kPileSettleTicks + o.skip + t + 1, ms,
-                            w->contacts().size(), s.pairs, s.passes, s.changesOnly, s.broadPhases,
-                            sleepers(w->particles), s.active);
-            }
-        else
-            stepParticlePile(*w, o.ticks);
-        particleMs = msSince(t0) / o.ticks;
-        const CollisionStats& s = w->collisionStats();
-        if (!o.csv)
-            std::printf("particles %ld balls: %.4f ms/tick; last tick: %zu contacts, %d pairs, "
-                        "%d passes, %d broad phases, %d asleep; hash %016llx\n",
-                        o.balls, particleMs, w->contacts().size(), s.pairs, s.passes, s.broadPhases,
-                        sleepers(w->particles), static_cast<unsigned long long>(w->hash()));
-    }
-    if (o.rigid) {
-        auto w = o.tuned ? game::bench::rigidPile(o.balls, game::bench::kTunedBox2D)
-                         : game::bench::rigidPile(o.balls);
-        const double tick = WorldDef{}.tickSeconds;
-        for (int t = 0; t < game::bench::kPileSettleTicks + o.skip; ++t)
-            w->step(tick);
-        const auto t0 = Clock::now();
-        if (o.trace)
-            for (int t = 0; t < o.ticks; ++t) {
-                const auto tickStart = Clock::now();
-                stepRigidPile(*w, 1, tick);
-                std::printf("box2d tick %d: %.4f ms\n",
-                            game::bench::kPileSettleTicks + o.skip + t + 1, msSince(tickStart));
-            }
-        else
-            stepRigidPile(*w, o.ticks, tick);
-        rigidMs = msSince(t0) / o.ticks;
-        if (!o.csv)
-            std::printf("box2d%s %ld balls: %.4f ms/tick; hash %016llx\n",
-                        o.tuned ? " (tuned)" : "    ", o.balls, rigidMs,
-                        static_cast<unsigned long long>(w->hash()));
-    }
+    const double particleMs = o.particles ? timeParticlePile(o) : NAN;
+    const double rigidMs = o.rigid ? timeRigidPile(o) : NAN;
     if (o.csv) {
         std::printf("balls,ticks,particle_ms,box2d_ms\n%ld,%d,%.5g,%.5g\n", o.balls, o.ticks,
                     particleMs, rigidMs);

@@ -138,78 +138,65 @@ const char* columnLabel(phys::Integrator m) {
     }
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
-    Options opt;
-    if (!parse(argc, argv, opt)) {
-        std::fputs(kUsage, stderr);
-        return 2;
-    }
-    using soak::kTick;
-    const phys::Integrator methods[] = {phys::Integrator::SymplecticEuler, phys::Integrator::Verlet,
-                                        phys::Integrator::VelocityVerlet,
-                                        phys::Integrator::Leapfrog, phys::Integrator::RK4};
+/// The scenes the options ask for, stepped together and reported in columns.
+struct Scenes {
     std::unique_ptr<soak::BusyScene> busy;
     std::vector<std::unique_ptr<soak::OscillatorBank>> banks;
     std::unique_ptr<soak::ElasticGas> gas;
     std::unique_ptr<soak::ElasticBodies> bodies;
-    std::uint64_t seed = 2026;
-    if (opt.has("busy"))
-        busy = std::make_unique<soak::BusyScene>(opt.particles, opt.crates, seed++);
-    if (opt.has("oscillators"))
-        for (const phys::Integrator m : methods)
-            banks.push_back(std::make_unique<soak::OscillatorBank>(m, opt.oscillators, seed++));
-    if (opt.has("gas")) gas = std::make_unique<soak::ElasticGas>(opt.gas, seed++);
-    if (opt.has("bodies")) bodies = std::make_unique<soak::ElasticBodies>(opt.bodies, seed++);
-    MemoryTrace memory;
-    memory.start = residentMiB();
 
-    const long ticks = std::lround(opt.seconds / kTick);
-    const long perReport = std::max(1L, std::lround(opt.report / kTick));
-    std::printf("soak: %.0f s simulated at %.0f Hz (%ld ticks), a line every %.0f s\n", opt.seconds,
-                1.0 / kTick, ticks, opt.report);
-    if (busy)
-        std::printf("  busy: %d particles, %zu springs, %d Box2D crates in a %.0f m x 40 m box "
-                    "(dissipative)\n",
-                    opt.particles, busy->world.springs.size(), opt.crates,
-                    soak::BusyScene::width(opt.particles));
-    if (!banks.empty())
-        std::printf("  oscillators: %d per integrator x %zu, k %.0f..%.0f N/m, 1 kg "
-                    "(w dt %.3f..%.3f), undamped\n",
-                    opt.oscillators, banks.size(), soak::OscillatorBank::kMin,
-                    soak::OscillatorBank::kMax, std::sqrt(soak::OscillatorBank::kMin) * kTick,
-                    std::sqrt(soak::OscillatorBank::kMax) * kTick);
-    if (gas)
-        std::printf("  gas: %d particles, e = 1, frictionless, no gravity, no sleep\n", opt.gas);
-    if (bodies)
-        std::printf(
-            "  bodies: %d Box2D circles and boxes, e = 1, frictionless, no gravity, no sleep\n",
-            opt.bodies);
-    // Progress header: relative energy drift (E - E0)/E0 of each scene.
-    std::printf("\n%8s", "minute");
-    if (busy) std::printf(" %10s", "busy E/E0");
-    for (const auto& b : banks)
-        std::printf(" %11s", columnLabel(b->method));
-    if (gas) std::printf(" %11s", "gas");
-    if (bodies) std::printf(" %11s", "Box2D");
-    if (busy) std::printf(" %7s", "awake");
-    std::printf(" %6s %7s %8s %8s\n", "NaN", "removed", "RSS MiB", "wall s");
+    explicit Scenes(const Options& opt) {
+        const phys::Integrator methods[] = {phys::Integrator::SymplecticEuler, phys::Integrator::Verlet,
+                                            phys::Integrator::VelocityVerlet, phys::Integrator::Leapfrog,
+                                            phys::Integrator::RK4};
+        std::uint64_t seed = 2026;
+        if (opt.has("busy")) busy = std::make_unique<soak::BusyScene>(opt.particles, opt.crates, seed++);
+        if (opt.has("oscillators"))
+            for (const phys::Integrator m : methods)
+                banks.push_back(std::make_unique<soak::OscillatorBank>(m, opt.oscillators, seed++));
+        if (opt.has("gas")) gas = std::make_unique<soak::ElasticGas>(opt.gas, seed++);
+        if (opt.has("bodies")) bodies = std::make_unique<soak::ElasticBodies>(opt.bodies, seed++);
+    }
 
-    soak::Faults faults;
-    const auto t0 = std::chrono::steady_clock::now();
-    const auto wallSeconds = [&] {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    };
-    for (long t = 1; t <= ticks; ++t) {
+    void step(soak::Faults& faults) {
         if (busy) busy->step(faults);
         for (auto& b : banks)
             b->step(faults);
         if (gas) gas->step(faults);
         if (bodies) bodies->step(faults);
-        if (t % perReport != 0 && t != ticks) continue;
-        memory.sample();
-        std::printf("%8.2f", static_cast<double>(t) * kTick / 60.0);
+    }
+
+    /// What each scene holds, then the progress header: relative energy drift (E - E0)/E0
+    /// of each scene.
+    void printHeader(const Options& opt) const {
+        using soak::kTick;
+        if (busy)
+            std::printf("  busy: %d particles, %zu springs, %d Box2D crates in a %.0f m x 40 m box "
+                        "(dissipative)\n",
+                        opt.particles, busy->world.springs.size(), opt.crates,
+                        soak::BusyScene::width(opt.particles));
+        if (!banks.empty())
+            std::printf("  oscillators: %d per integrator x %zu, k %.0f..%.0f N/m, 1 kg "
+                        "(w dt %.3f..%.3f), undamped\n",
+                        opt.oscillators, banks.size(), soak::OscillatorBank::kMin,
+                        soak::OscillatorBank::kMax, std::sqrt(soak::OscillatorBank::kMin) * kTick,
+                        std::sqrt(soak::OscillatorBank::kMax) * kTick);
+        if (gas) std::printf("  gas: %d particles, e = 1, frictionless, no gravity, no sleep\n", opt.gas);
+        if (bodies)
+            std::printf("  bodies: %d Box2D circles and boxes, e = 1, frictionless, no gravity, no sleep\n",
+                        opt.bodies);
+        std::printf("\n%8s", "minute");
+        if (busy) std::printf(" %10s", "busy E/E0");
+        for (const auto& b : banks)
+            std::printf(" %11s", columnLabel(b->method));
+        if (gas) std::printf(" %11s", "gas");
+        if (bodies) std::printf(" %11s", "Box2D");
+        if (busy) std::printf(" %7s", "awake");
+        std::printf(" %6s %7s %8s %8s\n", "NaN", "removed", "RSS MiB", "wall s");
+    }
+
+    /// The scenes' columns of one progress line.
+    void printRow() const {
         if (busy) std::printf(" %10.6f", busy->energy() / busy->energy0);
         for (const auto& b : banks)
             std::printf(" %+11.3e", b->total.drift());
@@ -219,6 +206,68 @@ int main(int argc, char** argv) {
             const phys::StepProfile& p = busy->world.profile();
             std::printf(" %7d", p.integrated + p.closedForm);
         }
+    }
+
+    /// The energy table; true when every exactly conserved quantity held.
+    bool printEnergy() const {
+        bool invariantsHeld = true;
+        std::printf("  %-22s %12s %12s %14s %14s %10s\n", "scene", "drift", "max dev", "worst single",
+                    "H drift", "E/H band");
+        for (const auto& b : banks) {
+            std::printf("  %-22s %+12.3e %12.3e %14.3e", phys::info(b->method).name, b->total.drift(),
+                        b->total.maxDeviation, b->worstSingle);
+            if (b->hasInvariant()) {
+                // H is conserved up to rounding; E/H stays inside its band (used <= 1).
+                const bool held = b->invariantDrift < 1e-9 && b->bandExcess < 1e-12;
+                invariantsHeld = invariantsHeld && held;
+                std::printf(" %14.3e %9.4f%s\n", b->invariantDrift, b->bandUsed, held ? "" : " FAILED");
+            } else {
+                std::printf(" %14s %10s\n", "-", "-");
+            }
+        }
+        if (gas)
+            std::printf("  %-22s %+12.3e %12.3e\n", "particle gas (e = 1)", gas->drift.drift(),
+                        gas->drift.maxDeviation);
+        if (bodies)
+            std::printf("  %-22s %+12.3e %12.3e\n", "Box2D bodies (e = 1)", bodies->drift.drift(),
+                        bodies->drift.maxDeviation);
+        if (busy)
+            std::printf("  %-22s E/E0 = %.4f at the end (dissipative by design)\n", "busy",
+                        busy->energy() / busy->energy0);
+        return invariantsHeld;
+    }
+};
+
+} // namespace
+
+int main(int argc, char** argv) {
+    Options opt;
+    if (!parse(argc, argv, opt)) {
+        std::fputs(kUsage, stderr);
+        return 2;
+    }
+    using soak::kTick;
+    Scenes scenes(opt);
+    MemoryTrace memory;
+    memory.start = residentMiB();
+
+    const long ticks = std::lround(opt.seconds / kTick);
+    const long perReport = std::max(1L, std::lround(opt.report / kTick));
+    std::printf("soak: %.0f s simulated at %.0f Hz (%ld ticks), a line every %.0f s\n", opt.seconds,
+                1.0 / kTick, ticks, opt.report);
+    scenes.printHeader(opt);
+
+    soak::Faults faults;
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto wallSeconds = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
+    for (long t = 1; t <= ticks; ++t) {
+        scenes.step(faults);
+        if (t % perReport != 0 && t != ticks) continue;
+        memory.sample();
+        std::printf("%8.2f", static_cast<double>(t) * kTick / 60.0);
+        scenes.printRow();
         std::printf(" %6ld %7ld %8.1f %8.1f\n", faults.nonFinite, faults.removed, memory.last,
                     wallSeconds());
         if (faults.newCause) std::printf("         guard: %s\n", faults.cause.c_str());
@@ -228,33 +277,10 @@ int main(int argc, char** argv) {
 
     // Summary.
     const double wall = wallSeconds();
-    bool invariantsHeld = true;
     std::printf("\nenergy over %.0f s (drift = (E_end - E0)/E0; max dev = max |E - E0|/E0 over "
                 "every tick)\n",
                 opt.seconds);
-    std::printf("  %-22s %12s %12s %14s %14s %10s\n", "scene", "drift", "max dev", "worst single",
-                "H drift", "E/H band");
-    for (const auto& b : banks) {
-        std::printf("  %-22s %+12.3e %12.3e %14.3e", phys::info(b->method).name, b->total.drift(),
-                    b->total.maxDeviation, b->worstSingle);
-        if (b->hasInvariant()) {
-            // H is conserved up to rounding; E/H stays inside its band (used <= 1).
-            const bool held = b->invariantDrift < 1e-9 && b->bandExcess < 1e-12;
-            invariantsHeld = invariantsHeld && held;
-            std::printf(" %14.3e %9.4f%s\n", b->invariantDrift, b->bandUsed, held ? "" : " FAILED");
-        } else {
-            std::printf(" %14s %10s\n", "-", "-");
-        }
-    }
-    if (gas)
-        std::printf("  %-22s %+12.3e %12.3e\n", "particle gas (e = 1)", gas->drift.drift(),
-                    gas->drift.maxDeviation);
-    if (bodies)
-        std::printf("  %-22s %+12.3e %12.3e\n", "Box2D bodies (e = 1)", bodies->drift.drift(),
-                    bodies->drift.maxDeviation);
-    if (busy)
-        std::printf("  %-22s E/E0 = %.4f at the end (dissipative by design)\n", "busy",
-                    busy->energy() / busy->energy0);
+    const bool invariantsHeld = scenes.printEnergy();
     std::printf("non-finite values: %ld, guard removals: %ld (both must be 0)\n", faults.nonFinite,
                 faults.removed);
     std::printf("resident memory: %.1f MiB after set-up, %.1f MiB after the first report, %.1f MiB "
