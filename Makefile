@@ -68,11 +68,12 @@ charts: build
 cli-docs: build
 	cmake -DEXE=$(BUILD)/artillery -DSRC=. -DUPDATE=ON -P tests/docs/docs_check.cmake
 
-# The README's pictures, drawn by the game's own headless renderer.
+# The README's and the docs' pictures, drawn by the game's own headless renderer.
 screenshots: build
 	./$(BUILD)/artillery play levels/05_castle.json --headless --frames 4 --no-panel --screenshot docs/game.png
 	./$(BUILD)/artillery play --replay tests/replays/05_castle.replay.json --headless --no-panel \
 	  --warmup 1.5 --frames 4 --ghosts --forces --contacts --models --screenshot docs/debug_view.png
+	docs/screenshots.sh $(BUILD)
 
 clean:
 	rm -rf $(BUILD)

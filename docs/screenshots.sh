@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The docs' pictures of the game's screens, drawn by the game itself:
+#   docs/screenshots.sh [BUILD]      (make screenshots runs it; BUILD defaults to build)
+# Screens a level opens on are drawn headless (`play --headless --screenshot`); the
+# lesson screen is reached as a player reaches it, so that one runs the real window on a
+# virtual display (Xvfb), clicks the chapter's Lesson button with xdotool and grabs the
+# screen with ImageMagick's import. Progress and settings go to a scratch folder.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+exe=${1:-build}/artillery
+[ -x "$exe" ] || { echo "screenshots.sh: no executable at $exe (build first)" >&2; exit 2; }
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"; [ -n "${xvfb:-}" ] && kill "$xvfb" 2>/dev/null || true' EXIT
+export XDG_CONFIG_HOME=$scratch/config
+
+shot() { # LEVEL-OR-EMPTY PNG [play options...]
+  local level=$1 png=$2; shift 2
+  "$exe" play $level --headless --frames 3 --progress "$scratch/progress.json" "$@" \
+    --screenshot "$png" >/dev/null
+  echo "drew $png"
+}
+shot "" docs/level_select.png
+shot levels/40_scatter.json docs/weapon_level.png
+shot levels/37_castle_duel.json docs/castle_duel.png --warmup 6
+
+# The lesson screen: the first chapter's Lesson button, on the level select.
+for tool in Xvfb xdotool import; do
+  command -v "$tool" >/dev/null || { echo "screenshots.sh: $tool is missing (apt-get install xvfb xdotool imagemagick)" >&2; exit 2; }
+done
+display=:$((90 + RANDOM % 100))
+Xvfb "$display" -screen 0 1280x720x24 >/dev/null 2>&1 &
+xvfb=$!
+sleep 1
+DISPLAY=$display "$exe" play --progress "$scratch/progress.json" --frames 400 >/dev/null 2>&1 &
+game=$!
+sleep 3
+DISPLAY=$display xdotool mousemove 461 62 click 1
+sleep 1.5
+DISPLAY=$display import -window root docs/lesson.png
+echo "drew docs/lesson.png"
+kill "$game" 2>/dev/null || true
