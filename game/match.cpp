@@ -267,6 +267,7 @@ MaterialsInPlay Match::materialsInPlay() const {
 }
 
 void Match::fire() {
+    stirred_ = true;
     CannonState& c = cannons_[static_cast<std::size_t>(current_)];
     shellAmmo_ = selectedAmmo();
     const double a = c.angleDeg * kDegToRad;

@@ -179,6 +179,9 @@ class Match {
     std::uint64_t gameHash() const;
     /// Shots fired so far by everyone.
     int shotsFired() const { return shotsFired_; }
+    /// The player has set something moving (a shot, a spawn, a grab): before it the
+    /// level's own settling is not an event (its sound is not heard). Not hashed.
+    bool stirred() const { return stirred_; }
     /// True when only uniform gravity acts on a shell (no drag, no wind, no water): the
     /// firing solution is exact.
     bool ballisticOnly() const;
@@ -305,6 +308,7 @@ class Match {
     bool over_ = false;
     int winner_ = -1;
     int shotsFired_ = 0;
+    bool stirred_ = false; ///< stirred()
     // The shell in flight.
     phys::ParticleId shell_ = phys::kNoParticle;
     std::uint64_t shellFiredTick_ = 0;

@@ -114,6 +114,7 @@ std::string Match::sandboxTool(const Command& cmd) {
         else release();
         break;
     }
+    if (why.empty()) stirred_ = stirred_ || cmd.kind == CommandKind::Spawn || cmd.kind == CommandKind::Grab;
     return why.empty() ? why : refuse(cmd, why);
 }
 

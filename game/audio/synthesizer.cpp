@@ -122,7 +122,9 @@ void Synthesizer::observe(const Match& m) {
     hearEvents(m);
     if (ticked) {
         hearShell(m);
-        hearContacts(m);
+        // A level settling as it opens is silent: impacts are heard once the player has
+        // set something moving.
+        if (m.stirred()) hearContacts(m);
         hearBlocks(m);
     }
     lastTick_ = m.tick();
@@ -319,7 +321,7 @@ void Synthesizer::hearBlocks(const Match& m) {
         // from a contact (or a blast): heard as an impact at |dv|.
         const Vec2 expected = blockVelocity_[i] + m.rigid().gravityKick(b.body, dt);
         const double jump = length(s.linearVelocity - expected);
-        if (blockSeen_[i] && jump > 2.0 * def_.impactSpeedMps)
+        if (blockSeen_[i] && jump > 2.0 * def_.impactSpeedMps && m.stirred())
             start(impact(timbreOf(b.def.material), jump, 0.3), m.tick(), s.position, 0xb10c + i);
         blockVelocity_[i] = s.linearVelocity;
         blockSeen_[i] = true;

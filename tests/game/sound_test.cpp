@@ -193,6 +193,24 @@ TEST(Sound, NothingHappeningIsExactSilence) {
                             [](float x) { return x == 0.0f; }));
 }
 
+// The castle's blocks settle as the level opens, some hard enough to ring were they
+// struck: nothing has happened yet, so nothing is heard, to the last sample.
+TEST(Sound, ALevelSettlingAsItOpensIsSilent) {
+    Match m(level("05_castle.json"));
+    SoundTrack track;
+    run(m, track, 240);
+    EXPECT_FALSE(m.stirred());
+    EXPECT_TRUE(std::all_of(track.samples().begin(), track.samples().end(),
+                            [](float x) { return x == 0.0f; }));
+    // The first shot stirs it: its report is heard.
+    for (const Command& c : {cmd(CommandKind::Aim, 20.0), cmd(CommandKind::Power, 48.0), cmd(CommandKind::Fire)})
+        ASSERT_EQ(m.apply(c), "");
+    EXPECT_TRUE(m.stirred());
+    const std::size_t before = track.frames();
+    run(m, track, 60);
+    EXPECT_GT(rms(track.samples(), static_cast<std::int64_t>(before), static_cast<std::int64_t>(track.frames())), 0.01);
+}
+
 // The same run gives the same file, byte for byte.
 TEST(Sound, TheSameRunGivesTheSameBytes) {
     const SoundTrack a = shotTrack(40.0, 4.0);

@@ -433,7 +433,7 @@ TEST(VideoExport, WritesAReplayThroughTheRunVerbInAChildProcess) {
     // from the shot at tick 180, 1.5 s, once the computer has aimed (windows clear of the
     // AAC encoder's 1024-sample delay).
     ASSERT_EQ(d.sampleRate, 48000);
-    EXPECT_LT(rms(d.left, 0.0, 0.25), 0.005); // blocks settle with a thud at 0.31 s
+    EXPECT_LT(rms(d.left, 0.0, 0.25), 0.005); // the blocks settle in silence
     EXPECT_GT(rms(d.left, 1.5, 1.75), 0.03);
     EXPECT_GT(rms(d.right, 1.5, 1.75), 0.005);
 
