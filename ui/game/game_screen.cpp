@@ -8,6 +8,7 @@
 
 #include "game/editor/level_editor.h"
 #include "game/editor/sandbox_to_level.h"
+#include "ui/game/cost_readout.h"
 #include "ui/game/match_frame.h"
 #include "ui/game/random_map.h"
 #include "ui/game/settings_commands.h"
@@ -409,6 +410,7 @@ void GameScreen::matchPanels(MenuChoice& choice, bool& sceneToEditor) {
     if (statsShown_)
         if (auto d = statsPanel_.panel(m, shownAim)) submit(settingCommands(m.world().def(), *d));
     if (settings.physicsPanel) physicsPanelOfMatch(m);
+    if (costShown_) costReadout(costFigures(m, stats_.frameMs), clearCorner("Cost", costReadoutEstimate()));
     if (m.over() && play_.resultRecorded() && !choice.openLevel && !editor_.playtest())
         choice = menus_.nextLevelCard(files_.progress(), level_.file);
 }
@@ -448,6 +450,8 @@ ImVec2 GameScreen::clearCorner(const char* name, ImVec2 estimate) const {
 void GameScreen::physicsPanelOfMatch(game::Match& m) {
     const game::LiveSettings before = m.liveSettings();
     game::LiveSettings edited = before;
+    stats_.stiffest = phys::stiffestSpring(m.world().springs, m.world().particles);
+    stats_.energyTrend = statsPanel_.energyTrend(stats_.energyTrendSeconds);
     SceneRequests scene;
     // Folded at first: the sky is where the shells fly. Its layout persists.
     ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);

@@ -189,6 +189,7 @@ class GameScreen final : public Screen {
     FrameStats stats_;
     ScreenLayout layout_; ///< the frame's overlays and objects, gathered as it is drawn
     bool statsShown_ = false; ///< the Stats window (a lab panel: shown on its key)
+    bool costShown_ = false;  ///< the cost readout (F3)
     int framesMeasured_ = 0;
     bool running_ = true;
     bool networkDuel_ = false;
