@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -38,22 +39,27 @@ TEST(CostReadout, SaysWhatEachModelMoves) {
 
 TEST(CostReadout, F3ShowsItInACornerThatCoversNothing) {
     const fs::path dir = fs::temp_directory_path() / ("artillery-cost-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    {
-        test_game::HeadlessGame game("05_castle.json", 1280, 720, dir);
+    for (const char* level : {"05_castle.json", "07_soft_blob.json"}) {
+        fs::remove_all(dir);
+        test_game::HeadlessGame game(level, 1280, 720, dir);
         ASSERT_NE(game.screen, nullptr);
-        auto hasCost = [&] {
-            const auto& o = game.screen->layout().overlays;
-            return std::any_of(o.begin(), o.end(), [](const ui::LayoutOverlay& x) { return x.name == "panel.Cost"; });
+        auto rectOf = [&](const std::string& name) -> std::optional<ui::PixelRect> {
+            for (const ui::LayoutOverlay& o : game.screen->layout().overlays)
+                if (o.name == name) return o.rect;
+            return std::nullopt;
         };
-        EXPECT_FALSE(hasCost());
+        EXPECT_FALSE(rectOf("panel.Cost")) << level;
         test_game::tap(*game.screen, SDLK_F3);
         for (int i = 0; i < 3; ++i) game.screen->frame(1.0 / 60.0);
-        EXPECT_TRUE(hasCost());
-        EXPECT_TRUE(ui::coverings(game.screen->layout()).empty());
+        const auto cost = rectOf("panel.Cost"), controls = rectOf("panel.Controls");
+        ASSERT_TRUE(cost) << level;
+        EXPECT_TRUE(ui::coverings(game.screen->layout()).empty()) << level;
+        // Nor over the turn's controls (the fire button).
+        ASSERT_TRUE(controls) << level;
+        EXPECT_FALSE(cost->overlaps(*controls)) << level;
         test_game::tap(*game.screen, SDLK_F3);
         for (int i = 0; i < 2; ++i) game.screen->frame(1.0 / 60.0);
-        EXPECT_FALSE(hasCost());
+        EXPECT_FALSE(rectOf("panel.Cost")) << level;
     }
     fs::remove_all(dir);
 }

@@ -3,6 +3,7 @@
 #include "physics/integrators.h"
 #include "ui/platform/imgui_layer.h"
 
+#include <cfloat>
 #include <cstdio>
 
 namespace ui {
@@ -57,11 +58,14 @@ std::vector<std::string> costLines(const CostFigures& f) {
     return out;
 }
 
-ImVec2 costReadoutEstimate() { return ImVec2(panelPx(330), panelPx(130)); }
+ImVec2 costReadoutEstimate() { return ImVec2(panelPx(340), panelPx(130)); }
 
 void costReadout(const CostFigures& f, ImVec2 at) {
     ImGui::SetNextWindowPos(at, ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.7f);
+    // At least as wide as its estimate: an auto-sized window takes a frame to grow, and a
+    // figure gaining a digit would be cut for that frame.
+    ImGui::SetNextWindowSizeConstraints(ImVec2(costReadoutEstimate().x, 0.0f), ImVec2(FLT_MAX, FLT_MAX));
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoInputs;

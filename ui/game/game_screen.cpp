@@ -435,11 +435,15 @@ ImVec2 GameScreen::clearCorner(const char* name, ImVec2 estimate) const {
     const double W = context_.width(), H = context_.height(), u = hudScale(W, H);
     const double w = size.x * scale.x, h = size.y * scale.y, m = 12.0 * u;
     const double beside = 336.0 * u, top = kHudTopBand * u;
-    const std::vector<PixelRect> places = {{beside, H - m - h, beside + w, H - m},
-                                           {W - m - w, H - m - h, W - m, H - m},
-                                           {W - m - w, top, W - m, top + h},
-                                           {m, top, m + w, top + h},
-                                           {0.5 * (W - w), H - m - h, 0.5 * (W + w), H - m}};
+    std::vector<PixelRect> places = {{beside, H - m - h, beside + w, H - m},
+                                     {W - m - w, H - m - h, W - m, H - m},
+                                     {W - m - w, top, W - m, top + h},
+                                     {m, top, m + w, top + h},
+                                     {0.5 * (W - w), H - m - h, 0.5 * (W + w), H - m}};
+    // When the corners are taken (the lab's panels open, the close-up beside them), the
+    // bottom edge and the top band, left to right, before standing over anything.
+    for (double x = m; x + w <= W - m; x += 24.0 * u)
+        for (const double y : {H - m - h, top}) places.push_back({x, y, x + w, y + h});
     std::vector<PixelRect> avoid = layout_.objectRects();
     for (const LayoutOverlay& o : layout_.overlays)
         if (o.name != std::string("panel.") + name) avoid.push_back(o.rect); // not itself

@@ -141,8 +141,9 @@ class GameScreen final : public Screen {
     void matchPanels(MenuChoice& choice, bool& sceneToEditor);
     /// Where the ImGui window `name` goes (its top-left corner, window points): the first
     /// of the usual places (beside the aim readout at the bottom, the bottom right, the
-    /// top right and the top left under the HUD's band, the bottom middle) where it covers
-    /// nothing the frame shows so far; its size is last frame's, or `estimate` (points).
+    /// top right and the top left under the HUD's band, the bottom middle, then along the
+    /// bottom edge and the top band) where it covers nothing the frame shows so far; its
+    /// size is last frame's, or `estimate` (points).
     ImVec2 clearCorner(const char* name, ImVec2 estimate) const;
     double labPanelsRight() const;
     void physicsPanelOfMatch(game::Match& m);

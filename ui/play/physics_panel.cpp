@@ -36,7 +36,7 @@ bool integratorCombo(phys::WorldDef& def) {
     bool changed = false;
     const phys::IntegratorInfo& current = phys::info(def.integrator);
     const bool closedForm = def.model == phys::ModelPolicy::Auto;
-    if (ImGui::BeginCombo("integrator", closedForm ? kClosedFormRow : current.name)) {
+    if (ImGui::BeginCombo("integrator", closedForm ? "closed form (exact)" : current.name)) {
         if (ImGui::Selectable(kClosedFormRow, closedForm) && !closedForm) {
             def.model = phys::ModelPolicy::Auto;
             changed = true;
@@ -301,11 +301,13 @@ void springLimits(const phys::WorldDef& def, const FrameStats& stats) {
     if (s.stiffness > 0.0) {
         const double h = def.tickSeconds / def.substeps;
         const std::string warning = phys::stiffnessWarning(def.integrator, s.stiffness, s.mass, h);
+        ImGui::PushTextWrapPos(0.0f); // the panel's width: these lines are long
         if (!warning.empty())
             ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", warning.c_str());
         else
-            ImGui::TextDisabled("stiffest spring k = %g N/m on %.3g kg: w dt = %.2f (stable below %.3g)",
+            ImGui::TextDisabled("stiffest spring %g N/m on %.3g kg: w dt %.2f, stable below %.3g",
                                 s.stiffness, s.mass, s.omega * h, phys::stableOmegaDt(def.integrator));
+        ImGui::PopTextWrapPos();
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("w = sqrt(k/m); stable w dt: explicit Euler and midpoint none,\n"
                               "symplectic Euler and the Verlets 2, RK4 2.83, implicit Euler any");
@@ -313,8 +315,10 @@ void springLimits(const phys::WorldDef& def, const FrameStats& stats) {
     if (stats.energyTrend && s.stiffness > 0.0) {
         const double pct = 100.0 * *stats.energyTrend;
         const ImVec4 colour = pct > 1.0 ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.7f, 0.7f, 0.7f, 1.0f);
+        ImGui::PushTextWrapPos(0.0f);
         ImGui::TextColored(colour, "energy %+.1f %% in the last %.0f s%s", pct, stats.energyTrendSeconds,
                            pct > 1.0 ? ": the method is gaining energy" : "");
+        ImGui::PopTextWrapPos();
     }
 }
 
