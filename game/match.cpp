@@ -1,6 +1,7 @@
 #include "game/match.h"
 
 #include "game/material_names.h"
+#include "game/shot_model.h"
 #include "game/weapons.h"
 #include "physics/ballistics.h"
 #include "physics/projectiles.h"
@@ -28,6 +29,7 @@ const char* eventName(EventKind k) {
     case EventKind::SettingChanged: return "setting_changed";
     case EventKind::Refused: return "refused";
     case EventKind::Unstable: return "unstable";
+    case EventKind::Landed: return "landed";
     }
     return "?";
 }
@@ -221,7 +223,7 @@ void Match::addBlob(const Blob& b) {
 }
 
 void Match::emit(EventKind kind, int player, Vec2 where, double value, std::string text) {
-    events_.push_back({tick(), kind, player, where, value, std::move(text)});
+    events_.push_back({tick(), kind, player, where, value, std::move(text), {}, std::nullopt});
 }
 
 std::optional<ParticleId> Match::shell() const {
@@ -281,11 +283,14 @@ void Match::fire() {
     closestMiss_ = INFINITY;
     flight_ = ShellFlight{};
     flight_.lastVelocity = v;
+    flight_.launchPosition = flight_.lastPosition = pd.position;
+    flight_.launchVelocity = v;
     if (!sandbox()) --c.shotsLeft;
     if (!sandbox() && c.projectile < c.ammoLeft.size() && c.ammoLeft[c.projectile] > 0)
         --c.ammoLeft[c.projectile];
     ++shotsFired_;
     emit(EventKind::Fired, current_, pd.position, c.speedMps, shellAmmo_.preset.name);
+    events_.back().model = shotModelName(world_.def(), pd);
 }
 
 void Match::burst(Vec2 at, int spared, ParticleId piece) {
@@ -396,30 +401,8 @@ void Match::finish() {
     emit(EventKind::MatchOver, winner_, {}, score());
 }
 
-Vec2 targetPositionAt(const Target& target, double t) {
-    const auto& path = target.path;
-    if (path.size() < 2) return target.position;
-    double total = 0.0;
-    for (std::size_t i = 1; i < path.size(); ++i) total += length(path[i] - path[i - 1]);
-    if (total <= 0.0) return target.position;
-    double d = std::fmod(target.speedMps * t, 2.0 * total);
-    if (d > total) d = 2.0 * total - d;
-    for (std::size_t i = 1; i < path.size(); ++i) {
-        const double seg = length(path[i] - path[i - 1]);
-        if (d <= seg || i + 1 == path.size())
-            return path[i - 1] + (path[i] - path[i - 1]) * (seg > 0.0 ? std::min(1.0, d / seg) : 0.0);
-        d -= seg;
-    }
-    return target.position;
-}
-
-void Match::updateTargets() {
-    for (TargetState& s : targets_)
-        if (s.def.path.size() >= 2) s.position = targetPositionAt(s.def, time());
-}
-
 // One tick, as named phases: the physics, what it knocked over, the fragments, then the
-// shell's own story (its passes, a duel hit, its contacts, its weapon, its end).
+// shell's own story (its passes, a duel hit, its contacts, its landing, its weapon, its end).
 void Match::step() {
     if (!stepPhysics()) return;
     scoreToppled();
@@ -499,6 +482,10 @@ void Match::stepShell() {
     scorePasses(false);
     if (level_.mode == Mode::Duel && hitEnemyCannon(p, r)) return;
     const ShellTouch touch = shellContacts();
+    if (!flight_.landed) {
+        if (touch.touched) reportLanding(p);
+        flight_.lastPosition = p;
+    }
     if (stepWeapon(p, touch.touched, touch.impact)) return;
     if (shellIsDone(p)) endShot(closestMiss_);
 }
@@ -621,42 +608,6 @@ std::uint64_t Match::gameHash() const {
 std::uint64_t Match::hash() const {
     const std::uint64_t parts[3] = {world_.hash(), rigid_->hash(), gameHash()};
     return hashBytes(0xcbf29ce484222325ull, parts, sizeof parts);
-}
-
-std::vector<Vec2> Match::previewTrajectory(double angleDeg, double speedMps, double seconds,
-                                           double stopPastX,
-                                           std::optional<std::size_t> projectile,
-                                           int bounces) const {
-    World w(world_.def());
-    w.setProfiling(false); // stepped up to 2,400 times for one look ahead
-    w.shapes = world_.shapes;
-    // The materials as they are now (a live restitution setting), and the shell's own
-    // material as fire() gives it: a bouncer's e = 0.9, not its rubber body's 0.828.
-    w.materials = world_.materials;
-    const double a = angleDeg * kDegToRad;
-    const Ammo ammo = ammoAt(projectile.value_or(cannon().projectile));
-    ParticleDef pd = particleDef(ammo.preset, muzzle(angleDeg),
-                                 {speedMps * std::cos(a), speedMps * std::sin(a)});
-    pd.material = ammo.weapon ? weaponMaterial(w.materials, ammo)
-                              : projectileMaterial(w.materials, ammo.preset);
-    const ParticleId id = w.particles.add(pd);
-    std::vector<Vec2> out{pd.position};
-    const long steps = std::lround(seconds / w.def().tickSeconds);
-    for (long i = 0; i < steps; ++i) {
-        w.step();
-        const Vec2 p = w.particles.position(id);
-        out.push_back(p);
-        // Without downward gravity nothing brings a shell back: past the top of the world,
-        // or past the target, it is gone (else a trial at g = 0 would fly all `seconds`).
-        const bool noFall = !(w.def().forces.gravity.y < 0.0);
-        if (!w.contacts().empty() && bounces-- == 0) break;
-        if (p.x < level_.worldMin.x || p.x > level_.worldMax.x ||
-            p.y < level_.worldMin.y || (noFall && p.y > level_.worldMax.y))
-            break;
-        const double away = pd.velocity.x >= 0.0 ? p.x - stopPastX : stopPastX - p.x;
-        if (std::isfinite(stopPastX) && away > 0.0 && (w.particles.vy[id] < 0.0 || noFall)) break;
-    }
-    return out;
 }
 
 std::size_t runCommands(Match& match, const std::vector<Command>& commands, std::uint64_t ticks,

@@ -47,6 +47,8 @@ enum class EventKind {
     SettingChanged, ///< a `set` command took effect (text: name = value)
     Refused,     ///< a command was refused (text: why)
     Unstable,    ///< the guard removed particles that blew up (value: how many; text: the cause)
+    Landed,      ///< the shell's first contact with anything (where: its centre then; value:
+                 ///< closing speed; text: "shape", "body" or "particle"; closedFormErrorM)
 };
 const char* eventName(EventKind k);
 
@@ -57,6 +59,11 @@ struct GameEvent {
     phys::Vec2 where;
     double value = 0.0;
     std::string text;
+    /// Fired: what flies the shell, "closed-form" or an integrator (game/shot_model.h).
+    std::string model;
+    /// Landed: how far beyond the exact path's landing on the same surface the shell
+    /// landed, m (game/landing.h); none when no closed form exists.
+    std::optional<double> closedFormErrorM;
 };
 
 struct CannonState {
@@ -240,6 +247,9 @@ class Match {
     void buildWorld();
     void rebuildStaticShapes();
     void fire();
+    /// The shell's first contact this tick (it is at `shellNow`): a Landed event with its
+    /// closed-form error (game/landing.cpp).
+    void reportLanding(phys::Vec2 shellNow);
     void endShot(double closestMiss);
     void nextTurn();
     void finish();

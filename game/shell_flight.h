@@ -27,6 +27,11 @@ struct ShellFlight {
     double digSpeed = 0.0;                   ///< m/s along the tunnel
     double dug = 0.0;                        ///< m tunnelled so far
     double carvedTo = 0.0;                   ///< m of tunnel already carved
+    // The landing (game/landing.h): how it left the muzzle, where it was a tick ago,
+    // and whether its first contact has been reported.
+    phys::Vec2 launchPosition, launchVelocity;
+    phys::Vec2 lastPosition;
+    bool landed = false;
 };
 
 } // namespace game

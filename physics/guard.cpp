@@ -9,20 +9,6 @@
 
 namespace phys {
 
-double stableOmegaDt(Integrator m) {
-    switch (m) {
-    case Integrator::ExplicitEuler:
-    case Integrator::Midpoint: return 0.0;
-    case Integrator::SymplecticEuler:
-    case Integrator::Verlet:
-    case Integrator::VelocityVerlet:
-    case Integrator::Leapfrog: return 2.0;
-    case Integrator::RK4: return 2.0 * std::sqrt(2.0);
-    case Integrator::ImplicitEuler: return std::numeric_limits<double>::infinity();
-    }
-    return 0.0;
-}
-
 namespace {
 
 // The alive particles whose state is not finite or has run away, counted into r.
@@ -47,26 +33,20 @@ std::vector<ParticleId> offenders(const ParticleSet& s, const GuardDef& def, Gua
 }
 
 // The stiffest spring on an offender, in units of w dt (and its stiffness).
-struct StiffestSpring {
+struct SpringAtStep {
     double omegaDt = 0.0, stiffness = 0.0;
 };
 
-StiffestSpring stiffestSpring(const World& w, const std::vector<char>& isBad, double h) {
-    const ParticleSet& s = w.particles;
-    StiffestSpring worst;
-    for (const Spring& sp : w.springs) {
-        if (sp.broken) continue;
-        const bool touches = isBad[sp.a] || (sp.b != kNoParticle && isBad[sp.b]);
-        if (!touches) continue;
-        const double im = s.invMass[sp.a] + (sp.b != kNoParticle ? s.invMass[sp.b] : 0.0);
-        const double wdt = std::sqrt(sp.stiffness * im) * h;
-        if (wdt > worst.omegaDt || !std::isfinite(wdt)) worst = {wdt, sp.stiffness};
-    }
-    return worst;
+SpringAtStep stiffestOnOffenders(const World& w, const std::vector<char>& isBad, double h) {
+    std::vector<Spring> touching;
+    for (const Spring& sp : w.springs)
+        if (isBad[sp.a] || (sp.b != kNoParticle && isBad[sp.b])) touching.push_back(sp);
+    const StiffestSpring worst = stiffestSpring(touching, w.particles);
+    return {worst.omega * h, worst.stiffness};
 }
 
 // What caused the blow-up, and what to change, diagnosed before anything is cut.
-std::string cause(const World& w, const StiffestSpring& worst, std::size_t bad, bool nonFinite,
+std::string cause(const World& w, const SpringAtStep& worst, std::size_t bad, bool nonFinite,
                   double h) {
     const Integrator m = w.def().integrator;
     char buf[400];
@@ -111,7 +91,7 @@ GuardReport guardWorld(World& w, const GuardDef& def) {
     const double h = w.def().tickSeconds / w.def().substeps;
     std::vector<char> isBad(s.slots(), 0);
     for (ParticleId id : bad) isBad[id] = 1;
-    r.cause = cause(w, stiffestSpring(w, isBad, h), bad.size(), r.nonFinite != 0, h);
+    r.cause = cause(w, stiffestOnOffenders(w, isBad, h), bad.size(), r.nonFinite != 0, h);
 
     // Cut what held the offenders, then remove them.
     const auto before = w.springs.size() + w.constraints.size();

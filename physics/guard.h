@@ -5,6 +5,7 @@
 // Nothing non-finite is left for the renderer.
 #pragma once
 
+#include "physics/stability.h"
 #include "physics/world.h"
 
 #include <string>
@@ -27,10 +28,5 @@ struct GuardReport {
 
 /// Checks every particle; removes offenders and explains. O(particles + springs).
 GuardReport guardWorld(World& world, const GuardDef& def = {});
-
-/// Largest stable w dt of an integrator on an undamped spring (theory): 0 for explicit
-/// Euler and midpoint, 2 for the symplectic family, 2 sqrt 2 for RK4, infinity for
-/// implicit Euler.
-double stableOmegaDt(Integrator m);
 
 } // namespace phys

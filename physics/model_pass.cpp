@@ -24,17 +24,9 @@ ModelRule::ModelRule(const ForceDef& f, bool allowed, double tick, const std::ui
     expect = kAlive | (airDrag ? kNoDrag : 0u);
 }
 
-namespace {
-// May particle i follow the closed form, as far as its flags and mass say (the tether and
-// the water are checked after)?
-bool closedCandidate(const ModelRule& r, std::uint32_t f, double invMass) {
-    return r.closedFormAllowed && (f & r.mask) == r.expect && invMass > 0.0;
-}
-} // namespace
-
 std::uint32_t chooseModel(ParticleSet& s, std::size_t i, const ModelRule& r) {
     std::uint32_t fl = s.flags[i];
-    bool closed = closedCandidate(r, fl, s.invMass[i]) && !(r.tethered && r.tethered[i]);
+    bool closed = closedFormCandidate(r, fl, s.invMass[i]) && !(r.tethered && r.tethered[i]);
     if (closed && r.water) {
         // Stay clear of the water for the whole tick: the farthest it can fall.
         const double reach = std::abs(s.vy[i]) * r.tickSeconds +

@@ -48,6 +48,13 @@ struct ModelRule {
               const std::uint8_t* tethered);
 };
 
+/// Whether a particle with these flags and inverse mass may follow the closed form, as far
+/// as its flags and mass say (the tether and the water are checked by chooseModel). The
+/// game asks it of a shell before it is fired, to name the model that will fly it.
+inline bool closedFormCandidate(const ModelRule& r, std::uint32_t flags, double invMass) {
+    return r.closedFormAllowed && (flags & r.mask) == r.expect && invMass > 0.0;
+}
+
 /// Applies the rule to particle i: sets kBallistic (launch pending) or hands it to the
 /// integrator (clearing kBallistic and multi-step history). Returns its new flags.
 std::uint32_t chooseModel(ParticleSet& s, std::size_t i, const ModelRule& rule);

@@ -23,6 +23,8 @@ nlohmann::json eventsJson(const std::vector<GameEvent>& events) {
         if (e.where != phys::Vec2{}) j["where"] = {e.where.x, e.where.y};
         j["value"] = e.value;
         if (!e.text.empty()) j["text"] = e.text;
+        if (!e.model.empty()) j["model"] = e.model;
+        if (e.closedFormErrorM) j["closed_form_error_m"] = *e.closedFormErrorM;
         out.push_back(j);
     }
     return out;

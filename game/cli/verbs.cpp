@@ -48,6 +48,12 @@ events, the score and the final state hash.
                       "winner":i,"events":[...],"sim_ms":..,"render_ms":..}, with
                      --video also "video":{"file":..,"codec":..,"frames":n,"seconds":..},
                      --audio also "audio":{"file":..,"frames":n,"seconds":..}
+                     each event: {"tick","kind","player","where"?,"value","text"?};
+                     "fired" also "model": "closed-form" or the integrator that
+                     flies the shell ("explicit-euler", ...); "landed" (the shell's
+                     first contact; where: its centre) also "closed_form_error_m":
+                     how far beyond the exact path's landing on the same surface it
+                     landed (m, + long), absent with drag, wind or water
 
 Exit code: 0 ok, 2 bad input (a file to write that cannot be written is refused before
 the run: its folder missing, no folder, or taking no new file), 3 a file could not be

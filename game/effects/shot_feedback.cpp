@@ -50,8 +50,16 @@ void ShotFeedback::event(const Match& m, const GameEvent& e) {
         shooter_ = e.player;
         shellAt_ = e.where;
         aimedAt_ = standingTargets(m);
-        // The last shot's note gives way to the new shot's.
-        std::erase_if(notes_, [](const ShotNote& n) { return n.kind == ShotNote::Kind::Miss; });
+        model_ = e.model;
+        exact_.reset();
+        // The last shot's notes give way to the new shot's.
+        std::erase_if(notes_, [](const ShotNote& n) {
+            return n.kind == ShotNote::Kind::Miss || n.kind == ShotNote::Kind::Exact;
+        });
+        break;
+    case EventKind::Landed:
+        if (inFlight_ && (exact_ = exactPathOf(m, e, model_)))
+            notes_.push_back({ShotNote::Kind::Exact, exact_->exactLanding, exactPathText(*exact_), 0.0, 8.0});
         break;
     case EventKind::Burst:
         shellAt_ = e.where;

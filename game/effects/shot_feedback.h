@@ -9,7 +9,10 @@
 // from the landing point to the nearest such target's outline.
 #pragma once
 
+#include "game/effects/exact_path.h"
 #include "physics/vec2.h"
+
+#include <optional>
 
 #include <cstdint>
 #include <string>
@@ -25,7 +28,8 @@ struct GameEvent;
 std::string missText(double missMetres, bool longShot);
 
 struct ShotNote {
-    enum class Kind { Miss, Points, Hit } kind = Kind::Miss;
+    /// Miss: how far from the target; Exact: how far from the exact path (at its landing).
+    enum class Kind { Miss, Points, Hit, Exact } kind = Kind::Miss;
     phys::Vec2 where; ///< m
     std::string text;
     double age = 0.0;  ///< s
@@ -52,6 +56,8 @@ class ShotFeedback {
     const std::vector<ShotNote>& notes() const { return notes_; }
     /// Where the last shot came down (its last position in flight, or its burst).
     const std::vector<phys::Vec2>& landings() const { return landings_; }
+    /// The last shot's exact path, when an integrator flew it where a closed form exists.
+    const std::optional<ExactPath>& exactPath() const { return exact_; }
 
   private:
     void landed(const Match& match, double closestMiss);
@@ -63,6 +69,8 @@ class ShotFeedback {
     bool scored_ = false;
     int shooter_ = 0;
     std::vector<TargetMark> aimedAt_; ///< the targets standing when the shot was fired
+    std::string model_;               ///< what flies the shot (the `fired` event's model)
+    std::optional<ExactPath> exact_;
 };
 
 } // namespace game

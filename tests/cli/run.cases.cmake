@@ -19,3 +19,8 @@ cli_test(replay_verify_json 0 "\"first_divergent_tick\":null,\"ok\":true"
 cli_test(replay_verify_bad_file 2 "bad_replays/wrong_version.json: \\$\\.version: this game reads replay version 1"
          "replay;verify;${PROJECT_SOURCE_DIR}/tests/data/bad_replays/wrong_version.json")
 cli_test(replay_verify_usage 2 "usage is: artillery replay verify FILE" "replay;check;x.json")
+# The fired event names the model that flies the shell; the landed event measures it
+# against the closed form (explicit Euler at 30 Hz flies g dt t / 2 high and lands 0.69 m long).
+cli_test(run_json_model_and_landing 0
+         "\"kind\":\"fired\",\"model\":\"explicit-euler\".*\"closed_form_error_m\":0\\.69[0-9]*,\"kind\":\"landed\""
+         "run;${levels}/12_first_shot.json;--commands;${PROJECT_SOURCE_DIR}/tests/data/first_shot_euler_30hz.json;--ticks;200;--json")

@@ -20,6 +20,9 @@ const Color kSpray = Color::hex(0xffffff);
 const Color kSprayEdge = Color::hex(0x1d6fb0); ///< a darker rim, so spray reads over sky and water
 const Color kGold = Color::hex(0xffc93c);
 const Color kMissText = Color::hex(0xffffff);
+/// The exact (closed-form) path after a shot an integrator flew: pale cyan, apart from the
+/// trails and the white miss marker.
+const Color kExactPath = Color::hex(0x9be7ff);
 /// Colours by tint: earth, wood, stone, steel, water.
 const Color kTints[] = {Color::hex(0x5a3e26), Color::hex(0xb07a45), Color::hex(0x8f8a80),
                         Color::hex(0x7d8791), Color::hex(0xd8f0ff)};
@@ -117,6 +120,14 @@ void drawShotFeedback(Renderer2D& r, const Effects& fx) {
             r.strokeCircle(n.where, r.camera().metres(6.0), kMissText.withAlpha(0.8f * fade), 2.0f);
             break;
         case game::ShotNote::Kind::Points:
+            break;
+        case game::ShotNote::Kind::Exact:
+            // The exact path beside the flown one's trail, and where it met the ground; the
+            // verdict (hud.cpp) says by how much they differ.
+            if (const auto& exact = fx.feedback().exactPath()) {
+                r.polyline(exact->points, kExactPath.withAlpha(0.85f * fade), 2.0f);
+                r.strokeCircle(n.where, r.camera().metres(5.0), kExactPath.withAlpha(fade), 2.0f);
+            }
             break;
         case game::ShotNote::Kind::Hit: {
             // A hit marker: four ticks around the point, opening as it fades.

@@ -371,6 +371,7 @@ void helpOverlay(bool& open) {
         {"Esc", "pause menu"},
         {"F1 or ?", "this help"},
         {"F2, F6", "the lab: physics panel, Stats window (compare integrators, energy, charts)"},
+        {"F3", "the cost in a corner: frame time, physics time per tick, what each model moves"},
         {". (period)", "one tick (pauses)"},
         {"[ / ]", "slower / faster (x1/16 .. x4); \\ back to x1"},
         {"K", "pause / resume the simulation"},

@@ -8,6 +8,7 @@
 
 #include "game/editor/level_editor.h"
 #include "game/editor/sandbox_to_level.h"
+#include "ui/game/cost_readout.h"
 #include "ui/game/match_frame.h"
 #include "ui/game/random_map.h"
 #include "ui/game/settings_commands.h"
@@ -409,6 +410,7 @@ void GameScreen::matchPanels(MenuChoice& choice, bool& sceneToEditor) {
     if (statsShown_)
         if (auto d = statsPanel_.panel(m, shownAim)) submit(settingCommands(m.world().def(), *d));
     if (settings.physicsPanel) physicsPanelOfMatch(m);
+    if (costShown_) costReadout(costFigures(m, stats_.frameMs), clearCorner("Cost", costReadoutEstimate()));
     if (m.over() && play_.resultRecorded() && !choice.openLevel && !editor_.playtest())
         choice = menus_.nextLevelCard(files_.progress(), level_.file);
 }
@@ -433,11 +435,15 @@ ImVec2 GameScreen::clearCorner(const char* name, ImVec2 estimate) const {
     const double W = context_.width(), H = context_.height(), u = hudScale(W, H);
     const double w = size.x * scale.x, h = size.y * scale.y, m = 12.0 * u;
     const double beside = 336.0 * u, top = kHudTopBand * u;
-    const std::vector<PixelRect> places = {{beside, H - m - h, beside + w, H - m},
-                                           {W - m - w, H - m - h, W - m, H - m},
-                                           {W - m - w, top, W - m, top + h},
-                                           {m, top, m + w, top + h},
-                                           {0.5 * (W - w), H - m - h, 0.5 * (W + w), H - m}};
+    std::vector<PixelRect> places = {{beside, H - m - h, beside + w, H - m},
+                                     {W - m - w, H - m - h, W - m, H - m},
+                                     {W - m - w, top, W - m, top + h},
+                                     {m, top, m + w, top + h},
+                                     {0.5 * (W - w), H - m - h, 0.5 * (W + w), H - m}};
+    // When the corners are taken (the lab's panels open, the close-up beside them), the
+    // bottom edge and the top band, left to right, before standing over anything.
+    for (double x = m; x + w <= W - m; x += 24.0 * u)
+        for (const double y : {H - m - h, top}) places.push_back({x, y, x + w, y + h});
     std::vector<PixelRect> avoid = layout_.objectRects();
     for (const LayoutOverlay& o : layout_.overlays)
         if (o.name != std::string("panel.") + name) avoid.push_back(o.rect); // not itself
@@ -448,6 +454,8 @@ ImVec2 GameScreen::clearCorner(const char* name, ImVec2 estimate) const {
 void GameScreen::physicsPanelOfMatch(game::Match& m) {
     const game::LiveSettings before = m.liveSettings();
     game::LiveSettings edited = before;
+    stats_.stiffest = phys::stiffestSpring(m.world().springs, m.world().particles);
+    stats_.energyTrend = statsPanel_.energyTrend(stats_.energyTrendSeconds);
     SceneRequests scene;
     // Folded at first: the sky is where the shells fly. Its layout persists.
     ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);

@@ -141,8 +141,9 @@ class GameScreen final : public Screen {
     void matchPanels(MenuChoice& choice, bool& sceneToEditor);
     /// Where the ImGui window `name` goes (its top-left corner, window points): the first
     /// of the usual places (beside the aim readout at the bottom, the bottom right, the
-    /// top right and the top left under the HUD's band, the bottom middle) where it covers
-    /// nothing the frame shows so far; its size is last frame's, or `estimate` (points).
+    /// top right and the top left under the HUD's band, the bottom middle, then along the
+    /// bottom edge and the top band) where it covers nothing the frame shows so far; its
+    /// size is last frame's, or `estimate` (points).
     ImVec2 clearCorner(const char* name, ImVec2 estimate) const;
     double labPanelsRight() const;
     void physicsPanelOfMatch(game::Match& m);
@@ -189,6 +190,7 @@ class GameScreen final : public Screen {
     FrameStats stats_;
     ScreenLayout layout_; ///< the frame's overlays and objects, gathered as it is drawn
     bool statsShown_ = false; ///< the Stats window (a lab panel: shown on its key)
+    bool costShown_ = false;  ///< the cost readout (F3)
     int framesMeasured_ = 0;
     bool running_ = true;
     bool networkDuel_ = false;

@@ -190,6 +190,7 @@ void GameScreen::gameKeyAction(GameKey action) {
         break;
     case GameKey::TogglePhysicsPanel: settings.physicsPanel = !settings.physicsPanel; break;
     case GameKey::ToggleStats: statsShown_ = !statsShown_; break;
+    case GameKey::ToggleCost: costShown_ = !costShown_; break;
     case GameKey::StepTick: time.paused = time.stepRequested = true; break;
     case GameKey::TogglePause: time.paused = !time.paused; break;
     case GameKey::Slower: time.timeScale = nextSpeed(time.timeScale, -1); break;

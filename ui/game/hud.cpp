@@ -9,6 +9,7 @@
 #include "ui/game/screen_layout.h"
 #include "ui/game/weapon_look.h"
 #include "ui/render/design_canvas.h"
+#include "game/shot_model.h"
 #include "physics/integrators.h"
 
 #include <algorithm>
@@ -154,14 +155,17 @@ void drawWind(const HudSpace& s, double wind) {
     }
 }
 
-/// The name of what flies the shell: the closed form where only gravity acts and the
-/// model allows it, else the integrator chosen.
+/// The forces, and the model that will fly the shell: the closed form where only gravity
+/// acts and the model allows it, else the integrator chosen (game/shot_model.h).
 std::string flightModelLine(const Match& m) {
     const phys::WorldDef& d = m.world().def();
+    const std::string model = game::shotModelName(m);
+    char rate[24] = "";
+    if (model != game::kClosedFormModel) std::snprintf(rate, sizeof rate, " %.0f Hz", 1.0 / d.tickSeconds);
     char line[128];
-    std::snprintf(line, sizeof line, "g %.2f m/s²   drag %s   %s %.0f Hz", -d.forces.gravity.y,
+    std::snprintf(line, sizeof line, "g %.2f m/s²  drag %s  flown by %s%s", -d.forces.gravity.y,
                   d.forces.drag == phys::DragModel::None ? "off" : "on",
-                  phys::info(d.integrator).name, 1.0 / d.tickSeconds);
+                  game::shotModelLabel(model).c_str(), rate);
     return line;
 }
 

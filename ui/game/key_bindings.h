@@ -23,6 +23,7 @@ enum class GameKey {
     ToggleFollow,      ///< C: the camera follows the shell
     TogglePhysicsPanel, ///< F2
     ToggleStats,       ///< F6: the Stats window (compare, energy, charts)
+    ToggleCost,        ///< F3: the cost in a corner (frame, physics time, what each model moves)
     StepTick,          ///< . : one tick, paused
     TogglePause,       ///< K
     Slower,            ///< [

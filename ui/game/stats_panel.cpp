@@ -71,10 +71,21 @@ void StatsPanel::sample(const game::Match& match) {
     }
     last_ = conservedQuantities(match);
     lastTime_ = match.time();
+    tick_ = dt;
     energy_[next_] = static_cast<float>(last_.energy);
     momentum_[next_] = static_cast<float>(std::hypot(last_.momentumX, last_.momentumY));
     next_ = (next_ + 1) % energy_.size();
     count_ = std::min(count_ + 1, energy_.size());
+}
+
+std::optional<double> StatsPanel::energyTrend(double seconds) const {
+    if (count_ < 2 || !(tick_ > 0.0)) return std::nullopt;
+    const auto back = std::min(count_ - 1, static_cast<std::size_t>(std::lround(seconds / tick_)));
+    const std::size_t cap = energy_.size();
+    const double now = energy_[(next_ + cap - 1) % cap];
+    const double then = energy_[(next_ + cap - 1 - back) % cap];
+    if (then == 0.0) return std::nullopt;
+    return (now - then) / std::abs(then);
 }
 
 void StatsPanel::runCompare(const game::Match& match, const PendingAim& aim) {

@@ -47,6 +47,11 @@ class StatsPanel {
     /// Compare paths and the charts, through the match's camera (begin() already called).
     void drawWorld(Renderer2D& r, const game::Match& match);
 
+    /// Relative change of the energy over the last `seconds` of samples (fewer when the
+    /// match is younger), e.g. +0.04 for 4 % gained; none before two samples or at zero
+    /// energy. Shown by the Physics panel: explicit Euler gaining energy on springs.
+    std::optional<double> energyTrend(double seconds) const;
+
     /// The charts are drawn over the view (open, and the panel not folded).
     bool chartsShown() const { return charts_.open && expanded_; }
 
@@ -61,6 +66,7 @@ class StatsPanel {
     std::size_t next_ = 0, count_ = 0;
     double lastTime_ = -1.0;
     double firstEnergy_ = 0.0;
+    double tick_ = 0.0; ///< s, the tick of the samples
     ConservedSample last_;
 
     std::vector<game::IntegratorPath> paths_;

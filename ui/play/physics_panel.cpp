@@ -25,23 +25,42 @@ void section(const char* title) {
 
 constexpr int kTickRates[] = {30, 60, 120, 240, 480, 960}; // Hz
 
+/// The first row of the integrator list: the `auto` model.
+constexpr const char* kClosedFormRow = "closed form (exact, where only gravity acts)";
+
+/// The model and the integrator in one list: its first row is the `auto` model (the closed
+/// form flies whatever only gravity reaches, the integrator the rest); any other row sets
+/// the `integrate` model and that integrator, so the shell flies by what was picked. Both
+/// reach the match as the `set model` and `set integrator` commands they always were.
 bool integratorCombo(phys::WorldDef& def) {
     bool changed = false;
     const phys::IntegratorInfo& current = phys::info(def.integrator);
-    if (ImGui::BeginCombo("integrator", current.name)) {
+    const bool closedForm = def.model == phys::ModelPolicy::Auto;
+    if (ImGui::BeginCombo("integrator", closedForm ? "closed form (exact)" : current.name)) {
+        if (ImGui::Selectable(kClosedFormRow, closedForm) && !closedForm) {
+            def.model = phys::ModelPolicy::Auto;
+            changed = true;
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("p0 + v0 t + g t^2/2: no error at any tick rate.\n"
+                              "Drag, wind, water and springs still go through %s.",
+                              current.name);
         for (const phys::IntegratorInfo& i : phys::integrators()) {
-            const bool selected = i.id == def.integrator;
+            const bool selected = !closedForm && i.id == def.integrator;
             if (ImGui::Selectable(i.name, selected) && !selected) {
                 def.integrator = i.id;
+                def.model = phys::ModelPolicy::Integrate;
                 changed = true;
             }
             if (ImGui::IsItemHovered())
-                ImGui::SetTooltip("order %d, %d force evaluations per step\n%s", i.order,
-                                  i.evaluations, i.summary);
+                ImGui::SetTooltip("order %d, %d force evaluations per step\n%s\n"
+                                  "every particle, the shell too, through it",
+                                  i.order, i.evaluations, i.summary);
             if (selected) ImGui::SetItemDefaultFocus();
         }
         ImGui::EndCombo();
     }
+    if (closedForm) ImGui::TextDisabled("where other forces act: %s", current.name);
     return changed;
 }
 
@@ -275,6 +294,80 @@ void overlayControls(DebugOverlays& d) {
     }
 }
 
+/// Where the method fails: the stiffest spring against the integrator's stable step (the
+/// springs go through the integrator under either model), and the energy's trend.
+void springLimits(const phys::WorldDef& def, const FrameStats& stats) {
+    const phys::StiffestSpring& s = stats.stiffest;
+    if (s.stiffness > 0.0) {
+        const double h = def.tickSeconds / def.substeps;
+        const std::string warning = phys::stiffnessWarning(def.integrator, s.stiffness, s.mass, h);
+        ImGui::PushTextWrapPos(0.0f); // the panel's width: these lines are long
+        if (!warning.empty())
+            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", warning.c_str());
+        else
+            ImGui::TextDisabled("stiffest spring %g N/m on %.3g kg: w dt %.2f, stable below %.3g",
+                                s.stiffness, s.mass, s.omega * h, phys::stableOmegaDt(def.integrator));
+        ImGui::PopTextWrapPos();
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("w = sqrt(k/m); stable w dt: explicit Euler and midpoint none,\n"
+                              "symplectic Euler and the Verlets 2, RK4 2.83, implicit Euler any");
+    }
+    if (stats.energyTrend && s.stiffness > 0.0) {
+        const double pct = 100.0 * *stats.energyTrend;
+        const ImVec4 colour = pct > 1.0 ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.7f, 0.7f, 0.7f, 1.0f);
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextColored(colour, "energy %+.1f %% in the last %.0f s%s", pct, stats.energyTrendSeconds,
+                           pct > 1.0 ? ": the method is gaining energy" : "");
+        ImGui::PopTextWrapPos();
+    }
+}
+
+/// Tick rate, sub-steps, and the clock: pause, one step, fire, reset, slow motion.
+bool timeControls(phys::WorldDef& def, TimeControls& time, SceneRequests& scene) {
+    bool changed = tickRateCombo(def);
+    changed |= ImGui::SliderInt("sub-steps", &def.substeps, 1, 16);
+    if (ImGui::Button(time.paused ? "resume" : "pause")) time.paused = !time.paused;
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!time.paused);
+    if (ImGui::Button("step")) time.stepRequested = true;
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("fire")) scene.fire = true;
+    ImGui::SameLine();
+    if (ImGui::Button("reset")) scene.reset = true;
+    ImGui::SliderFloat("speed", &time.timeScale, 0.05f, 4.0f, "x%.2f",
+                       ImGuiSliderFlags_Logarithmic);
+    return changed;
+}
+
+/// Gravity, air drag and wind.
+bool forceControls(phys::WorldDef& def) {
+    bool changed = gravityCombo(def);
+    bool drag = def.forces.drag == phys::DragModel::Quadratic;
+    if (ImGui::Checkbox("quadratic air drag", &drag)) {
+        def.forces.drag = drag ? phys::DragModel::Quadratic : phys::DragModel::None;
+        changed = true;
+    }
+    float wind = static_cast<float>(def.forces.wind.x);
+    if (ImGui::SliderFloat("wind (m/s)", &wind, -20.0f, 20.0f, "%.1f")) {
+        def.forces.wind.x = wind;
+        changed = true;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("drag acts on v - wind; off when drag is off");
+    return changed;
+}
+
+/// What to draw: trails, velocities, labels, interpolation and the debug overlays.
+void drawingControls(ViewControls& view) {
+    ImGui::Checkbox("trails", &view.trails);
+    ImGui::SameLine();
+    ImGui::Checkbox("velocities", &view.draw.velocities);
+    ImGui::Checkbox("labels", &view.labels);
+    ImGui::SameLine();
+    ImGui::Checkbox("interpolate", &view.interpolate);
+    overlayControls(view.draw);
+}
+
 } // namespace
 
 int gravityPresetIndex(double g) {
@@ -300,56 +393,29 @@ bool drawPanel(phys::WorldDef& def, game::LiveSettings* live, const game::Materi
     ImGui::SetNextWindowSize(ImVec2(panelPx(380), 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("Physics", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
     ImGui::PushItemWidth(panelPx(160));
-
+    // Grouped by concern: time, model and integrator, forces, collisions, the materials
+    // (folded: a long table), drawing.
+    section("time");
+    changed |= timeControls(def, time, scene);
+    section("model and integrator");
     changed |= integratorCombo(def);
-    changed |= tickRateCombo(def);
-    changed |= ImGui::SliderInt("sub-steps", &def.substeps, 1, 16);
-    changed |= gravityCombo(def);
-    bool drag = def.forces.drag == phys::DragModel::Quadratic;
-    if (ImGui::Checkbox("quadratic air drag", &drag)) {
-        def.forces.drag = drag ? phys::DragModel::Quadratic : phys::DragModel::None;
-        changed = true;
-    }
-    float wind = static_cast<float>(def.forces.wind.x);
-    if (ImGui::SliderFloat("wind (m/s)", &wind, -20.0f, 20.0f, "%.1f")) {
-        def.forces.wind.x = wind;
-        changed = true;
-    }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("drag acts on v - wind; off when drag is off");
-
+    springLimits(def, stats);
+    section("forces");
+    changed |= forceControls(def);
     section("collisions");
     changed |= contactControls(def);
-    if (live && inPlay) changed |= materialControls(*live, *inPlay);
-
-    section("time");
-    if (ImGui::Button(time.paused ? "resume" : "pause")) time.paused = !time.paused;
-    ImGui::SameLine();
-    ImGui::BeginDisabled(!time.paused);
-    if (ImGui::Button("step")) time.stepRequested = true;
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    if (ImGui::Button("fire")) scene.fire = true;
-    ImGui::SameLine();
-    if (ImGui::Button("reset")) scene.reset = true;
-    ImGui::SliderFloat("speed", &time.timeScale, 0.05f, 4.0f, "x%.2f",
-                       ImGuiSliderFlags_Logarithmic);
-
-    section("draw");
-    ImGui::Checkbox("trails", &view.trails);
-    ImGui::SameLine();
-    ImGui::Checkbox("velocities", &view.draw.velocities);
-    ImGui::Checkbox("labels", &view.labels);
-    ImGui::SameLine();
-    ImGui::Checkbox("interpolate", &view.interpolate);
-    overlayControls(view.draw);
-
-    section("stats");
-    ImGui::Text("frame %.2f ms  physics %.1f us/tick", stats.frameMs, stats.physicsUs);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "integrate %.1f us, springs %.1f us, %d ticks this frame\n%s, %zu vertices",
-            stats.integrateUs, stats.springsUs, stats.ticksThisFrame, stats.context,
-            stats.vertices);
+    if (live && inPlay && ImGui::CollapsingHeader("materials"))
+        changed |= materialControls(*live, *inPlay);
+    section("drawing");
+    drawingControls(view);
+    if (!live) { // a match has the cost readout (F3) for these
+        ImGui::Text("frame %.2f ms  physics %.1f us/tick", stats.frameMs, stats.physicsUs);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "integrate %.1f us, springs %.1f us, %d ticks this frame\n%s, %zu vertices",
+                stats.integrateUs, stats.springsUs, stats.ticksThisFrame, stats.context,
+                stats.vertices);
+    }
     if (!stats.status.empty())
         ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "%s", stats.status.c_str());
 

@@ -6,10 +6,12 @@
 #pragma once
 
 #include "game/settings.h"
+#include "physics/stability.h"
 #include "physics/world.h"
 #include "ui/render/world_view.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace ui {
@@ -46,6 +48,11 @@ struct FrameStats {
     std::size_t vertices = 0; ///< in the renderer's last flush
     const char* context = ""; ///< which GL context draws
     std::string status;       ///< last message (screenshot saved, ...)
+    /// The stiffest spring of the scene: the panel flags it past the integrator's limit.
+    phys::StiffestSpring stiffest;
+    /// Relative change of the energy over the last energyTrendSeconds, when known.
+    std::optional<double> energyTrend;
+    double energyTrendSeconds = 2.0;
 };
 
 /// Draws the panel. Returns true when `def` was edited (apply it at the next tick).

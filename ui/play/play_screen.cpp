@@ -88,6 +88,7 @@ void PlayScreen::simulate(double wallSeconds) {
     stats_.simSeconds = scene_.world.time();
     stats_.particles = scene_.world.particles.count();
     stats_.springs = scene_.world.springs.size();
+    stats_.stiffest = phys::stiffestSpring(scene_.world.springs, scene_.world.particles);
 }
 
 void PlayScreen::drawScene() {
