@@ -1,6 +1,7 @@
 #include "game/match.h"
 
 #include "game/material_names.h"
+#include "game/scoring.h"
 #include "game/weapons.h"
 #include "physics/ballistics.h"
 #include "physics/projectiles.h"
@@ -28,6 +29,7 @@ const char* eventName(EventKind k) {
     case EventKind::SettingChanged: return "setting_changed";
     case EventKind::Refused: return "refused";
     case EventKind::Unstable: return "unstable";
+    case EventKind::Verdict: return "verdict";
     }
     return "?";
 }
@@ -36,9 +38,6 @@ namespace {
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr double kBarrelLength = 1.5;   // m, muzzle distance from the cannon's pivot
-constexpr int kTargetBlockPoints = 100; // knocking a target block off its place
-constexpr int kTargetBlobPoints = 150;
-constexpr int kShotBonus = 50;          // per shot left when every target is down
 
 /// A block's rigid material by name (the level check refused unknown names); density
 /// comes from the level.
@@ -222,6 +221,7 @@ void Match::addBlob(const Blob& b) {
 
 void Match::emit(EventKind kind, int player, Vec2 where, double value, std::string text) {
     events_.push_back({tick(), kind, player, where, value, std::move(text)});
+    judge_.observe(*this, events_.back());
 }
 
 std::optional<ParticleId> Match::shell() const {
@@ -363,7 +363,13 @@ std::string Match::apply(const Command& cmd) {
     return refuse("unknown command");
 }
 
+void Match::closeVerdict() {
+    if (std::optional<GameEvent> v = judge_.close(*this))
+        emit(v->kind, v->player, v->where, v->value, std::move(v->text));
+}
+
 void Match::fire() {
+    closeVerdict(); // the last shot's, if it has not settled yet
     CannonState& c = cannons_[static_cast<std::size_t>(current_)];
     shellAmmo_ = selectedAmmo();
     const double a = c.angleDeg * kDegToRad;
@@ -420,7 +426,7 @@ void Match::scorePasses(bool shotEnding) {
         t.hit = true;
         const double r = shellAmmo_.preset.diameter * 0.5;
         const double closeness = 1.0 - t.closestInside / (t.def.radius + r);
-        const int points = static_cast<int>(std::lround(t.def.points * (0.5 + 0.5 * closeness)));
+        const int points = discPoints(t.def.points, closeness);
         shooter.score += points;
         emit(EventKind::TargetHit, current_, t.position, points);
     }
@@ -432,10 +438,7 @@ void Match::endShot(double closestMiss) {
     if (world_.particles.alive(shell_)) world_.particles.remove(shell_);
     shell_ = kNoParticle;
     emit(EventKind::ShotOver, current_, {}, std::isfinite(closestMiss) ? closestMiss : -1.0);
-    bool allDown = true;
-    for (const auto& t : targets_) allDown = allDown && t.hit;
-    for (const auto& b : blocks_) allDown = allDown && (!b.def.target || b.toppled);
-    for (const auto& b : blobs_) allDown = allDown && (!b.def.target || b.toppled);
+    const bool allDown = allTargetsDown();
     if (level_.mode == Mode::Duel) {
         int alive = 0, shots = 0;
         for (const auto& k : cannons_) {
@@ -482,13 +485,11 @@ void Match::finish() {
         }
         winner_ = tie ? -1 : best;
     } else {
-        bool allDown = true;
-        for (const auto& t : targets_) allDown = allDown && t.hit;
-        for (const auto& b : blocks_) allDown = allDown && (!b.def.target || b.toppled);
-        for (const auto& b : blobs_) allDown = allDown && (!b.def.target || b.toppled);
+        const bool allDown = allTargetsDown();
         if (allDown) cannons_[0].score += kShotBonus * cannons_[0].shotsLeft;
         winner_ = allDown ? 0 : -1;
     }
+    closeVerdict(); // the last shot's, before the match's end
     emit(EventKind::MatchOver, winner_, {}, score());
 }
 
@@ -515,6 +516,12 @@ void Match::updateTargets() {
 }
 
 void Match::step() {
+    stepRules();
+    if (std::optional<GameEvent> v = judge_.afterTick(*this))
+        emit(v->kind, v->player, v->where, v->value, std::move(v->text));
+}
+
+void Match::stepRules() {
     coupling_.prepare(world_, *rigid_);
     world_.step();
     // The guard: nothing non-finite or runaway survives the tick, and the player is told
@@ -532,47 +539,12 @@ void Match::step() {
     rigid_->step(world_.def().tickSeconds);
     updateTargets();
 
-    CannonState& shooter = cannons_[static_cast<std::size_t>(current_)];
-    // Structures knocked off their place score for whoever fired last.
-    for (BlockState& b : blocks_) {
-        if (!b.def.target || b.toppled || !rigid_->alive(b.body)) continue;
-        const RigidBodyState s = rigid_->state(b.body);
-        if (shotsFired_ == 0) {
-            // Settling before the first shot is not toppling: follow the block until then.
-            b.def.position = s.position;
-            b.def.angleDeg = s.angle / kDegToRad;
-            continue;
-        }
-        const double moved = length(s.position - b.def.position);
-        const double tilt = std::abs(std::remainder(s.angle - b.def.angleDeg * kDegToRad, 2.0 * std::numbers::pi));
-        if (moved > std::max(b.def.size.x, b.def.size.y) || tilt > 0.25 * std::numbers::pi) {
-            b.toppled = true;
-            shooter.score += kTargetBlockPoints;
-            emit(EventKind::Toppled, current_, s.position, kTargetBlockPoints);
-        }
-    }
-    for (BlobState& b : blobs_) {
-        if (!b.def.target || b.toppled) continue;
-        const Vec2 p = world_.particles.position(b.center);
-        if (shotsFired_ == 0) { // settling before the first shot is not toppling
-            b.def.center = p;
-            continue;
-        }
-        if (length(p - b.def.center) > b.def.radius) {
-            b.toppled = true;
-            shooter.score += kTargetBlobPoints;
-            emit(EventKind::Toppled, current_, p, kTargetBlobPoints);
-        }
-    }
+    scoreToppled();
 
     stepFragments();
     if (shell_ == kNoParticle) {
         if (!over_ && level_.mode == Mode::Practice) {
-            bool allDown = true;
-            for (const auto& t : targets_) allDown = allDown && t.hit;
-            for (const auto& b : blocks_) allDown = allDown && (!b.def.target || b.toppled);
-            for (const auto& b : blobs_) allDown = allDown && (!b.def.target || b.toppled);
-            if (allDown && shotsFired_ > 0) finish();
+            if (allTargetsDown() && shotsFired_ > 0) finish();
         }
         return;
     }
@@ -630,38 +602,6 @@ void Match::step() {
                          (flight > 1.0 && length(world_.particles.velocity(shell_)) < 0.05));
     if (outside || resting || flight > kMaxFlightSeconds || !std::isfinite(p.x) || !std::isfinite(p.y))
         endShot(closestMiss_);
-}
-
-int Match::score() const {
-    int s = 0;
-    for (const auto& c : cannons_) s += c.score;
-    return s;
-}
-
-int Match::maxScore() const {
-    int s = 0, things = 0;
-    for (const auto& t : targets_) {
-        s += t.def.points;
-        ++things;
-    }
-    for (const auto& b : blocks_)
-        if (b.def.target) {
-            s += kTargetBlockPoints;
-            ++things;
-        }
-    for (const auto& b : blobs_)
-        if (b.def.target) {
-            s += kTargetBlobPoints;
-            ++things;
-        }
-    return s + kShotBonus * std::max(0, level_.shots - things);
-}
-
-int Match::stars() const {
-    if (level_.mode != Mode::Practice || winner_ != 0) return 0;
-    const double f = static_cast<double>(score()) / std::max(1, maxScore());
-    const int earned = f >= 0.85 ? 3 : f >= 0.6 ? 2 : 1;
-    return assisted_ ? std::min(earned, kAssistedMaxStars) : earned;
 }
 
 std::uint64_t Match::gameHash() const {

@@ -18,6 +18,7 @@
 #include "game/level.h"
 #include "game/shell_flight.h"
 #include "game/terrain.h"
+#include "game/verdict.h"
 #include "physics/coupling.h"
 #include "physics/guard.h"
 #include "physics/rigid/rigid_world.h"
@@ -47,6 +48,8 @@ enum class EventKind {
     SettingChanged, ///< a `set` command took effect (text: name = value)
     Refused,     ///< a command was refused (text: why)
     Unstable,    ///< the guard removed particles that blew up (value: how many; text: the cause)
+    Verdict,     ///< what a shot did, once (player: who fired; value: its points, 0 in a duel;
+                 ///< text: "hit +150", "missed by 4.0 m, short"; game/verdict.h)
 };
 const char* eventName(EventKind k);
 
@@ -134,7 +137,7 @@ class Match {
     /// it was refused (also reported as a Refused event); a refused command changes
     /// nothing.
     std::string apply(const Command& command);
-    /// Advances one tick.
+    /// Advances one tick (and gives the last shot's verdict once it has settled).
     void step();
 
     // --- state ---------------------------------------------------------------------
@@ -172,6 +175,9 @@ class Match {
     int score() const;
     int stars() const;
     int maxScore() const;
+    /// Every target disc hit and every target block and blob knocked down (true for a
+    /// level with none).
+    bool allTargetsDown() const;
     const std::vector<GameEvent>& events() const { return events_; }
     /// Hash of everything that evolves: particles, bodies, cannons, targets, wind, turn.
     std::uint64_t hash() const;
@@ -237,6 +243,12 @@ class Match {
     void buildWorld();
     void rebuildStaticShapes();
     void fire();
+    /// The tick's rules: particles, coupling, rigid bodies, targets, the shell.
+    void stepRules();
+    /// Knocked-down target blocks and blobs score for whoever fired last (match_scoring.cpp).
+    void scoreToppled();
+    /// Reports the open shot's verdict now, if it has one.
+    void closeVerdict();
     void endShot(double closestMiss);
     void nextTurn();
     void finish();
@@ -283,6 +295,7 @@ class Match {
     ShellFlight flight_;
     GrabState grab_;
     int assisted_ = 0;
+    ShotJudge judge_;
 };
 
 /// Applies every command whose tick is the match's current tick, then steps; repeats

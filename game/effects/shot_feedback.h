@@ -1,12 +1,7 @@
-// Feedback on every shot, from the match's events and the shell's path: where it came
-// down and by how much it missed ("missed by 3.2 m, long"), the points it scored as
-// pop-ups, and a marker where it hit. A view of the match: it reads, never writes.
-//
-// Long or short is judged along the line of fire: the landing point is beyond the
-// nearest target (seen from the cannon) or before it. The distance is the shot's closest
-// miss as the match measured it (ShotOver's value: the closest the shell passed to a
-// target's rim); when the match has none (targets that are blocks or blobs), the distance
-// from the landing point to the nearest such target's outline.
+// Feedback on every shot, from the match's events and the shell's path: the shot's
+// verdict as the match gave it ("hit +150", "missed by 3.2 m, short": game/verdict.h),
+// a marker where a missing shot came down, and a marker where it hit. A view of the
+// match: it reads, never writes, and judges nothing itself.
 #pragma once
 
 #include "physics/vec2.h"
@@ -20,12 +15,10 @@ namespace game {
 class Match;
 struct GameEvent;
 
-/// The text a miss shows: "missed by 3.2 m, long" (one decimal; "short" when it came
-/// down before the target).
-std::string missText(double missMetres, bool longShot);
-
 struct ShotNote {
-    enum class Kind { Miss, Points, Hit } kind = Kind::Miss;
+    /// Miss: a marker where a shot that scored nothing came down; Verdict: the shot's
+    /// verdict (its text), until the next shot; Points and Hit: where it scored.
+    enum class Kind { Miss, Points, Hit, Verdict } kind = Kind::Miss;
     phys::Vec2 where; ///< m
     std::string text;
     double age = 0.0;  ///< s
@@ -50,19 +43,17 @@ class ShotFeedback {
     void reset();
 
     const std::vector<ShotNote>& notes() const { return notes_; }
+    /// The last shot's verdict while it is shown ("" when none is).
+    std::string verdict() const;
     /// Where the last shot came down (its last position in flight, or its burst).
     const std::vector<phys::Vec2>& landings() const { return landings_; }
 
   private:
-    void landed(const Match& match, double closestMiss);
-
     std::vector<ShotNote> notes_;
     std::vector<phys::Vec2> landings_;
     phys::Vec2 shellAt_;
     bool inFlight_ = false;
     bool scored_ = false;
-    int shooter_ = 0;
-    std::vector<TargetMark> aimedAt_; ///< the targets standing when the shot was fired
 };
 
 } // namespace game
