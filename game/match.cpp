@@ -538,14 +538,10 @@ void Match::stepRules() {
     pullGrabbed();
     rigid_->step(world_.def().tickSeconds);
     updateTargets();
-
     scoreToppled();
-
     stepFragments();
     if (shell_ == kNoParticle) {
-        if (!over_ && level_.mode == Mode::Practice) {
-            if (allTargetsDown() && shotsFired_ > 0) finish();
-        }
+        if (!over_ && level_.mode == Mode::Practice && allTargetsDown() && shotsFired_ > 0) finish();
         return;
     }
 

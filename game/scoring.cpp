@@ -109,7 +109,9 @@ ScoreBreakdown breakdownOf(const Match& m) {
         }
     }
     b.shotsLeft = m.cannons().empty() ? 0 : m.cannons()[0].shotsLeft;
-    if (m.over() && m.winner() == 0) b.bonus = kShotBonus * b.shotsLeft;
+    b.over = m.over();
+    b.allDown = m.over() && m.winner() == 0;
+    if (b.allDown) b.bonus = kShotBonus * b.shotsLeft;
     b.total = m.score();
     return b;
 }
@@ -133,11 +135,12 @@ std::vector<std::string> breakdownLines(const ScoreBreakdown& b, const LevelScor
                         (each * b.toppled == b.toppledPoints ? " x " + std::to_string(each) : "") +
                         " = " + std::to_string(b.toppledPoints));
     }
-    if (b.bonus > 0 || b.shotsLeft == 0)
+    if (b.allDown)
         lines.push_back("bonus: " + plural(b.shotsLeft, "shot", "shots") + " left x " +
                         std::to_string(kShotBonus) + " = " + std::to_string(b.bonus));
     else
-        lines.push_back("bonus: none until every target is down");
+        lines.push_back(b.over ? "bonus: none, not every target was down"
+                               : "bonus: none until every target is down");
     lines.push_back("total: " + std::to_string(b.total) + " of " + std::to_string(s.maxScore()));
     return lines;
 }

@@ -63,7 +63,9 @@ struct ScoreBreakdown {
     int toppled = 0;       ///< blocks and blobs knocked down
     int toppledPoints = 0;
     int shotsLeft = 0;
-    int bonus = 0;         ///< 0 until every target is down
+    bool over = false;     ///< the game is over
+    bool allDown = false;  ///< every target down and the game over: the bonus is counted
+    int bonus = 0;
     int total = 0;
 };
 

@@ -73,6 +73,7 @@ TEST(Scoring, TheBreakdownInWords) {
     b.toppled = 1;
     b.toppledPoints = 100;
     b.shotsLeft = 2;
+    b.allDown = true;
     b.bonus = 100;
     b.total = 427;
     const std::vector<std::string> expected{
@@ -89,6 +90,8 @@ TEST(Scoring, TheBreakdownInWords) {
     EXPECT_EQ(breakdownLines(running, handLevel()),
               (std::vector<std::string>{"1 disc hit: 90", "bonus: none until every target is down",
                                         "total: 90 of 550"}));
+    running.over = true;
+    EXPECT_EQ(breakdownLines(running, handLevel())[1], "bonus: none, not every target was down");
 }
 
 // A game played to its end: the breakdown adds up to the score, bonus included.

@@ -92,7 +92,7 @@ constexpr double kMargin = 12.0;
 constexpr double kScoreW = 292.0, kScoreH = 64.0, kDuelH = 70.0;
 constexpr double kWindW = 168.0, kWindH = 48.0;
 constexpr double kAimW = 312.0, kAimH = 92.0;
-constexpr double kCardW = 460.0, kCardH = 272.0, kDuelCardH = 150.0;
+constexpr double kCardW = 460.0, kDuelCardH = 150.0;
 constexpr double kLineH = 19.0, kSmall = 0.8; ///< a line of the card and the rules, design px
 
 void drawScore(const HudSpace& s, const Match& m) {
@@ -213,7 +213,8 @@ void drawTick(const HudSpace& s, double x, double y, bool earned) {
     s.r.line(s.w(x - 2, y + 5), s.w(x + 7, y - 6), Color::hex(0x4ade80), width);
 }
 
-/// What each star needs, a line each with a tick on the ones earned, from `y` down.
+/// What each star needs, a line each with a tick on the ones earned, from `y` down
+/// (3 lines).
 void drawStarNeeds(const HudSpace& s, const Match& m, double y) {
     const auto needs = game::starNeeds(game::levelScoring(m.level()));
     for (int k = 0; k < 3; ++k) {
@@ -224,9 +225,23 @@ void drawStarNeeds(const HudSpace& s, const Match& m, double y) {
     }
 }
 
+/// The breakdown's lines on the card: at most four.
+std::vector<std::string> cardLines(const Match& m) {
+    std::vector<std::string> lines = game::breakdownLines(game::breakdownOf(m), game::levelScoring(m.level()));
+    lines.resize(std::min<std::size_t>(lines.size(), 4));
+    return lines;
+}
+
+/// The card's height: the title and stars, the breakdown, the three stars' needs, and the
+/// line that says a learning aid was used.
+double cardHeight(const Match& m) {
+    if (m.level().mode == game::Mode::Duel) return kDuelCardH;
+    return 102 + kLineH * static_cast<double>(cardLines(m).size() + 3) + (m.assisted() ? 28 : 8);
+}
+
 void drawCard(Renderer2D& r, const HudSpace& s, const Match& m, const MatchViewOptions& o) {
     const bool duel = m.level().mode == game::Mode::Duel;
-    s.panel(0, 0, kCardW, duel ? kDuelCardH : kCardH, Color::hex(0x0e1420, 0.88f));
+    s.panel(0, 0, kCardW, cardHeight(m), Color::hex(0x0e1420, 0.88f));
     const double cx = kCardW / 2;
     if (duel) {
         const int win = m.winner();
@@ -244,14 +259,15 @@ void drawCard(Renderer2D& r, const HudSpace& s, const Match& m, const MatchViewO
         star(r, p, s.metres(20), k < m.stars() ? kGold : Color::hex(0x3a4150));
     }
     // The breakdown (targets, bonus, total), then what each star needs.
-    const game::LevelScoring rules = game::levelScoring(m.level());
-    const std::vector<std::string> lines = game::breakdownLines(game::breakdownOf(m), rules);
-    for (std::size_t i = 0; i < lines.size() && i < 4; ++i)
+    const std::vector<std::string> lines = cardLines(m);
+    for (std::size_t i = 0; i < lines.size(); ++i)
         s.text(20, 94 + kLineH * static_cast<double>(i), lines[i], i + 1 == lines.size() ? kGold : kText,
                static_cast<float>(kSmall));
-    drawStarNeeds(s, m, 176);
+    const double needsAt = 102 + kLineH * static_cast<double>(lines.size());
+    drawStarNeeds(s, m, needsAt);
     if (m.assisted())
-        s.text(cx, 240, "assisted (full preview or hint): no third star", kTextDim, 0.8f, 0.5f);
+        s.text(cx, needsAt + 3 * kLineH + 4, "assisted (full preview or hint): no third star", kTextDim, 0.8f,
+               0.5f);
 }
 
 /// The level's scoring before the first shot: what the targets are worth, the bonus, what
@@ -381,7 +397,6 @@ void Hud::drawRulesAndCard(Renderer2D& r, const Match& m, const MatchViewOptions
     auto placed = [&](const std::string& name, const std::vector<PixelRect>& candidates) {
         return place(name, candidates, o, u, c.width, c.height);
     };
-    const bool duel = m.level().mode == game::Mode::Duel;
     if (const std::vector<std::string> rules = rulesLines(m); !rules.empty()) {
         double w = 0.0;
         for (const std::string& line : rules) w = std::max(w, lineWidth(line, kSmall));
@@ -392,7 +407,7 @@ void Hud::drawRulesAndCard(Renderer2D& r, const Match& m, const MatchViewOptions
             drawRules(box(p), rules, w);
     }
     if (m.over() && o.endCard) {
-        const double ch = duel ? kDuelCardH : kCardH;
+        const double ch = cardHeight(m);
         if (auto p = placed("card", at({{W / 2 - kCardW / 2, H / 2 - ch / 2}, {W / 2 - kCardW / 2, mg + kWindH + 8},
                                         {W / 2 - kCardW / 2, H - mg - ch}, {mg, H / 2 - ch / 2},
                                         {W - mg - kCardW, H / 2 - ch / 2}, {mg, mg}, {W - mg - kCardW, mg},
