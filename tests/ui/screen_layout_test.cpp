@@ -82,15 +82,29 @@ std::uint64_t matchOverTick(const fs::path& file) {
     return player.match().over() ? player.match().tick() : 0;
 }
 
+/// A replay on a headless game screen of 1280 x 720 (`screen` null when no context could
+/// be made: the test has failed and says why).
+struct ReplayOnScreen {
+    std::unique_ptr<ui::GLContext> context;
+    std::unique_ptr<ui::GameScreen> screen;
+
+    explicit ReplayOnScreen(const fs::path& replay) {
+        std::string error;
+        context = ui::createHeadlessContext(1280, 720, ui::HeadlessBackend::Auto, error);
+        EXPECT_NE(context, nullptr) << error;
+        if (!context) return;
+        ui::GameScreenDef def;
+        def.replayFile = replay.string();
+        def.levelsFolder = (test_game::kRoot / "levels").string();
+        screen = std::make_unique<ui::GameScreen>(*context, nullptr, def);
+    }
+};
+
 /// The replay on a headless game screen, played to `seconds`, then three frames drawn.
 void expectClearAt(const fs::path& replay, double seconds, const std::string& what) {
-    std::string error;
-    auto context = ui::createHeadlessContext(1280, 720, ui::HeadlessBackend::Auto, error);
-    ASSERT_NE(context, nullptr) << error;
-    ui::GameScreenDef def;
-    def.replayFile = replay.string();
-    def.levelsFolder = (test_game::kRoot / "levels").string();
-    ui::GameScreen screen(*context, nullptr, def);
+    ReplayOnScreen on(replay);
+    ASSERT_NE(on.screen, nullptr);
+    ui::GameScreen& screen = *on.screen;
     screen.warmUp(seconds);
     for (int i = 0; i < 3; ++i) screen.frame(1.0 / 120.0);
     const ui::ScreenLayout& layout = screen.layout();
@@ -173,13 +187,9 @@ TEST(ScreenLayout, TheEndCardAndTheVerdictCoverNothing) {
         const fs::path file = test_game::kRoot / "tests" / "replays" / name;
         const std::uint64_t over = matchOverTick(file);
         ASSERT_GT(over, 0u) << name << " ends its match";
-        std::string error;
-        auto context = ui::createHeadlessContext(1280, 720, ui::HeadlessBackend::Auto, error);
-        ASSERT_NE(context, nullptr) << error;
-        ui::GameScreenDef def;
-        def.replayFile = file.string();
-        def.levelsFolder = (test_game::kRoot / "levels").string();
-        ui::GameScreen screen(*context, nullptr, def);
+        ReplayOnScreen on(file);
+        ASSERT_NE(on.screen, nullptr);
+        ui::GameScreen& screen = *on.screen;
         screen.warmUp(static_cast<double>(over + 60) / 120.0);
         test_game::tap(screen, SDLK_t);
         for (int i = 0; i < 3; ++i) screen.frame(1.0 / 120.0);
