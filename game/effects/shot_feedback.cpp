@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace game {
 
@@ -35,7 +34,6 @@ void ShotFeedback::reset() {
 }
 
 void ShotFeedback::event(const Match&, const GameEvent& e) {
-    char text[32];
     switch (e.kind) {
     case EventKind::Fired:
         inFlight_ = true;
@@ -51,14 +49,8 @@ void ShotFeedback::event(const Match&, const GameEvent& e) {
         break;
     case EventKind::TargetHit:
     case EventKind::Toppled:
-        scored_ = true;
-        std::snprintf(text, sizeof text, "+%.0f", e.value);
-        notes_.push_back({ShotNote::Kind::Points, e.where, text, 0.0, 1.5});
-        notes_.push_back({ShotNote::Kind::Hit, e.where, {}, 0.0, 0.8});
-        break;
     case EventKind::CannonHit:
         scored_ = true;
-        notes_.push_back({ShotNote::Kind::Points, e.where, "HIT!", 0.0, 1.5});
         notes_.push_back({ShotNote::Kind::Hit, e.where, {}, 0.0, 0.8});
         break;
     case EventKind::ShotOver:

@@ -17,8 +17,8 @@ struct GameEvent;
 
 struct ShotNote {
     /// Miss: a marker where a shot that scored nothing came down; Verdict: the shot's
-    /// verdict (its text), until the next shot; Points and Hit: where it scored.
-    enum class Kind { Miss, Points, Hit, Verdict } kind = Kind::Miss;
+    /// verdict (its text), until the next shot; Hit: a marker where it scored.
+    enum class Kind { Miss, Hit, Verdict } kind = Kind::Miss;
     phys::Vec2 where; ///< m
     std::string text;
     double age = 0.0;  ///< s
