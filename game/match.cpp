@@ -1,6 +1,7 @@
 #include "game/match.h"
 
 #include "game/material_names.h"
+#include "game/scoring.h"
 #include "game/shot_model.h"
 #include "game/weapons.h"
 #include "physics/ballistics.h"
@@ -30,6 +31,7 @@ const char* eventName(EventKind k) {
     case EventKind::Refused: return "refused";
     case EventKind::Unstable: return "unstable";
     case EventKind::Landed: return "landed";
+    case EventKind::Verdict: return "verdict";
     }
     return "?";
 }
@@ -38,9 +40,6 @@ namespace {
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr double kBarrelLength = 1.5;   // m, muzzle distance from the cannon's pivot
-constexpr int kTargetBlockPoints = 100; // knocking a target block off its place
-constexpr int kTargetBlobPoints = 150;
-constexpr int kShotBonus = 50;          // per shot left when every target is down
 
 /// A block's rigid material by name (the level check refused unknown names); density
 /// comes from the level.
@@ -224,6 +223,7 @@ void Match::addBlob(const Blob& b) {
 
 void Match::emit(EventKind kind, int player, Vec2 where, double value, std::string text) {
     events_.push_back({tick(), kind, player, where, value, std::move(text), {}, std::nullopt});
+    judge_.observe(*this, events_.back());
 }
 
 std::optional<ParticleId> Match::shell() const {
@@ -268,7 +268,13 @@ MaterialsInPlay Match::materialsInPlay() const {
     return in;
 }
 
+void Match::closeVerdict() {
+    if (std::optional<GameEvent> v = judge_.close(*this))
+        emit(v->kind, v->player, v->where, v->value, std::move(v->text));
+}
+
 void Match::fire() {
+    closeVerdict(); // the last shot's, if it has not settled yet
     stirred_ = true;
     CannonState& c = cannons_[static_cast<std::size_t>(current_)];
     shellAmmo_ = selectedAmmo();
@@ -329,7 +335,7 @@ void Match::scorePasses(bool shotEnding) {
         t.hit = true;
         const double r = shellAmmo_.preset.diameter * 0.5;
         const double closeness = 1.0 - t.closestInside / (t.def.radius + r);
-        const int points = static_cast<int>(std::lround(t.def.points * (0.5 + 0.5 * closeness)));
+        const int points = discPoints(t.def.points, closeness);
         shooter.score += points;
         emit(EventKind::TargetHit, current_, t.position, points);
     }
@@ -341,10 +347,7 @@ void Match::endShot(double closestMiss) {
     if (world_.particles.alive(shell_)) world_.particles.remove(shell_);
     shell_ = kNoParticle;
     emit(EventKind::ShotOver, current_, {}, std::isfinite(closestMiss) ? closestMiss : -1.0);
-    bool allDown = true;
-    for (const auto& t : targets_) allDown = allDown && t.hit;
-    for (const auto& b : blocks_) allDown = allDown && (!b.def.target || b.toppled);
-    for (const auto& b : blobs_) allDown = allDown && (!b.def.target || b.toppled);
+    const bool allDown = allTargetsDown();
     if (level_.mode == Mode::Duel) {
         int alive = 0, shots = 0;
         for (const auto& k : cannons_) {
@@ -391,19 +394,24 @@ void Match::finish() {
         }
         winner_ = tie ? -1 : best;
     } else {
-        bool allDown = true;
-        for (const auto& t : targets_) allDown = allDown && t.hit;
-        for (const auto& b : blocks_) allDown = allDown && (!b.def.target || b.toppled);
-        for (const auto& b : blobs_) allDown = allDown && (!b.def.target || b.toppled);
+        const bool allDown = allTargetsDown();
         if (allDown) cannons_[0].score += kShotBonus * cannons_[0].shotsLeft;
         winner_ = allDown ? 0 : -1;
     }
+    closeVerdict(); // the last shot's, before the match's end
     emit(EventKind::MatchOver, winner_, {}, score());
 }
 
-// One tick, as named phases: the physics, what it knocked over, the fragments, then the
-// shell's own story (its passes, a duel hit, its contacts, its landing, its weapon, its end).
+// One tick: the rules, then the shot's verdict once what it set moving has settled.
 void Match::step() {
+    stepRules();
+    if (std::optional<GameEvent> v = judge_.afterTick(*this))
+        emit(v->kind, v->player, v->where, v->value, std::move(v->text));
+}
+
+// The rules as named phases: the physics, what it knocked over, the fragments, then the
+// shell's own story (its passes, a duel hit, its contacts, its landing, its weapon, its end).
+void Match::stepRules() {
     if (!stepPhysics()) return;
     scoreToppled();
     stepFragments();
@@ -431,48 +439,8 @@ bool Match::stepPhysics() {
     return true;
 }
 
-void Match::scoreToppled() {
-    CannonState& shooter = cannons_[static_cast<std::size_t>(current_)];
-    // Structures knocked off their place score for whoever fired last.
-    for (BlockState& b : blocks_) {
-        if (!b.def.target || b.toppled || !rigid_->alive(b.body)) continue;
-        const RigidBodyState s = rigid_->state(b.body);
-        if (shotsFired_ == 0) {
-            // Settling before the first shot is not toppling: follow the block until then.
-            b.def.position = s.position;
-            b.def.angleDeg = s.angle / kDegToRad;
-            continue;
-        }
-        const double moved = length(s.position - b.def.position);
-        const double tilt = std::abs(std::remainder(s.angle - b.def.angleDeg * kDegToRad, 2.0 * std::numbers::pi));
-        if (moved > std::max(b.def.size.x, b.def.size.y) || tilt > 0.25 * std::numbers::pi) {
-            b.toppled = true;
-            shooter.score += kTargetBlockPoints;
-            emit(EventKind::Toppled, current_, s.position, kTargetBlockPoints);
-        }
-    }
-    for (BlobState& b : blobs_) {
-        if (!b.def.target || b.toppled) continue;
-        const Vec2 p = world_.particles.position(b.center);
-        if (shotsFired_ == 0) { // settling before the first shot is not toppling
-            b.def.center = p;
-            continue;
-        }
-        if (length(p - b.def.center) > b.def.radius) {
-            b.toppled = true;
-            shooter.score += kTargetBlobPoints;
-            emit(EventKind::Toppled, current_, p, kTargetBlobPoints);
-        }
-    }
-}
-
 void Match::finishWhenAllDown() {
-    if (over_ || level_.mode != Mode::Practice) return;
-    bool allDown = true;
-    for (const auto& t : targets_) allDown = allDown && t.hit;
-    for (const auto& b : blocks_) allDown = allDown && (!b.def.target || b.toppled);
-    for (const auto& b : blobs_) allDown = allDown && (!b.def.target || b.toppled);
-    if (allDown && shotsFired_ > 0) finish();
+    if (!over_ && level_.mode == Mode::Practice && allTargetsDown() && shotsFired_ > 0) finish();
 }
 
 void Match::stepShell() {
@@ -546,38 +514,6 @@ bool Match::shellIsDone(Vec2 p) const {
     const bool resting = !shellHeld() && ((world_.particles.flags[shell_] & kSleeping) ||
                          (flight > 1.0 && length(world_.particles.velocity(shell_)) < 0.05));
     return outside || resting || flight > kMaxFlightSeconds || !std::isfinite(p.x) || !std::isfinite(p.y);
-}
-
-int Match::score() const {
-    int s = 0;
-    for (const auto& c : cannons_) s += c.score;
-    return s;
-}
-
-int Match::maxScore() const {
-    int s = 0, things = 0;
-    for (const auto& t : targets_) {
-        s += t.def.points;
-        ++things;
-    }
-    for (const auto& b : blocks_)
-        if (b.def.target) {
-            s += kTargetBlockPoints;
-            ++things;
-        }
-    for (const auto& b : blobs_)
-        if (b.def.target) {
-            s += kTargetBlobPoints;
-            ++things;
-        }
-    return s + kShotBonus * std::max(0, level_.shots - things);
-}
-
-int Match::stars() const {
-    if (level_.mode != Mode::Practice || winner_ != 0) return 0;
-    const double f = static_cast<double>(score()) / std::max(1, maxScore());
-    const int earned = f >= 0.85 ? 3 : f >= 0.6 ? 2 : 1;
-    return assisted_ ? std::min(earned, kAssistedMaxStars) : earned;
 }
 
 std::uint64_t Match::gameHash() const {

@@ -18,6 +18,7 @@
 #include "game/level.h"
 #include "game/shell_flight.h"
 #include "game/terrain.h"
+#include "game/verdict.h"
 #include "physics/coupling.h"
 #include "physics/guard.h"
 #include "physics/rigid/rigid_world.h"
@@ -49,6 +50,8 @@ enum class EventKind {
     Unstable,    ///< the guard removed particles that blew up (value: how many; text: the cause)
     Landed,      ///< the shell's first contact with anything (where: its centre then; value:
                  ///< closing speed; text: "shape", "body" or "particle"; closedFormErrorM)
+    Verdict,     ///< what a shot did, once (player: who fired; value: its points, 0 in a duel;
+                 ///< text: "hit +150", "missed by 4.0 m, short"; game/verdict.h)
 };
 const char* eventName(EventKind k);
 
@@ -141,7 +144,7 @@ class Match {
     /// it was refused (also reported as a Refused event); a refused command changes
     /// nothing.
     std::string apply(const Command& command);
-    /// Advances one tick.
+    /// Advances one tick (and gives the last shot's verdict once it has settled).
     void step();
 
     // --- state ---------------------------------------------------------------------
@@ -179,6 +182,9 @@ class Match {
     int score() const;
     int stars() const;
     int maxScore() const;
+    /// Every target disc hit and every target block and blob knocked down (true for a
+    /// level with none).
+    bool allTargetsDown() const;
     const std::vector<GameEvent>& events() const { return events_; }
     /// Hash of everything that evolves: particles, bodies, cannons, targets, wind, turn.
     std::uint64_t hash() const;
@@ -250,6 +256,10 @@ class Match {
     /// The shell's first contact this tick (it is at `shellNow`): a Landed event with its
     /// closed-form error (game/landing.cpp).
     void reportLanding(phys::Vec2 shellNow);
+    /// The tick's rules: particles, coupling, rigid bodies, targets, the shell.
+    void stepRules();
+    /// Reports the open shot's verdict now, if it has one.
+    void closeVerdict();
     void endShot(double closestMiss);
     void nextTurn();
     void finish();
@@ -264,7 +274,8 @@ class Match {
     /// The particles, the coupling and the rigid bodies; false when the guard removed the
     /// shell (the shot is over).
     bool stepPhysics();
-    /// Target blocks and blobs knocked off their place score for whoever fired last.
+    /// Target blocks and blobs knocked off their place score for whoever fired last
+    /// (match_scoring.cpp).
     void scoreToppled();
     /// With no shell in flight, a practice level whose targets are all down is won.
     void finishWhenAllDown();
@@ -327,6 +338,7 @@ class Match {
     ShellFlight flight_;
     GrabState grab_;
     int assisted_ = 0;
+    ShotJudge judge_;
 };
 
 /// Applies every command whose tick is the match's current tick, then steps; repeats

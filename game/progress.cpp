@@ -35,7 +35,9 @@ bool Progress::record(const std::string& levelFile, int score, int stars, bool w
     r.bestScore = std::max(r.bestScore, score);
     r.stars = std::max(r.stars, stars);
     r.won = r.won || won;
-    return better;
+    // A game that earned nothing (out of shots, no star; a duel lost) is no best to
+    // announce, even the first time.
+    return better && (stars > 0 || won);
 }
 
 const LevelResult* Progress::result(const std::string& levelFile) const {

@@ -29,7 +29,7 @@ struct Progress {
     std::set<std::string> lessonsSeen;
 
     /// Records a finished match; returns true when it beat the stored best (as many stars
-    /// without an aid as before with one counts).
+    /// without an aid as before with one counts) and earned something: a star or a win.
     bool record(const std::string& levelFile, int score, int stars, bool won,
                 bool assisted = false);
     const LevelResult* result(const std::string& levelFile) const;

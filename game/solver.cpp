@@ -2,6 +2,7 @@
 
 #include "game/ai.h"
 #include "game/match.h"
+#include "game/scoring.h"
 #include "game/weapons.h"
 #include "physics/ballistics.h"
 
@@ -53,20 +54,6 @@ bool hasStructures(const Level& l) {
     return false;
 }
 
-/// Nothing that could still fall over is moving: every block and target blob at rest
-/// (below 5 cm/s and 0.05 rad/s).
-bool still(const Match& m) {
-    for (const auto& b : m.blocks()) {
-        if (!m.rigid().alive(b.body)) continue;
-        const phys::RigidBodyState s = m.rigid().state(b.body);
-        if (length(s.linearVelocity) > 0.05 || std::abs(s.angularVelocity) > 0.05) return false;
-    }
-    for (const auto& b : m.blobs())
-        if (b.def.target && !b.toppled && length(m.world().particles.velocity(b.center)) > 0.05)
-            return false;
-    return true;
-}
-
 std::vector<Command> shotCommands(const Shot& s, std::uint64_t tick) {
     std::vector<Command> out(4);
     out[0].kind = CommandKind::Select;
@@ -103,7 +90,7 @@ Outcome play(const Level& level, const std::vector<Command>& commands, long& eva
             if (!m.shell()) {
                 if (commands.empty()) break; // the first shot goes at once
                 if (quietSince == 0) quietSince = m.tick();
-                if (!settle || m.tick() >= quietSince + kSettleTicks || still(m)) break;
+                if (!settle || m.tick() >= quietSince + kSettleTicks || structuresAtRest(m)) break;
             } else {
                 quietSince = 0;
             }
@@ -157,10 +144,10 @@ class Search {
             ++r.shots;
         }
         const Outcome final = play(level_, commands_, evaluations_);
-        Match probe(level_);
         r.stars = final.stars;
         r.score = final.score;
-        r.maxScore = probe.maxScore();
+        r.maxScore = levelScoring(level_).maxScore();
+        r.starScores = levelScoring(level_).starScores();
         r.commands = commands_;
         r.ticks = final.endTick + 1;
         r.evaluations = evaluations_;

@@ -11,6 +11,7 @@
 #include "game/level.h"
 #include "game/replay.h"
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,7 +22,8 @@ struct SolveResult {
     bool practice = true; ///< false for duels and sandboxes: nothing to score
     int stars = 0;
     int score = 0;
-    int maxScore = 0;
+    int maxScore = 0;      ///< the largest score the rules allow (game/scoring.h)
+    std::array<int, 3> starScores{}; ///< the least score of one, two and three stars
     int shots = 0;
     std::vector<Command> commands;
     std::uint64_t ticks = 0; ///< length of the game the commands play

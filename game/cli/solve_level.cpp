@@ -44,6 +44,19 @@ int solveDuel(const std::string& file, const Level& level, bool json, long long 
     return playable || require == 0 ? kOk : kCheckFailed;
 }
 
+/// The rules' own numbers hold for the game found: no score above the largest the rules
+/// allow, the stars' scores ascending up to it. "" when they do, else what does not.
+std::string rulesBroken(const SolveResult& r) {
+    const auto& s = r.starScores;
+    if (r.score > r.maxScore)
+        return "score " + std::to_string(r.score) + " above the largest the rules allow, " +
+               std::to_string(r.maxScore);
+    if (!(s[0] <= s[1] && s[1] <= s[2] && s[2] <= r.maxScore))
+        return "the stars' scores " + std::to_string(s[0]) + ", " + std::to_string(s[1]) + ", " +
+               std::to_string(s[2]) + " are not ascending up to " + std::to_string(r.maxScore);
+    return "";
+}
+
 } // namespace
 
 int runSolveLevel(const Args& args, std::ostream& out) {
@@ -79,6 +92,7 @@ int runSolveLevel(const Args& args, std::ostream& out) {
                          {"max_score", r.maxScore},
                          {"shots", r.shots},
                          {"commands", nlohmann::json::parse(commandsToJson(r.commands))}};
+        if (r.practice) j["star_scores"] = r.starScores;
         if (!r.practice)
             j["note"] = std::string("a ") + modeName(level.mode) + " has no stars to earn";
         out << j.dump() << "\n";
@@ -89,13 +103,19 @@ int runSolveLevel(const Args& args, std::ostream& out) {
     } else {
         char line[240];
         std::snprintf(line, sizeof line,
-                      "%s: %d star%s, score %d of %d, %d shot%s (%ld trial games)\n", file.c_str(),
-                      r.stars, r.stars == 1 ? "" : "s", r.score, r.maxScore, r.shots,
+                      "%s: %d star%s, score %d of %d (stars at %d, %d, %d), %d shot%s (%ld trial "
+                      "games)\n",
+                      file.c_str(), r.stars, r.stars == 1 ? "" : "s", r.score, r.maxScore,
+                      r.starScores[0], r.starScores[1], r.starScores[2], r.shots,
                       r.shots == 1 ? "" : "s", r.evaluations);
         out << line;
         for (std::size_t i = 0; i + 3 < r.commands.size(); i += 4)
             out << describeShot(r.commands, i);
         if (record) out << "replay written to " << *record << "\n";
+    }
+    if (const std::string broken = r.practice ? rulesBroken(r) : ""; !broken.empty()) {
+        out << file << ": the scoring rules do not hold: " << broken << "\n";
+        return kCheckFailed;
     }
     if (r.practice && r.stars < require) {
         if (!json)

@@ -45,7 +45,9 @@ events, the score and the final state hash.
                      the same file for the same run
   --autoplay         the computer plays every cannon (at --difficulty)
   --json             {"ticks":n,"final_hash":"hex","score":..,"shots":n,"over":b,
-                      "winner":i,"events":[...],"sim_ms":..,"render_ms":..}, with
+                      "winner":i,"events":[...],"sim_ms":..,"render_ms":..}; each
+                     shot's verdict is an event: {"kind":"verdict","tick":t,"player":p,
+                     "value":points (0 in a duel),"text":"hit +150"}; with
                      --video also "video":{"file":..,"codec":..,"frames":n,"seconds":..},
                      --audio also "audio":{"file":..,"frames":n,"seconds":..}
                      each event: {"tick","kind","player","where"?,"value","text"?};
@@ -222,19 +224,24 @@ Searches aims, powers, weapons and the order of shots through the same simulatio
 as the game, shot by shot: candidates from the firing solution (both arcs, at speeds
 from the least that reaches up) and the computer's trial-shot aim, a coarse grid of
 angles and speeds when none scores, then a pattern search that halves its steps.
-Prints the best result (stars, score, shots) and the shots that achieve it.
+Prints the best result (stars, score, shots) and the shots that achieve it, with the
+level's scoring: the largest score its rules allow (every bonus included) and the least
+score of one, two and three stars. A score above that largest is a fault of the rules:
+it is said and exits 1.
 A duel has no stars: it is checked instead, one shot from each side must be able to
 hit the other (the solver's shot at the start, the test `generate` puts its duel maps
 to). A sandbox has nothing to solve: it says so and exits 0.
 
-  --json             {"stars":s,"score":n,"max_score":m,"shots":k,"commands":[...]}
+  --json             {"stars":s,"score":n,"max_score":m,"star_scores":[s1,s2,s3],
+                      "shots":k,"commands":[...]}
   --record FILE      save the solved game as a replay (replay verify accepts it)
   --require-stars N  exit 1 when a practice level reaches fewer than N stars, or (N >= 1)
                      when a side of a duel cannot hit the other
                      (a duel's --json: {"mode":"duel","hits":[b,b],"playable":b})
 
-Exit code: 0 ok, 1 fewer stars than --require-stars, 2 bad input (a --record FILE that
-cannot be written included), 3 the replay could not be written after the search.
+Exit code: 0 ok, 1 fewer stars than --require-stars (or a score above the largest),
+2 bad input (a --record FILE that cannot be written included), 3 the replay could not
+be written after the search.
 )",
      {},
      runSolveLevel},

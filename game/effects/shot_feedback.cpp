@@ -4,18 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace game {
 
 using phys::Vec2;
-
-std::string missText(double missMetres, bool longShot) {
-    char text[64];
-    std::snprintf(text, sizeof text, "missed by %.1f m, %s", missMetres,
-                  longShot ? "long" : "short");
-    return text;
-}
 
 std::vector<TargetMark> standingTargets(const Match& m) {
     std::vector<TargetMark> out;
@@ -42,19 +34,17 @@ void ShotFeedback::reset() {
 }
 
 void ShotFeedback::event(const Match& m, const GameEvent& e) {
-    char text[32];
     switch (e.kind) {
     case EventKind::Fired:
         inFlight_ = true;
         scored_ = false;
-        shooter_ = e.player;
         shellAt_ = e.where;
-        aimedAt_ = standingTargets(m);
         model_ = e.model;
         exact_.reset();
         // The last shot's notes give way to the new shot's.
         std::erase_if(notes_, [](const ShotNote& n) {
-            return n.kind == ShotNote::Kind::Miss || n.kind == ShotNote::Kind::Exact;
+            return n.kind == ShotNote::Kind::Miss || n.kind == ShotNote::Kind::Verdict ||
+                   n.kind == ShotNote::Kind::Exact;
         });
         break;
     case EventKind::Landed:
@@ -66,41 +56,27 @@ void ShotFeedback::event(const Match& m, const GameEvent& e) {
         break;
     case EventKind::TargetHit:
     case EventKind::Toppled:
-        scored_ = true;
-        std::snprintf(text, sizeof text, "+%.0f", e.value);
-        notes_.push_back({ShotNote::Kind::Points, e.where, text, 0.0, 1.5});
-        notes_.push_back({ShotNote::Kind::Hit, e.where, {}, 0.0, 0.8});
-        break;
     case EventKind::CannonHit:
         scored_ = true;
-        notes_.push_back({ShotNote::Kind::Points, e.where, "HIT!", 0.0, 1.5});
         notes_.push_back({ShotNote::Kind::Hit, e.where, {}, 0.0, 0.8});
         break;
     case EventKind::ShotOver:
-        if (inFlight_) landed(m, e.value);
+        if (inFlight_) landings_.assign(1, shellAt_);
         inFlight_ = false;
+        break;
+    case EventKind::Verdict:
+        notes_.push_back({ShotNote::Kind::Verdict, e.where, e.text, 0.0, 6.0});
+        if (!scored_) notes_.push_back({ShotNote::Kind::Miss, shellAt_, {}, 0.0, 6.0});
         break;
     default:
         break;
     }
 }
 
-void ShotFeedback::landed(const Match& m, double closestMiss) {
-    landings_.assign(1, shellAt_);
-    if (scored_ || aimedAt_.empty()) return;
-    // The nearest target to where the shell came down, of those standing when it left.
-    const TargetMark* nearest = nullptr;
-    double best = INFINITY;
-    for (const TargetMark& t : aimedAt_) {
-        const double d = length(shellAt_ - t.where) - t.reach;
-        if (d < best) best = d, nearest = &t;
-    }
-    const double miss = closestMiss >= 0.0 ? closestMiss : std::max(0.0, best);
-    // Long: beyond the target seen from the cannon that fired.
-    const Vec2 cannon = m.cannons()[static_cast<std::size_t>(shooter_)].def.position;
-    const double side = nearest->where.x >= cannon.x ? 1.0 : -1.0;
-    const bool longShot = (shellAt_.x - nearest->where.x) * side > 0.0;
-    notes_.push_back({ShotNote::Kind::Miss, shellAt_, missText(miss, longShot), 0.0, 6.0});
+std::string ShotFeedback::verdict() const {
+    for (auto n = notes_.rbegin(); n != notes_.rend(); ++n)
+        if (n->kind == ShotNote::Kind::Verdict) return n->text;
+    return "";
 }
 
 void ShotFeedback::tick(const Match& m, double dt) {

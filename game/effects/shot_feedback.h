@@ -1,12 +1,7 @@
-// Feedback on every shot, from the match's events and the shell's path: where it came
-// down and by how much it missed ("missed by 3.2 m, long"), the points it scored as
-// pop-ups, and a marker where it hit. A view of the match: it reads, never writes.
-//
-// Long or short is judged along the line of fire: the landing point is beyond the
-// nearest target (seen from the cannon) or before it. The distance is the shot's closest
-// miss as the match measured it (ShotOver's value: the closest the shell passed to a
-// target's rim); when the match has none (targets that are blocks or blobs), the distance
-// from the landing point to the nearest such target's outline.
+// Feedback on every shot, from the match's events and the shell's path: the shot's
+// verdict as the match gave it ("hit +150", "missed by 3.2 m, short": game/verdict.h),
+// a marker where a missing shot came down, and a marker where it hit. A view of the
+// match: it reads, never writes, and judges nothing itself.
 #pragma once
 
 #include "game/effects/exact_path.h"
@@ -23,13 +18,11 @@ namespace game {
 class Match;
 struct GameEvent;
 
-/// The text a miss shows: "missed by 3.2 m, long" (one decimal; "short" when it came
-/// down before the target).
-std::string missText(double missMetres, bool longShot);
-
 struct ShotNote {
-    /// Miss: how far from the target; Exact: how far from the exact path (at its landing).
-    enum class Kind { Miss, Points, Hit, Exact } kind = Kind::Miss;
+    /// Miss: a marker where a shot that scored nothing came down; Verdict: the shot's
+    /// verdict (its text), until the next shot; Hit: a marker where it scored; Exact: how
+    /// far from the exact path an integrator's shot landed (at the exact landing).
+    enum class Kind { Miss, Hit, Verdict, Exact } kind = Kind::Miss;
     phys::Vec2 where; ///< m
     std::string text;
     double age = 0.0;  ///< s
@@ -54,22 +47,20 @@ class ShotFeedback {
     void reset();
 
     const std::vector<ShotNote>& notes() const { return notes_; }
+    /// The last shot's verdict while it is shown ("" when none is).
+    std::string verdict() const;
     /// Where the last shot came down (its last position in flight, or its burst).
     const std::vector<phys::Vec2>& landings() const { return landings_; }
     /// The last shot's exact path, when an integrator flew it where a closed form exists.
     const std::optional<ExactPath>& exactPath() const { return exact_; }
 
   private:
-    void landed(const Match& match, double closestMiss);
-
     std::vector<ShotNote> notes_;
     std::vector<phys::Vec2> landings_;
     phys::Vec2 shellAt_;
     bool inFlight_ = false;
     bool scored_ = false;
-    int shooter_ = 0;
-    std::vector<TargetMark> aimedAt_; ///< the targets standing when the shot was fired
-    std::string model_;               ///< what flies the shot (the `fired` event's model)
+    std::string model_; ///< what flies the shot (the `fired` event's model)
     std::optional<ExactPath> exact_;
 };
 

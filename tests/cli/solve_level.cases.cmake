@@ -36,7 +36,7 @@ foreach(level ${SHIPPED_LEVELS})
            WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
   set_tests_properties(solve_level.${name} PROPERTIES TIMEOUT 170)
 endforeach()
-cli_test(solve_level_json 0 "^\\{\"commands\":\\[\\{.*\"cmd\":\"fire\".*\"max_score\":300,.*\"shots\":1,\"stars\":3\\}"
+cli_test(solve_level_json 0 "^\\{\"commands\":\\[\\{.*\"cmd\":\"fire\".*\"max_score\":300,.*\"shots\":1,\"star_scores\":\\[50,180,255\\],\"stars\":3\\}"
          "solve-level;--json;${PROJECT_SOURCE_DIR}/levels/09_tunnelling.json")
 cli_test(solve_level_unwinnable 1 "0 stars, score 0 of 150.*fewer than the 3 required"
          "solve-level;${PROJECT_SOURCE_DIR}/tests/data/levels_unwinnable/boxed_target.json;--require-stars;3")

@@ -48,6 +48,17 @@ TEST(Progress, RoundTrip) {
     fs::remove_all(dir);
 }
 
+// Out of shots with no star, or a duel lost, is never a new best: not the first time,
+// not with a higher score than before; the next game that earns a star is.
+TEST(Progress, NothingEarnedIsNoNewBest) {
+    Progress p;
+    EXPECT_FALSE(p.record("levels/25_tower.json", 200, 0, false));
+    EXPECT_FALSE(p.record("levels/25_tower.json", 300, 0, false));
+    EXPECT_EQ(p.result("25_tower.json")->bestScore, 300);
+    EXPECT_FALSE(p.record("levels/10_duel.json", 0, 0, false));
+    EXPECT_TRUE(p.record("levels/25_tower.json", 250, 1, true));
+}
+
 // The best result remembers whether it was assisted (the level select says so); an
 // unassisted result as good clears the mark, as do more stars without help.
 TEST(Progress, AssistedMarkFollowsTheBestResult) {

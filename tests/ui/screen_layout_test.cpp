@@ -73,15 +73,38 @@ std::vector<Shot> shotsOf(const fs::path& file) {
     return shots;
 }
 
+/// The tick a replay's match ends at (0 if it does not).
+std::uint64_t matchOverTick(const fs::path& file) {
+    game::Replay replay = game::loadReplay(file.string());
+    const game::Level level = game::levelForReplay(file.string(), replay);
+    game::ReplayPlayer player(level, std::move(replay));
+    while (player.tick() < player.lastTick() && !player.match().over()) player.step();
+    return player.match().over() ? player.match().tick() : 0;
+}
+
+/// A replay on a headless game screen of 1280 x 720 (`screen` null when no context could
+/// be made: the test has failed and says why).
+struct ReplayOnScreen {
+    std::unique_ptr<ui::GLContext> context;
+    std::unique_ptr<ui::GameScreen> screen;
+
+    explicit ReplayOnScreen(const fs::path& replay) {
+        std::string error;
+        context = ui::createHeadlessContext(1280, 720, ui::HeadlessBackend::Auto, error);
+        EXPECT_NE(context, nullptr) << error;
+        if (!context) return;
+        ui::GameScreenDef def;
+        def.replayFile = replay.string();
+        def.levelsFolder = (test_game::kRoot / "levels").string();
+        screen = std::make_unique<ui::GameScreen>(*context, nullptr, def);
+    }
+};
+
 /// The replay on a headless game screen, played to `seconds`, then three frames drawn.
 void expectClearAt(const fs::path& replay, double seconds, const std::string& what) {
-    std::string error;
-    auto context = ui::createHeadlessContext(1280, 720, ui::HeadlessBackend::Auto, error);
-    ASSERT_NE(context, nullptr) << error;
-    ui::GameScreenDef def;
-    def.replayFile = replay.string();
-    def.levelsFolder = (test_game::kRoot / "levels").string();
-    ui::GameScreen screen(*context, nullptr, def);
+    ReplayOnScreen on(replay);
+    ASSERT_NE(on.screen, nullptr);
+    ui::GameScreen& screen = *on.screen;
     screen.warmUp(seconds);
     for (int i = 0; i < 3; ++i) screen.frame(1.0 / 120.0);
     const ui::ScreenLayout& layout = screen.layout();
@@ -153,6 +176,30 @@ TEST(ScreenLayout, ShotsInFlightAndTheirImpactsAreNotCovered) {
 
 TEST(ScreenLayout, DuelShotsInFlightAndTheirImpactsAreNotCovered) {
     expectShotsClear("10_duel.replay.json", 3);
+}
+
+// A game's end, played on from its replay (taken over at the end, as T does): the card
+// (the breakdown and each star's needs) and the last shot's verdict are drawn, and stand
+// clear of every target, cannon and impact.
+TEST(ScreenLayout, TheEndCardAndTheVerdictCoverNothing) {
+    for (const char* name : {"01_earth_basics.replay.json", "05_castle.replay.json",
+                             "06_rope_bridge.replay.json", "07_soft_blob.replay.json"}) {
+        const fs::path file = test_game::kRoot / "tests" / "replays" / name;
+        const std::uint64_t over = matchOverTick(file);
+        ASSERT_GT(over, 0u) << name << " ends its match";
+        ReplayOnScreen on(file);
+        ASSERT_NE(on.screen, nullptr);
+        ui::GameScreen& screen = *on.screen;
+        screen.warmUp(static_cast<double>(over + 60) / 120.0);
+        test_game::tap(screen, SDLK_t);
+        for (int i = 0; i < 3; ++i) screen.frame(1.0 / 120.0);
+        const ui::ScreenLayout& layout = screen.layout();
+        std::vector<std::string> drawn;
+        for (const ui::LayoutOverlay& o : layout.overlays) drawn.push_back(o.name);
+        EXPECT_NE(std::find(drawn.begin(), drawn.end(), "card"), drawn.end()) << name;
+        EXPECT_NE(std::find(drawn.begin(), drawn.end(), "hud.verdict"), drawn.end()) << name;
+        EXPECT_TRUE(ui::coverings(layout).empty()) << name << ":" << coveringsOf(layout);
+    }
 }
 
 TEST(ScreenLayout, TheTurnsControlsFitWhatTheyHold) {

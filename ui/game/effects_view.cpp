@@ -119,7 +119,7 @@ void drawShotFeedback(Renderer2D& r, const Effects& fx) {
             // one place that covers nothing.
             r.strokeCircle(n.where, r.camera().metres(6.0), kMissText.withAlpha(0.8f * fade), 2.0f);
             break;
-        case game::ShotNote::Kind::Points:
+        case game::ShotNote::Kind::Verdict: // its text is the HUD's (hud.cpp)
             break;
         case game::ShotNote::Kind::Exact:
             // The exact path beside the flown one's trail, and where it met the ground; the

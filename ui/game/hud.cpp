@@ -4,6 +4,7 @@
 //   placing     Hud::place: a box's places in order, clear of the layout's objects
 #include "ui/game/hud.h"
 
+#include "game/scoring.h"
 #include "ui/game/match_view.h"
 #include "ui/game/palette.h"
 #include "ui/game/screen_layout.h"
@@ -92,7 +93,8 @@ constexpr double kMargin = 12.0;
 constexpr double kScoreW = 292.0, kScoreH = 64.0, kDuelH = 70.0;
 constexpr double kWindW = 168.0, kWindH = 48.0;
 constexpr double kAimW = 312.0, kAimH = 92.0;
-constexpr double kCardW = 440.0, kCardH = 196.0;
+constexpr double kCardW = 460.0, kDuelCardH = 150.0;
+constexpr double kLineH = 19.0, kSmall = 0.8; ///< a line of the card and the rules, design px
 
 void drawScore(const HudSpace& s, const Match& m) {
     const game::CannonState& cs = m.cannon();
@@ -204,10 +206,48 @@ void drawLine(const HudSpace& s, const std::string& text, Color colour, double s
     s.text(w / 2, 5, text, colour, static_cast<float>(scale), 0.5f);
 }
 
+/// A tick (earned) or an empty ring (not yet), centred at (x, y) in the box.
+void drawTick(const HudSpace& s, double x, double y, bool earned) {
+    if (!earned) {
+        s.r.strokeCircle(s.w(x, y), s.metres(6), kTextDim, static_cast<float>(1.5 * s.u));
+        return;
+    }
+    const auto width = static_cast<float>(3.0 * s.u);
+    s.r.line(s.w(x - 6, y), s.w(x - 2, y + 5), Color::hex(0x4ade80), width);
+    s.r.line(s.w(x - 2, y + 5), s.w(x + 7, y - 6), Color::hex(0x4ade80), width);
+}
+
+/// What each star needs, a line each with a tick on the ones earned, from `y` down
+/// (3 lines).
+void drawStarNeeds(const HudSpace& s, const Match& m, double y) {
+    const auto needs = game::starNeeds(game::levelScoring(m.level()));
+    for (int k = 0; k < 3; ++k) {
+        const double yy = y + kLineH * k;
+        drawTick(s, 26, yy + 8, k < m.stars());
+        s.text(40, yy, std::to_string(k + 1) + (k ? " stars: " : " star: ") + needs[static_cast<std::size_t>(k)],
+               k < m.stars() ? kText : kTextDim, static_cast<float>(kSmall));
+    }
+}
+
+/// The breakdown's lines on the card: at most four.
+std::vector<std::string> cardLines(const Match& m) {
+    std::vector<std::string> lines = game::breakdownLines(game::breakdownOf(m), game::levelScoring(m.level()));
+    lines.resize(std::min<std::size_t>(lines.size(), 4));
+    return lines;
+}
+
+/// The card's height: the title and stars, the breakdown, the three stars' needs, and the
+/// line that says a learning aid was used.
+double cardHeight(const Match& m) {
+    if (m.level().mode == game::Mode::Duel) return kDuelCardH;
+    return 102 + kLineH * static_cast<double>(cardLines(m).size() + 3) + (m.assisted() ? 28 : 8);
+}
+
 void drawCard(Renderer2D& r, const HudSpace& s, const Match& m, const MatchViewOptions& o) {
-    s.panel(0, 0, kCardW, kCardH, Color::hex(0x0e1420, 0.88f));
+    const bool duel = m.level().mode == game::Mode::Duel;
+    s.panel(0, 0, kCardW, cardHeight(m), Color::hex(0x0e1420, 0.88f));
     const double cx = kCardW / 2;
-    if (m.level().mode == game::Mode::Duel) {
+    if (duel) {
         const int win = m.winner();
         const std::string who = win < 0 ? std::string("Draw") : playerName(m, o, win) + " wins!";
         s.text(cx, 22, who, win < 0 ? kText : team(win), 1.8f, 0.5f);
@@ -216,17 +256,36 @@ void drawCard(Renderer2D& r, const HudSpace& s, const Match& m, const MatchViewO
         s.text(cx, 90, line, kText, 1.1f, 0.5f);
         return;
     }
-    s.text(cx, 14, m.stars() > 0 ? "Level complete!" : "Out of shots", kText, 1.6f, 0.5f);
+    s.text(cx, 8, m.stars() > 0 ? "Level complete!" : "Out of shots", kText, 1.4f, 0.5f);
     for (int k = 0; k < 3; ++k) {
-        const Vec2 p = s.w(cx + (k - 1) * 70, 90);
-        star(r, p, s.metres(30), Color::hex(0x000000, 0.4f));
-        star(r, p, s.metres(26), k < m.stars() ? kGold : Color::hex(0x3a4150));
+        const Vec2 p = s.w(cx + (k - 1) * 52, 64);
+        star(r, p, s.metres(23), Color::hex(0x000000, 0.4f));
+        star(r, p, s.metres(20), k < m.stars() ? kGold : Color::hex(0x3a4150));
     }
-    char line[96];
-    std::snprintf(line, sizeof line, "score %d / %d   shots %d", m.score(), m.maxScore(), m.shotsFired());
-    s.text(cx, 136, line, kText, 1.1f, 0.5f);
+    // The breakdown (targets, bonus, total), then what each star needs.
+    const std::vector<std::string> lines = cardLines(m);
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        s.text(20, 94 + kLineH * static_cast<double>(i), lines[i], i + 1 == lines.size() ? kGold : kText,
+               static_cast<float>(kSmall));
+    const double needsAt = 102 + kLineH * static_cast<double>(lines.size());
+    drawStarNeeds(s, m, needsAt);
     if (m.assisted())
-        s.text(cx, 162, "assisted (full preview or hint): no third star", kTextDim, 0.9f, 0.5f);
+        s.text(cx, needsAt + 3 * kLineH + 4, "assisted (full preview or hint): no third star", kTextDim, 0.8f,
+               0.5f);
+}
+
+/// The level's scoring before the first shot: what the targets are worth, the bonus, what
+/// each star needs.
+std::vector<std::string> rulesLines(const Match& m) {
+    if (m.level().mode != game::Mode::Practice || m.shotsFired() > 0 || m.over()) return {};
+    return game::scoringLines(game::levelScoring(m.level()));
+}
+
+void drawRules(const HudSpace& s, const std::vector<std::string>& lines, double w) {
+    s.panel(0, 0, w, 12 + kLineH * static_cast<double>(lines.size()));
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        s.text(12, 6 + kLineH * static_cast<double>(i), lines[i], i + 3 >= lines.size() ? kGold : kText,
+               static_cast<float>(kSmall));
 }
 
 /// Design-pixel rectangles of a box w x h at each of `corners` (its top-left corner).
@@ -234,16 +293,6 @@ std::vector<PixelRect> at(std::initializer_list<Vec2> corners, double w, double 
     std::vector<PixelRect> rects;
     for (const Vec2 c : corners) rects.push_back({c.x, c.y, c.x + w, c.y + h});
     return rects;
-}
-
-/// The shot's verdict: what its notes say, the newest first ("missed by 4.0 m, short",
-/// "+150"), while they last.
-std::string verdictOf(const game::Effects& fx) {
-    std::string text;
-    for (auto n = fx.feedback().notes().rbegin(); n != fx.feedback().notes().rend(); ++n)
-        if (!n->text.empty() && text.find(n->text) == std::string::npos)
-            text += (text.empty() ? "" : "   ") + n->text;
-    return text;
 }
 
 } // namespace
@@ -325,7 +374,8 @@ void Hud::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o, const P
                                              w, 30)))
             drawLine(box(p), o.banner, kGold, 1.0, Color::hex(0x000000, 0.6f));
     }
-    if (const std::string verdict = verdictOf(fx); !verdict.empty()) {
+    // The shot's verdict, as the match gave it (game/verdict.h).
+    if (const std::string verdict = fx.feedback().verdict(); !verdict.empty()) {
         const double w = lineWidth(verdict, 1.0);
         if (auto p = placed("hud.verdict", at({{W / 2 - w / 2, mg + kWindH + 8}, {W / 2 - w / 2, mg + kWindH + 46},
                                                {W / 2 - w / 2, H / 2 - 80}, {W / 2 - w / 2, H - mg - 30}},
@@ -339,13 +389,36 @@ void Hud::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o, const P
                                              w, 30)))
             drawLine(box(p), o.notice, kNotice, 0.8, Color::hex(0x0e1420, 0.8f));
     }
-    if (m.over() && o.endCard)
-        if (auto p = placed("card", at({{W / 2 - kCardW / 2, H / 2 - kCardH / 2},
-                                        {W / 2 - kCardW / 2, mg + kWindH + 8},
-                                        {W / 2 - kCardW / 2, H - mg - kCardH},
-                                        {mg, H / 2 - kCardH / 2}, {W - mg - kCardW, H / 2 - kCardH / 2}},
-                                       kCardW, kCardH)))
+    drawRulesAndCard(r, m, o);
+}
+
+/// The level's scoring before the first shot, and the card at the match's end.
+void Hud::drawRulesAndCard(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
+    const Camera& c = r.camera();
+    const double u = hudScale(c.width, c.height);
+    const double W = c.width / u, H = c.height / u, mg = kMargin;
+    auto box = [&](const std::optional<PixelRect>& where) { return HudSpace{r, u, where->x0, where->y0}; };
+    auto placed = [&](const std::string& name, const std::vector<PixelRect>& candidates) {
+        return place(name, candidates, o, u, c.width, c.height);
+    };
+    if (const std::vector<std::string> rules = rulesLines(m); !rules.empty()) {
+        double w = 0.0;
+        for (const std::string& line : rules) w = std::max(w, lineWidth(line, kSmall));
+        const double h = 12 + kLineH * static_cast<double>(rules.size());
+        if (auto p = placed("hud.rules", at({{W - mg - w, mg}, {W - mg - w, H - mg - h}, {mg, mg + kScoreH + mg},
+                                             {W / 2 - w / 2, H - mg - h}},
+                                            w, h)))
+            drawRules(box(p), rules, w);
+    }
+    if (m.over() && o.endCard) {
+        const double ch = cardHeight(m);
+        if (auto p = placed("card", at({{W / 2 - kCardW / 2, H / 2 - ch / 2}, {W / 2 - kCardW / 2, mg + kWindH + 8},
+                                        {W / 2 - kCardW / 2, H - mg - ch}, {mg, H / 2 - ch / 2},
+                                        {W - mg - kCardW, H / 2 - ch / 2}, {mg, mg}, {W - mg - kCardW, mg},
+                                        {mg, H - mg - ch}, {W - mg - kCardW, H - mg - ch}},
+                                       kCardW, ch)))
             drawCard(r, box(p), m, o);
+    }
 }
 
 } // namespace ui

@@ -35,6 +35,7 @@ class Hud {
     void reset() { places_.clear(); }
 
   private:
+    void drawRulesAndCard(Renderer2D& r, const game::Match& match, const MatchViewOptions& options);
     /// Where a box of `name` goes among `candidates` (design pixels): the place it had if
     /// still clear, else the first clear one; none when every place covers something.
     std::optional<PixelRect> place(const std::string& name, const std::vector<PixelRect>& candidates,

@@ -1,0 +1,137 @@
+// A level's scoring (game/scoring.h): the largest score the rules allow, the least score
+// of each star, the scoring and a game's breakdown in words, against a level computed by
+// hand and against every shipped level.
+#include "game/ai.h"
+#include "game/match.h"
+#include "game/scoring.h"
+
+#include "shots.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace game;
+using namespace shots;
+
+namespace {
+
+/// Two discs (200 and 100 points), a target block and a block that is none, four shots.
+LevelScoring handLevel() {
+    Level l;
+    l.targets.resize(2);
+    l.targets[0].points = 200;
+    l.targets[1].points = 100;
+    l.blocks.resize(2);
+    l.blocks[0].target = true;
+    l.shots = 4;
+    return levelScoring(l);
+}
+
+} // namespace
+
+// By hand: full points 200 + 100 + 100 = 400; at the discs' rims 100 + 50 + 100 = 250;
+// par, one shot a target and the bonus for the fourth, 400 + 50 = 450; the most, every
+// target down with the first shot, 400 + 3 x 50 = 550. Two stars need 60 % of par (270),
+// three 85 % (382.5, so 383).
+TEST(Scoring, AHandComputedLevel) {
+    const LevelScoring s = handLevel();
+    EXPECT_EQ(s.fullPoints(), 400);
+    EXPECT_EQ(s.leastAllDown(), 250);
+    EXPECT_EQ(s.par(), 450);
+    EXPECT_EQ(s.maxScore(), 550);
+    EXPECT_EQ(s.starScores(), (std::array<int, 3>{250, 270, 383}));
+    EXPECT_EQ(s.stars(382, true), 2);
+    EXPECT_EQ(s.stars(383, true), 3);
+    EXPECT_EQ(s.stars(269, true), 1);
+    EXPECT_EQ(s.stars(550, false), 0);
+}
+
+TEST(Scoring, TheRulesInWords) {
+    const std::vector<std::string> expected{
+        "2 discs: 200 and 100 points at the centre, half at the rim",
+        "1 block to knock down: 100 points",
+        "bonus: 50 for each shot left once all are down (best 550)",
+        "1 star: every target down",
+        "2 stars: down and 270 points",
+        "3 stars: down and 383 points",
+    };
+    EXPECT_EQ(scoringLines(handLevel()), expected);
+    LevelScoring same;
+    same.discs = {150, 150, 150};
+    same.blobs = 2;
+    same.shots = 3;
+    const std::vector<std::string> lines = scoringLines(same);
+    ASSERT_GE(lines.size(), 2u);
+    EXPECT_EQ(lines[0], "3 discs: 150 points at the centre, 75 at the rim");
+    EXPECT_EQ(lines[1], "2 blobs to knock down: 150 points each");
+}
+
+TEST(Scoring, TheBreakdownInWords) {
+    ScoreBreakdown b;
+    b.hits = {150, 77};
+    b.toppled = 1;
+    b.toppledPoints = 100;
+    b.shotsLeft = 2;
+    b.allDown = true;
+    b.bonus = 100;
+    b.total = 427;
+    const std::vector<std::string> expected{
+        "2 discs hit: 150 + 77 = 227",
+        "1 knocked down x 100 = 100",
+        "bonus: 2 shots left x 50 = 100",
+        "total: 427 of 550",
+    };
+    EXPECT_EQ(breakdownLines(b, handLevel()), expected);
+    ScoreBreakdown running;
+    running.hits = {90};
+    running.shotsLeft = 3;
+    running.total = 90;
+    EXPECT_EQ(breakdownLines(running, handLevel()),
+              (std::vector<std::string>{"1 disc hit: 90", "bonus: none until every target is down",
+                                        "total: 90 of 550"}));
+    running.over = true;
+    EXPECT_EQ(breakdownLines(running, handLevel())[1], "bonus: none, not every target was down");
+}
+
+// A game played to its end: the breakdown adds up to the score, bonus included.
+TEST(Scoring, ABreakdownAddsUpToTheScore) {
+    Level l = level("01_earth_basics.json");
+    l.physics.windMin = l.physics.windMax = 0.0;
+    Match m(l);
+    for (std::size_t t = 0; t < m.targets().size() && !m.over(); ++t) {
+        const AimSolution aim = aimAt(m, m.targets()[t].position);
+        shoot(m, aim.angleDeg, aim.speedMps);
+        for (int i = 0; i < 120 * 40 && m.shell(); ++i) m.step();
+    }
+    ASSERT_TRUE(m.over());
+    const ScoreBreakdown b = breakdownOf(m);
+    int sum = b.toppledPoints + b.bonus;
+    for (const int h : b.hits) sum += h;
+    EXPECT_EQ(b.hits.size(), m.targets().size());
+    EXPECT_EQ(b.bonus, kShotBonus * m.cannon().shotsLeft);
+    EXPECT_EQ(sum, m.score());
+    EXPECT_EQ(b.total, m.score());
+    EXPECT_LE(m.score(), m.maxScore());
+}
+
+// Every shipped practice level: the stars' scores ascend up to the largest score, which
+// the rules reach only with every bonus, and that score earns three stars.
+TEST(Scoring, EveryShippedLevelsStarsAscendToItsMaximum) {
+    int practice = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(ARTILLERY_SOURCE_DIR) / "levels")) {
+        if (entry.path().extension() != ".json" || entry.path().filename() == "campaign.json") continue;
+        const Level l = loadLevel(entry.path().string());
+        if (l.mode != Mode::Practice) continue;
+        ++practice;
+        const LevelScoring s = levelScoring(l);
+        const auto need = s.starScores();
+        EXPECT_LE(need[0], need[1]) << entry.path();
+        EXPECT_LE(need[1], need[2]) << entry.path();
+        EXPECT_LE(need[2], s.maxScore()) << entry.path();
+        EXPECT_EQ(s.maxScore(), s.fullPoints() + kShotBonus * (l.shots - 1)) << entry.path();
+        EXPECT_EQ(s.stars(s.maxScore(), true), 3) << entry.path();
+        EXPECT_EQ(s.stars(need[2] - 1, true), need[2] - 1 >= need[1] ? 2 : 1) << entry.path();
+    }
+    EXPECT_GT(practice, 30);
+}
