@@ -114,6 +114,7 @@ void GameScreen::restart() {
     play_.start(std::make_unique<game::Session>(
         levelInPlay(), liveSessionOptions(files_, level_, record, stats_.status)));
     matchView_.reset();
+    measure_.reset();
     camera_.forgetMoves();
     frameLevel(play_.match());
     if (def_.sandbox && !play_.match().sandbox()) {
@@ -257,6 +258,7 @@ void GameScreen::advance(double wallSeconds) {
             [&] {
                 const game::Match& m = play_.match();
                 matchView_.observe(m);
+                measure_.observe(m);
                 statsPanel_.sample(m);
                 sound_.hearTick(m, camera_.camera());
             },
@@ -332,6 +334,7 @@ void GameScreen::drawPlaying() {
     drawMatchFrame(renderer_, matchView_, m, shown, o);
     if (!replays_.watching() && play_.active()) { // the rope being drawn, the hand and what it holds
         sandboxTools_.draw(renderer_, m);
+        measure_.draw(renderer_);
         statsPanel_.drawWorld(renderer_, m);
         renderer_.flush();
     }

@@ -24,6 +24,7 @@ enum class GameKey {
     TogglePhysicsPanel, ///< F2
     ToggleStats,       ///< F6: the Stats window (compare, energy, charts)
     ToggleCost,        ///< F3: the cost in a corner (frame, physics time, what each model moves)
+    NextMeasureTool,   ///< M: the measuring tools (probe, tape, stopwatch, off)
     StepTick,          ///< . : one tick, paused
     TogglePause,       ///< K
     Slower,            ///< [
