@@ -29,11 +29,9 @@ TEST(MeasureTools, CycleProbeTapeStopwatchOff) {
 }
 
 TEST(MeasureTools, MOnTheGameScreenTurnsTheMouseIntoAProbe) {
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / ("artillery-measure-" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir);
+    const test_game::ScratchFolder scratch("measure");
     {
-        test_game::HeadlessGame game("12_first_shot.json", 1280, 720, dir);
+        test_game::HeadlessGame game("12_first_shot.json", 1280, 720, scratch.dir);
         ASSERT_NE(game.screen, nullptr);
         ASSERT_NE(game.screen->session(), nullptr);
         auto drag = [&](int x0, int y0, int x1, int y1) {
@@ -63,5 +61,4 @@ TEST(MeasureTools, MOnTheGameScreenTurnsTheMouseIntoAProbe) {
         test_game::tap(*game.screen, SDLK_m);
         EXPECT_EQ(drag(300, 300, 400, 150), aimed) << "with one, it measures";
     }
-    std::filesystem::remove_all(dir);
 }

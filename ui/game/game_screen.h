@@ -147,6 +147,7 @@ class GameScreen final : public Screen {
     /// size is last frame's, or `estimate` (points).
     ImVec2 clearCorner(const char* name, ImVec2 estimate) const;
     double labPanelsRight() const;
+    PendingAim shownAim() const;
     void physicsPanelOfMatch(game::Match& m);
     void playtestButton(MenuChoice& choice);
     void actOn(const MenuChoice& choice, bool sceneToEditor);

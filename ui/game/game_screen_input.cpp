@@ -210,6 +210,9 @@ void GameScreen::gameKeyAction(GameKey action) {
     case GameKey::TogglePhysicsPanel: settings.physicsPanel = !settings.physicsPanel; break;
     case GameKey::ToggleStats: statsShown_ = !statsShown_; break;
     case GameKey::ToggleCost: costShown_ = !costShown_; break;
+    case GameKey::ToggleCompare:
+        if (play_.active()) statsPanel_.toggleCompare(play_.match(), shownAim());
+        break;
     case GameKey::NextMeasureTool:
         measure_.next();
         // A tool is a mode: the pointer says so (a window only; headless has no cursor).
