@@ -96,6 +96,10 @@ Vec2 firstTouchOnChord(const phys::RigidWorld& rigid, phys::BodyId body, Vec2 fr
 
 void Match::reportLanding(Vec2 shellNow) {
     flight_.landed = true;
+    // The last state the flight alone made (the tick before; lastVelocity is that tick's
+    // until the weapon's step takes this one's).
+    flight_.preLandingPosition = flight_.lastPosition;
+    flight_.preLandingVelocity = flight_.lastVelocity;
     const ShellLaunch launch{flight_.launchPosition, flight_.launchVelocity,
                              world_.particles.radius[shell_]};
     const Vec2 g = world_.def().forces.gravity;

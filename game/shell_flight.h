@@ -31,6 +31,7 @@ struct ShellFlight {
     // and whether its first contact has been reported.
     phys::Vec2 launchPosition, launchVelocity;
     phys::Vec2 lastPosition;
+    phys::Vec2 preLandingPosition, preLandingVelocity; ///< the tick before the first contact
     bool landed = false;
 };
 

@@ -37,6 +37,10 @@ std::optional<ExactPath> exactPathOf(const Match& match, const GameEvent& landed
         out.points.push_back(phys::ballisticState(f.launchPosition, f.launchVelocity, g, t).position);
     }
     out.exactLanding = out.points.back();
+    const auto energy = [&](phys::Vec2 p, phys::Vec2 v) { return 0.5 * phys::dot(v, v) - phys::dot(g, p); };
+    const double e0 = energy(f.launchPosition, f.launchVelocity);
+    if (e0 != 0.0)
+        out.energyChange = (energy(f.preLandingPosition, f.preLandingVelocity) - e0) / std::abs(e0);
     return out;
 }
 
@@ -50,9 +54,9 @@ std::string exactPathText(const ExactPath& p) {
     if (std::abs(p.errorM) < 0.005)
         std::snprintf(line, sizeof line, "%s, %s: on the exact path", shotModelLabel(p.model).c_str(), rate);
     else
-        std::snprintf(line, sizeof line, "%s, %s: %.2f m %s of the exact path",
+        std::snprintf(line, sizeof line, "%s, %s: %.2f m %s of the exact path; energy %+.1f %%",
                       shotModelLabel(p.model).c_str(), rate, std::abs(p.errorM),
-                      p.errorM > 0.0 ? "long" : "short");
+                      p.errorM > 0.0 ? "long" : "short", 100.0 * p.energyChange);
     return line;
 }
 

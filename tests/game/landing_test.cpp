@@ -178,13 +178,22 @@ TEST(ExactPath, TheVerdictSaysHowFarFromTheExactPathAndTheViewDrawsIt) {
     bool said = false;
     for (const ShotNote& n : feedback.notes())
         said = said || (n.kind == ShotNote::Kind::Exact &&
-                        n.text == "explicit Euler, 30 Hz: 0.69 m long of the exact path");
+                        n.text == "explicit Euler, 30 Hz: 0.69 m long of the exact path; energy +1.5 %");
     EXPECT_TRUE(said);
     // The path drawn is the closed form from the muzzle, to the exact landing: 0.69 m
     // short of where the flown shell came down, at the same height.
     EXPECT_EQ(exact->points.front(), m.flight().launchPosition);
     EXPECT_NEAR(exact->flownLanding.x - exact->exactLanding.x, exact->errorM, 1e-9);
     EXPECT_NEAR(exact->exactLanding.y, exact->flownLanding.y, 1e-6);
+    // Explicit Euler: v_n exact, y_n high by |g| h t / 2, so the energy per kg has grown
+    // by |g|^2 h t / 2 at the last tick before the contact.
+    const double g = -m.world().def().forces.gravity.y, h = 1.0 / 30.0;
+    const phys::Vec2 p0 = m.flight().launchPosition, v0 = m.flight().launchVelocity;
+    const double e0 = 0.5 * phys::dot(v0, v0) + g * p0.y;
+    // Its x moves at vx exactly, so the time of that tick is (x - x0) / vx.
+    const double tBefore = (m.flight().preLandingPosition.x - p0.x) / v0.x;
+    EXPECT_NEAR(tBefore / h, std::round(tBefore / h), 1e-9) << "a tick of the flight";
+    EXPECT_NEAR(exact->energyChange, g * g * h * tBefore / 2.0 / e0, 1e-9);
 }
 
 TEST(ExactPath, NoneWhenTheClosedFormFlewTheShell) {

@@ -38,10 +38,10 @@ TEST(CostReadout, SaysWhatEachModelMoves) {
 }
 
 TEST(CostReadout, F3ShowsItInACornerThatCoversNothing) {
-    const fs::path dir = fs::temp_directory_path() / ("artillery-cost-" + std::to_string(::getpid()));
+    const test_game::ScratchFolder scratch("cost");
     for (const char* level : {"05_castle.json", "07_soft_blob.json"}) {
-        fs::remove_all(dir);
-        test_game::HeadlessGame game(level, 1280, 720, dir);
+        fs::remove_all(scratch.dir);
+        test_game::HeadlessGame game(level, 1280, 720, scratch.dir);
         ASSERT_NE(game.screen, nullptr);
         auto rectOf = [&](const std::string& name) -> std::optional<ui::PixelRect> {
             for (const ui::LayoutOverlay& o : game.screen->layout().overlays)
@@ -61,5 +61,4 @@ TEST(CostReadout, F3ShowsItInACornerThatCoversNothing) {
         for (int i = 0; i < 2; ++i) game.screen->frame(1.0 / 60.0);
         EXPECT_FALSE(rectOf("panel.Cost")) << level;
     }
-    fs::remove_all(dir);
 }

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <unistd.h>
 
 namespace test_game {
 
@@ -38,6 +39,17 @@ struct HeadlessGame {
         for (int i = 0; i < 2; ++i)
             screen->frame(1.0 / 60.0);
     }
+};
+
+/// A scratch settings folder named for the test and the process, gone with the scope.
+struct ScratchFolder {
+    std::filesystem::path dir;
+    explicit ScratchFolder(const std::string& name)
+        : dir(std::filesystem::temp_directory_path() /
+              ("artillery-" + name + "-" + std::to_string(::getpid()))) {
+        std::filesystem::remove_all(dir);
+    }
+    ~ScratchFolder() { std::filesystem::remove_all(dir); }
 };
 
 /// A key pressed and let go on the screen, as the window sends it.

@@ -114,6 +114,7 @@ void GameScreen::restart() {
     play_.start(std::make_unique<game::Session>(
         levelInPlay(), liveSessionOptions(files_, level_, record, stats_.status)));
     matchView_.reset();
+    measure_.reset();
     camera_.forgetMoves();
     frameLevel(play_.match());
     if (def_.sandbox && !play_.match().sandbox()) {
@@ -257,6 +258,7 @@ void GameScreen::advance(double wallSeconds) {
             [&] {
                 const game::Match& m = play_.match();
                 matchView_.observe(m);
+                measure_.observe(m);
                 statsPanel_.sample(m);
                 sound_.hearTick(m, camera_.camera());
             },
@@ -332,7 +334,8 @@ void GameScreen::drawPlaying() {
     drawMatchFrame(renderer_, matchView_, m, shown, o);
     if (!replays_.watching() && play_.active()) { // the rope being drawn, the hand and what it holds
         sandboxTools_.draw(renderer_, m);
-        statsPanel_.drawWorld(renderer_, m);
+        measure_.draw(renderer_);
+        statsPanel_.drawWorld(renderer_, m, &layout_);
         renderer_.flush();
     }
     // Clear of what the frame shows; not while the Stats window's charts take the middle
@@ -404,15 +407,21 @@ void GameScreen::matchPanels(MenuChoice& choice, bool& sceneToEditor) {
     sceneToEditor = sandboxTools_.takeSaveAsLevel();
     if (editor_.playtest()) playtestButton(choice);
     if (req.endTurn && humanTurn) submit(AimInput::endTurn());
-    const PendingAim shownAim = play_.aim().editing()
-                                    ? play_.aim().pending()
-                                    : PendingAim{m.cannon().angleDeg, m.cannon().speedMps};
+    const PendingAim shownAim = this->shownAim();
+    statsPanel_.followAim(m, shownAim);
     if (statsShown_)
         if (auto d = statsPanel_.panel(m, shownAim)) submit(settingCommands(m.world().def(), *d));
     if (settings.physicsPanel) physicsPanelOfMatch(m);
     if (costShown_) costReadout(costFigures(m, stats_.frameMs), clearCorner("Cost", costReadoutEstimate()));
     if (m.over() && play_.resultRecorded() && !choice.openLevel && !editor_.playtest())
         choice = menus_.nextLevelCard(files_.progress(), level_.file);
+}
+
+/// The aim on screen: the one being edited, else the cannon's.
+PendingAim GameScreen::shownAim() const {
+    const game::Match& m = play_.match();
+    return play_.aim().editing() ? play_.aim().pending()
+                                 : PendingAim{m.cannon().angleDeg, m.cannon().speedMps};
 }
 
 /// How much of the width the lab's panels cover along the right edge, where they open

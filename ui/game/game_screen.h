@@ -27,6 +27,7 @@
 #include "ui/game/key_bindings.h"
 #include "ui/game/live_play.h"
 #include "ui/game/match_view.h"
+#include "ui/game/measure_tools.h"
 #include "ui/game/menu_flow.h"
 #include "ui/game/pad_input.h"
 #include "ui/game/player_files.h"
@@ -146,6 +147,7 @@ class GameScreen final : public Screen {
     /// size is last frame's, or `estimate` (points).
     ImVec2 clearCorner(const char* name, ImVec2 estimate) const;
     double labPanelsRight() const;
+    PendingAim shownAim() const;
     void physicsPanelOfMatch(game::Match& m);
     void playtestButton(MenuChoice& choice);
     void actOn(const MenuChoice& choice, bool sceneToEditor);
@@ -163,6 +165,7 @@ class GameScreen final : public Screen {
     bool editorEvent(const SDL_Event& e);
     void padAction(PadAction action);
     bool mouseInMatch(const SDL_Event& e);
+    bool measureEvent(const SDL_Event& e, phys::Vec2 scale);
     phys::Vec2 pixelsPerPoint() const;
 
     GLContext& context_;
@@ -191,6 +194,7 @@ class GameScreen final : public Screen {
     ScreenLayout layout_; ///< the frame's overlays and objects, gathered as it is drawn
     bool statsShown_ = false; ///< the Stats window (a lab panel: shown on its key)
     bool costShown_ = false;  ///< the cost readout (F3)
+    MeasureTools measure_;    ///< probe, tape, stopwatch (M)
     int framesMeasured_ = 0;
     bool running_ = true;
     bool networkDuel_ = false;

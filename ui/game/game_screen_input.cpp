@@ -80,11 +80,30 @@ void GameScreen::padAction(PadAction action) {
     }
 }
 
+/// The measuring tools take the left button and the pointer's moves while one is on; the
+/// wheel and a right drag still move the camera. True when the event was theirs.
+bool GameScreen::measureEvent(const SDL_Event& e, phys::Vec2 scale) {
+    const bool button = e.type == SDL_MOUSEBUTTONDOWN || e.type == SDL_MOUSEBUTTONUP;
+    if (!(button && e.button.button == SDL_BUTTON_LEFT) && e.type != SDL_MOUSEMOTION) return false;
+    const int x = e.type == SDL_MOUSEMOTION ? e.motion.x : e.button.x;
+    const int y = e.type == SDL_MOUSEMOTION ? e.motion.y : e.button.y;
+    const Camera& c = camera_.camera();
+    const phys::Vec2 at = c.toWorld({x * scale.x, y * scale.y});
+    if (e.type == SDL_MOUSEBUTTONDOWN) measure_.press(at, c.metres(14.0 * scale.x));
+    else if (e.type == SDL_MOUSEBUTTONUP) measure_.lift(at);
+    else {
+        measure_.move(at);
+        camera_.event(e, scale, follows()); // a right drag pans on
+    }
+    return true;
+}
+
 /// The mouse over the field of a live match: the sandbox's tools when they are on, else
 /// a drag aims; the wheel and a right drag move the camera.
 bool GameScreen::mouseInMatch(const SDL_Event& e) {
     const game::Match& m = play_.match();
     const phys::Vec2 scale = pixelsPerPoint();
+    if (measure_.on() && measureEvent(e, scale)) return running_;
     if (sandboxTools_.active(m) && (e.type == SDL_MOUSEBUTTONDOWN || e.type == SDL_MOUSEBUTTONUP ||
                                     e.type == SDL_MOUSEMOTION)) {
         const bool left = e.type == SDL_MOUSEMOTION || e.button.button == SDL_BUTTON_LEFT;
@@ -191,6 +210,16 @@ void GameScreen::gameKeyAction(GameKey action) {
     case GameKey::TogglePhysicsPanel: settings.physicsPanel = !settings.physicsPanel; break;
     case GameKey::ToggleStats: statsShown_ = !statsShown_; break;
     case GameKey::ToggleCost: costShown_ = !costShown_; break;
+    case GameKey::ToggleCompare:
+        if (play_.active()) statsPanel_.toggleCompare(play_.match(), shownAim());
+        break;
+    case GameKey::NextMeasureTool:
+        measure_.next();
+        // A tool is a mode: the pointer says so (a window only; headless has no cursor).
+        if (window_)
+            SDL_SetCursor(SDL_CreateSystemCursor(measure_.on() ? SDL_SYSTEM_CURSOR_CROSSHAIR
+                                                               : SDL_SYSTEM_CURSOR_ARROW));
+        break;
     case GameKey::StepTick: time.paused = time.stepRequested = true; break;
     case GameKey::TogglePause: time.paused = !time.paused; break;
     case GameKey::Slower: time.timeScale = nextSpeed(time.timeScale, -1); break;

@@ -22,6 +22,8 @@ constexpr KeyBinding kBindings[] = {
     {SDLK_F2, false, GameKey::TogglePhysicsPanel, KeyScope::Match},
     {SDLK_F6, false, GameKey::ToggleStats, KeyScope::Match},
     {SDLK_F3, false, GameKey::ToggleCost, KeyScope::Match},
+    {SDLK_m, false, GameKey::NextMeasureTool, KeyScope::Match},
+    {SDLK_x, false, GameKey::ToggleCompare, KeyScope::Match},
     {SDLK_PERIOD, false, GameKey::StepTick, KeyScope::Match},
     {SDLK_k, false, GameKey::TogglePause, KeyScope::Match},
     {SDLK_LEFTBRACKET, false, GameKey::Slower, KeyScope::Match},

@@ -24,6 +24,8 @@ enum class GameKey {
     TogglePhysicsPanel, ///< F2
     ToggleStats,       ///< F6: the Stats window (compare, energy, charts)
     ToggleCost,        ///< F3: the cost in a corner (frame, physics time, what each model moves)
+    NextMeasureTool,   ///< M: the measuring tools (probe, tape, stopwatch, off)
+    ToggleCompare,     ///< X: every integrator fires the aim on screen, drawn with a legend
     StepTick,          ///< . : one tick, paused
     TogglePause,       ///< K
     Slower,            ///< [

@@ -1,12 +1,15 @@
 #include "ui/game/stats_panel.h"
 
+#include "ui/game/level_camera.h"
 #include "ui/platform/imgui_layer.h"
+#include "ui/render/design_canvas.h"
 
 #include "physics/diagnostics.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cfloat>
 #include <cstdio>
@@ -33,6 +36,15 @@ Color pathColor(const game::IntegratorPath& p) {
 }
 
 ImVec4 imColor(Color c) { return ImVec4(c.r, c.g, c.b, c.a); }
+
+/// One row of the legend in its three columns: the path, its landing error, its cost.
+std::array<std::string, 3> legendRow(const game::IntegratorPath& p) {
+    if (p.isReference) return {p.name + " (reference)", "", ""};
+    char error[32] = "not down", cost[32];
+    if (p.landed) std::snprintf(error, sizeof error, "%.3g m", p.landingError);
+    std::snprintf(cost, sizeof cost, "%d eval/step", phys::info(p.integrator).evaluations);
+    return {p.name, error, cost};
+}
 
 } // namespace
 
@@ -94,6 +106,36 @@ void StatsPanel::runCompare(const game::Match& match, const PendingAim& aim) {
     key_ = {aim.angleDeg, aim.speedMps, d.tickSeconds, match.wind(),
             static_cast<int>(phys::integrators().size()),
             static_cast<int>(match.cannon().projectile), static_cast<int>(d.forces.drag)};
+}
+
+void StatsPanel::drawLegend(Renderer2D& r, ScreenLayout* layout) const {
+    // The legend, in pixels: under the wind box in the middle, else the top corners under
+    // the HUD's band, else the bottom right; wherever it covers nothing on screen.
+    const std::size_t lines = paths_.size();
+    const double W = r.camera().width, H = r.camera().height, u = hudScale(W, H);
+    const double w = 340.0 * u, h = (16.0 * static_cast<double>(lines) + 8.0) * u, m = 12.0 * u;
+    const double top = kHudTopBand * u;
+    const std::vector<PixelRect> places = {{0.5 * (W - w), top, 0.5 * (W + w), top + h},
+                                           {m, top, m + w, top + h},
+                                           {W - m - w, top, W - m, top + h},
+                                           {W - m - w, H - m - h - 100.0 * u, W - m, H - m - 100.0 * u}};
+    PixelRect at = places.front();
+    if (layout) {
+        std::vector<PixelRect> avoid = layout->objectRects();
+        for (const PixelRect& o : layout->overlayRects()) avoid.push_back(o);
+        const auto clear = firstClear(places, avoid, PixelRect{0.0, 0.0, W, H});
+        if (!clear) return; // nowhere clear: the paths speak for themselves
+        at = *clear;
+        layout->addOverlay("compare.legend", at);
+    }
+    const double columns[3] = {4.0, 140.0, 245.0}; // design px: path, error, cost
+    double y = at.y0 + 4.0 * u;
+    for (const game::IntegratorPath& p : paths_) {
+        const auto row = legendRow(p);
+        for (std::size_t c = 0; c < 3; ++c)
+            r.screenLabel({at.x0 + columns[c] * u, y}, row[c], pathColor(p), static_cast<float>(u));
+        y += 16.0 * u;
+    }
 }
 
 std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const PendingAim& aim) {
@@ -167,19 +209,35 @@ std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const 
     }
     ImGui::End();
 
-    // Follow the aim: recompute when what the paths depend on has changed.
-    if (showCompare && followAim_) {
-        const phys::WorldDef& d = match.world().def();
-        const Key now{aim.angleDeg, aim.speedMps, d.tickSeconds, match.wind(),
-                      static_cast<int>(phys::integrators().size()),
-                      static_cast<int>(match.cannon().projectile), static_cast<int>(d.forces.drag)};
-        if (!(now == key_)) runCompare(match, aim);
-    }
-
+    followAim(match, aim);
     return apply;
 }
 
-void StatsPanel::drawWorld(Renderer2D& r, const game::Match& match) {
+void StatsPanel::followAim(const game::Match& match, const PendingAim& aim) {
+    // Recompute when what the paths depend on has changed.
+    if (!showCompare || !followAim_) return;
+    const phys::WorldDef& d = match.world().def();
+    const Key now{aim.angleDeg, aim.speedMps, d.tickSeconds, match.wind(),
+                  static_cast<int>(phys::integrators().size()),
+                  static_cast<int>(match.cannon().projectile), static_cast<int>(d.forces.drag)};
+    if (!(now == key_)) runCompare(match, aim);
+}
+
+void StatsPanel::toggleCompare(const game::Match& match, const PendingAim& aim) {
+    showCompare = !showCompare;
+    if (showCompare) runCompare(match, aim);
+}
+
+std::vector<std::string> StatsPanel::legendLines() const {
+    std::vector<std::string> out;
+    for (const game::IntegratorPath& p : paths_) {
+        const auto row = legendRow(p);
+        out.push_back(row[1].empty() ? row[0] : row[0] + "  " + row[1] + "  " + row[2]);
+    }
+    return out;
+}
+
+void StatsPanel::drawWorld(Renderer2D& r, const game::Match& match, ScreenLayout* layout) {
     (void)match;
     if (showCompare) {
         for (const game::IntegratorPath& p : paths_) {
@@ -187,19 +245,7 @@ void StatsPanel::drawWorld(Renderer2D& r, const game::Match& match) {
             r.polyline(p.points, c, p.isReference ? 1.5f : 2.0f);
             if (p.landed) r.fillCircle(p.landing, 0.0, c, 4.0f);
         }
-        // The legend, top middle of the view under the wind box, in pixels.
-        Vec2 at{0.5 * r.camera().width - 90.0, 80.0};
-        for (const game::IntegratorPath& p : paths_) {
-            char line[96];
-            if (p.isReference)
-                std::snprintf(line, sizeof line, "%s (reference)", p.name.c_str());
-            else if (p.landed)
-                std::snprintf(line, sizeof line, "%s  %.3g m", p.name.c_str(), p.landingError);
-            else
-                std::snprintf(line, sizeof line, "%s  not down", p.name.c_str());
-            r.screenLabel(at, line, pathColor(p));
-            at.y += 16.0;
-        }
+        drawLegend(r, layout);
     }
     if (chartsShown()) { // folding the panel folds away its charts too
         // The charts (chartsArea) map pixels (chart.h), so they are drawn through a camera

@@ -15,9 +15,11 @@
 #include "game/match.h"
 #include "ui/charts/charts_panel.h"
 #include "ui/game/match_view.h"
+#include "ui/game/screen_layout.h"
 #include "ui/render/renderer2d.h"
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace ui {
@@ -44,8 +46,19 @@ class StatsPanel {
     /// is the aim on screen. Returns world settings to apply when the charts' "Use it"
     /// was pressed.
     std::optional<phys::WorldDef> panel(const game::Match& match, const PendingAim& aim);
+    /// Every frame, shown or not: the compare paths follow the aim (and the tick, the
+    /// wind, the projectile, drag) while they are on and "follow the aim" is ticked.
+    void followAim(const game::Match& match, const PendingAim& aim);
+    /// Compare in one key (X): the paths of every integrator for the aim on screen, on
+    /// or off, without the window.
+    void toggleCompare(const game::Match& match, const PendingAim& aim);
     /// Compare paths and the charts, through the match's camera (begin() already called).
-    void drawWorld(Renderer2D& r, const game::Match& match);
+    /// The legend stands where it covers nothing in `layout` (when given) and is added
+    /// to it as the overlay "compare.legend"; with no clear place it is left out.
+    void drawWorld(Renderer2D& r, const game::Match& match, ScreenLayout* layout = nullptr);
+    /// The legend's lines: each path's name, its landing error against the reference and
+    /// its cost, force evaluations per step ("explicit-euler  0.691 m  1 eval/step").
+    std::vector<std::string> legendLines() const;
 
     /// Relative change of the energy over the last `seconds` of samples (fewer when the
     /// match is younger), e.g. +0.04 for 4 % gained; none before two samples or at zero
@@ -60,6 +73,7 @@ class StatsPanel {
 
   private:
     void runCompare(const game::Match& match, const PendingAim& aim);
+    void drawLegend(Renderer2D& r, ScreenLayout* layout) const;
 
     // Ring buffer of samples, at most historySeconds / tick of them.
     std::vector<float> energy_, momentum_;

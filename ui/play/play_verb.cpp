@@ -109,6 +109,8 @@ keys:  mouse drag aim   arrows angle/power   hold Space charge, release fire
        Space tap or Enter/F fire at the power set   1-8 projectile   E end turn
        P preview   H hint   Esc pause menu   F1 or ? help   F2 physics panel
        F3 the cost (frame, physics time, what each model moves)   . one tick
+       M measuring tools: probe, tape, stopwatch, off (the mouse measures)
+       X compare every integrator on the aim on screen
        K pause/resume   Backspace (hold) rewind 1 s, play on as a branch
        Z the last shot again (Z or Esc: back to the game)
        [ ] slower/faster   R restart   L levels   F12 screenshot
