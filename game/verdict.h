@@ -3,7 +3,8 @@
 // miss) when the shot is over and what it set moving has come to rest, or at the next
 // shot or the match's end, whichever comes first. The match reports it as a Verdict event
 // (value: the points the shot earned, 0 in a duel); the screen shows that text and no
-// other, so the screen and `artillery run --json` say the same.
+// other, so the screen and `artillery run --json` say the same. A sandbox has no
+// targets and no score: its shots get no verdict.
 //
 // A miss is measured from the shell's path to the outline of each target still standing
 // (a disc's rim, a block's box, a blob's circle; the enemy cannons in a duel): the

@@ -3,6 +3,7 @@
 #include "game/ai.h"
 #include "game/headless.h"
 #include "game/match.h"
+#include "game/replay.h"
 #include "game/scoring.h"
 #include "game/verdict.h"
 
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 using namespace game;
 using namespace shots;
@@ -214,4 +216,45 @@ TEST(Verdict, DuelVerdictsAreWorthNothing) {
         hits += hit;
     }
     EXPECT_GT(hits, 0) << "a duel is won by hits";
+}
+
+// Every golden replay, played on 35 s past its end so its last shot settles: one verdict
+// for each shot fired, by its shooter; in practice their points and the bonus are the
+// score at the match's end, in a duel they are worth nothing. A sandbox has nothing to
+// judge: no verdicts.
+TEST(Verdict, OnePerShotInEveryGoldenReplay) {
+    const auto folder = std::filesystem::path(ARTILLERY_SOURCE_DIR) / "tests" / "replays";
+    int replays = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        const std::string file = entry.path().string();
+        if (!file.ends_with(".replay.json")) continue;
+        ++replays;
+        const Replay replay = loadReplay(file);
+        const Level l = levelForReplay(file, replay);
+        Match m(l);
+        runCommands(m, replay.commands, replay.ticks);
+        // On past its end until its last shot is over (a flight lasts 30 s at most) and
+        // 5 s more.
+        for (int i = 0; i < 120 * 35; ++i) m.step();
+        const auto fired = eventsOf(m.events(), EventKind::Fired);
+        const auto verdicts = eventsOf(m.events(), EventKind::Verdict);
+        ASSERT_FALSE(fired.empty()) << file;
+        ASSERT_EQ(verdicts.size(), l.mode == Mode::Sandbox ? 0u : fired.size()) << file;
+        if (l.mode == Mode::Sandbox) continue;
+        int points = 0;
+        for (std::size_t i = 0; i < fired.size(); ++i) {
+            EXPECT_EQ(verdicts[i].player, fired[i].player) << file;
+            points += static_cast<int>(verdicts[i].value);
+        }
+        if (l.mode == Mode::Duel) {
+            EXPECT_EQ(points, 0) << file;
+        } else if (l.mode == Mode::Practice) {
+            // The score when the match ended (a block the last shot topples after the end
+            // still scores, but was not yet down when the verdict was given).
+            const auto end = eventsOf(m.events(), EventKind::MatchOver);
+            const int bonus = m.winner() == 0 ? kShotBonus * m.cannons()[0].shotsLeft : 0;
+            EXPECT_EQ(points + bonus, end.empty() ? m.score() : static_cast<int>(end[0].value)) << file;
+        }
+    }
+    EXPECT_GE(replays, 10);
 }
