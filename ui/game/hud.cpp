@@ -275,10 +275,14 @@ void drawCard(Renderer2D& r, const HudSpace& s, const Match& m, const MatchViewO
 }
 
 /// The level's scoring before the first shot: what the targets are worth, the bonus, what
-/// each star needs.
+/// each star needs; after it, what each star needs stays in view until the end card.
 std::vector<std::string> rulesLines(const Match& m) {
-    if (m.level().mode != game::Mode::Practice || m.shotsFired() > 0 || m.over()) return {};
-    return game::scoringLines(game::levelScoring(m.level()));
+    if (m.level().mode != game::Mode::Practice || m.over()) return {};
+    std::vector<std::string> lines = game::scoringLines(game::levelScoring(m.level()));
+    constexpr std::size_t kStarLines = 3; // the last three: one line a star
+    if (m.shotsFired() > 0 && lines.size() > kStarLines)
+        lines.erase(lines.begin(), lines.end() - static_cast<std::ptrdiff_t>(kStarLines));
+    return lines;
 }
 
 void drawRules(const HudSpace& s, const std::vector<std::string>& lines, double w) {
