@@ -1,6 +1,7 @@
 #include "game/verdict.h"
 
 #include "game/match.h"
+#include "game/standing_targets.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,49 +16,6 @@ namespace {
 /// How long after a shot ends what it set moving may take to come to rest before the
 /// verdict is given anyway (s): a rope that swings a crate may never quite stop.
 constexpr double kSettleSeconds = 4.0;
-
-/// A target still standing as the miss is measured to it.
-struct Standing {
-    std::size_t id = 0;    ///< discs, then blocks, then blobs (cannons in a duel), by index
-    Vec2 centre;
-    double distance = 0.0; ///< from the shell to its outline, 0 inside, m
-};
-
-/// The distance from `p` to a box of half sizes `h` at `centre` turned by `angle` (0 inside).
-double boxDistance(Vec2 p, Vec2 centre, Vec2 h, double angle) {
-    const Vec2 d = p - centre;
-    const double c = std::cos(angle), s = std::sin(angle);
-    const double lx = std::abs(c * d.x + s * d.y) - h.x, ly = std::abs(-s * d.x + c * d.y) - h.y;
-    return std::hypot(std::max(lx, 0.0), std::max(ly, 0.0));
-}
-
-std::vector<Standing> standing(const Match& m, Vec2 p, int shooter) {
-    std::vector<Standing> out;
-    std::size_t id = 0;
-    auto round = [&](Vec2 c, double r) { out.push_back({id, c, std::max(0.0, length(p - c) - r)}); };
-    if (m.level().mode == Mode::Duel) {
-        for (; id < m.cannons().size(); ++id)
-            if (static_cast<int>(id) != shooter && m.cannons()[id].hitPoints > 0)
-                round(m.cannons()[id].def.position, kCannonRadius);
-        return out;
-    }
-    for (const TargetState& t : m.targets()) {
-        if (!t.hit) round(t.position, t.def.radius);
-        ++id;
-    }
-    for (const BlockState& b : m.blocks()) {
-        if (b.def.target && !b.toppled && m.rigid().alive(b.body)) {
-            const phys::RigidBodyState s = m.rigid().state(b.body);
-            out.push_back({id, s.position, boxDistance(p, s.position, b.def.size * 0.5, s.angle)});
-        }
-        ++id;
-    }
-    for (const BlobState& b : m.blobs()) {
-        if (b.def.target && !b.toppled) round(m.world().particles.position(b.center), b.def.radius);
-        ++id;
-    }
-    return out;
-}
 
 /// How a cannon is named in a hit on it: the computer's, yours (one person playing), or
 /// a player's by number.
@@ -119,16 +77,17 @@ bool structuresAtRest(const Match& m) {
 void ShotJudge::sample(const Match& m, Vec2 p) {
     const Vec2 from = tally_.landing;
     tally_.landing = p;
-    for (const Standing& s : standing(m, p, tally_.player)) {
+    for (const StandingTarget& s : standingTargets(m, tally_.player)) {
         if (crossed_.size() <= s.id) crossed_.resize(s.id + 1, 0);
+        const double distance = s.distanceFrom(p);
         // The first time the path crosses the target's vertical line: above it or below,
         // at the height interpolated along the tick's chord.
-        if (crossed_[s.id] == 0 && (from.x - s.centre.x) * (p.x - s.centre.x) <= 0.0 && from.x != p.x) {
-            const double y = from.y + (p.y - from.y) * (s.centre.x - from.x) / (p.x - from.x);
-            crossed_[s.id] = y >= s.centre.y ? 1 : -1;
+        if (crossed_[s.id] == 0 && (from.x - s.where.x) * (p.x - s.where.x) <= 0.0 && from.x != p.x) {
+            const double y = from.y + (p.y - from.y) * (s.where.x - from.x) / (p.x - from.x);
+            crossed_[s.id] = y >= s.where.y ? 1 : -1;
         }
-        if (s.distance < tally_.miss) {
-            tally_.miss = s.distance;
+        if (distance < tally_.miss) {
+            tally_.miss = distance;
             nearest_ = s.id;
         }
     }

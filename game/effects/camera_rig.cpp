@@ -3,6 +3,7 @@
 #include "game/match.h"
 
 #include "game/effects/shot_feedback.h"
+#include "game/standing_targets.h"
 
 #include <algorithm>
 #include <cmath>
@@ -74,7 +75,7 @@ void CameraRig::tick(const Match& m) {
         const Vec2 ahead = lastShell_ + ps.velocity(*shell) * def_.leadSeconds;
         Vec2 lo{std::min(ahead.x, lastShell_.x), std::min(ahead.y, lastShell_.y)};
         Vec2 hi{std::max(ahead.x, lastShell_.x), std::max(ahead.y, lastShell_.y)};
-        for (const TargetMark& t : standingTargets(m)) {
+        for (const StandingTarget& t : standingTargets(m, m.currentPlayer())) {
             lo = {std::min(lo.x, t.where.x - t.reach), std::min(lo.y, t.where.y - t.reach)};
             hi = {std::max(hi.x, t.where.x + t.reach), std::max(hi.y, t.where.y + t.reach)};
         }

@@ -9,26 +9,6 @@ namespace game {
 
 using phys::Vec2;
 
-std::vector<TargetMark> standingTargets(const Match& m) {
-    std::vector<TargetMark> out;
-    if (m.level().mode == Mode::Duel) {
-        for (std::size_t i = 0; i < m.cannons().size(); ++i)
-            if (static_cast<int>(i) != m.currentPlayer() && m.cannons()[i].hitPoints > 0)
-                out.push_back({m.cannons()[i].def.position, kCannonRadius});
-        return out;
-    }
-    for (const TargetState& t : m.targets())
-        if (!t.hit) out.push_back({t.position, t.def.radius});
-    for (const BlockState& b : m.blocks())
-        if (b.def.target && !b.toppled && m.rigid().alive(b.body))
-            out.push_back(
-                {m.rigid().state(b.body).position, 0.5 * std::max(b.def.size.x, b.def.size.y)});
-    for (const BlobState& b : m.blobs())
-        if (b.def.target && !b.toppled)
-            out.push_back({m.world().particles.position(b.center), b.def.radius});
-    return out;
-}
-
 void ShotFeedback::reset() {
     *this = ShotFeedback();
 }

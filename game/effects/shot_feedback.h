@@ -29,20 +29,11 @@ struct ShotNote {
     double life = 1.5; ///< s, shown this long
 };
 
-/// A target the view knows of: a point and how far its outline reaches from it (m).
-struct TargetMark {
-    phys::Vec2 where;
-    double reach = 0.0;
-};
-
-/// The targets still standing, or the enemy cannons in a duel: what a miss is measured to.
-std::vector<TargetMark> standingTargets(const Match& match);
-
 class ShotFeedback {
   public:
     /// Takes one event of the match (in order).
     void event(const Match& match, const GameEvent& e);
-    /// After each tick: follows the shell and ages the notes by `dt` seconds.
+    /// After each tick: follows the shell and ages its markers and verdict by `dt` seconds.
     void tick(const Match& match, double dt);
     void reset();
 
