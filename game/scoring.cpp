@@ -59,9 +59,13 @@ int LevelScoring::par() const { return fullPoints() + kShotBonus * std::max(0, s
 int LevelScoring::maxScore() const { return fullPoints() + kShotBonus * std::max(0, shots - 1); }
 
 std::array<int, 3> LevelScoring::starScores() const {
+    // Each star asks for at least one shot's bonus more than the star before, so no two
+    // stars tie where the par's shares fall below the least won game (a level of blocks
+    // alone scores by shots to spare). Capped at the largest score: a level of one shot
+    // and one target has a single result, and it earns all three.
     const int one = leastAllDown();
-    const int two = std::max(one, percentOf(kTwoStarPercent, par()));
-    const int three = std::max(two, std::min(maxScore(), percentOf(kThreeStarPercent, par())));
+    const int two = std::min(maxScore(), std::max(percentOf(kTwoStarPercent, par()), one + kShotBonus));
+    const int three = std::min(maxScore(), std::max(percentOf(kThreeStarPercent, par()), two + kShotBonus));
     return {one, two, three};
 }
 
@@ -147,8 +151,16 @@ std::vector<std::string> breakdownLines(const ScoreBreakdown& b, const LevelScor
 
 std::array<std::string, 3> starNeeds(const LevelScoring& s) {
     const std::array<int, 3> need = s.starScores();
-    return {"every target down", "down and " + std::to_string(need[1]) + " points",
-            "down and " + std::to_string(need[2]) + " points"};
+    // Without discs a won game scores its full points and the bonus for the shots left,
+    // so a star's score is a number of shots to spare, which is what the player can aim for.
+    auto needOf = [&](int score) {
+        if (!s.discs.empty() || score <= s.fullPoints())
+            return "down and " + std::to_string(score) + " points";
+        const int spare = (score - s.fullPoints() + kShotBonus - 1) / kShotBonus;
+        return "down with " + plural(spare, "shot", "shots") + " to spare (" +
+               std::to_string(s.fullPoints() + spare * kShotBonus) + " points)";
+    };
+    return {"every target down", needOf(need[1]), needOf(need[2])};
 }
 
 } // namespace game

@@ -5,8 +5,9 @@
 // The rules: a disc scores by how close to its centre the shell passes, its full points
 // at the centre and half at its rim; a target block or blob knocked off its place scores
 // a fixed amount; once every target is down, each shot left earns a bonus. One star needs
-// every target down; two and three stars need a score, set against the level's par:
-// every target down at full points with one shot each and the bonus for the rest.
+// every target down; two and three stars need a score, set against the level's par
+// (every target down at full points with one shot each and the bonus for the rest) and
+// at least one shot's bonus above the star before.
 #pragma once
 
 #include "game/level.h"

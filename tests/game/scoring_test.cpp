@@ -32,18 +32,19 @@ LevelScoring handLevel() {
 
 // By hand: full points 200 + 100 + 100 = 400; at the discs' rims 100 + 50 + 100 = 250;
 // par, one shot a target and the bonus for the fourth, 400 + 50 = 450; the most, every
-// target down with the first shot, 400 + 3 x 50 = 550. Two stars need 60 % of par (270),
-// three 85 % (382.5, so 383).
+// target down with the first shot, 400 + 3 x 50 = 550. Two stars need 60 % of par (270)
+// but at least a shot's bonus above one star (250 + 50 = 300), three 85 % (382.5, so 383).
 TEST(Scoring, AHandComputedLevel) {
     const LevelScoring s = handLevel();
     EXPECT_EQ(s.fullPoints(), 400);
     EXPECT_EQ(s.leastAllDown(), 250);
     EXPECT_EQ(s.par(), 450);
     EXPECT_EQ(s.maxScore(), 550);
-    EXPECT_EQ(s.starScores(), (std::array<int, 3>{250, 270, 383}));
+    EXPECT_EQ(s.starScores(), (std::array<int, 3>{250, 300, 383}));
     EXPECT_EQ(s.stars(382, true), 2);
     EXPECT_EQ(s.stars(383, true), 3);
-    EXPECT_EQ(s.stars(269, true), 1);
+    EXPECT_EQ(s.stars(299, true), 1);
+    EXPECT_EQ(s.stars(300, true), 2);
     EXPECT_EQ(s.stars(550, false), 0);
 }
 
@@ -53,7 +54,7 @@ TEST(Scoring, TheRulesInWords) {
         "1 block to knock down: 100 points",
         "bonus: 50 for each shot left once all are down (best 550)",
         "1 star: every target down",
-        "2 stars: down and 270 points",
+        "2 stars: down and 300 points",
         "3 stars: down and 383 points",
     };
     EXPECT_EQ(scoringLines(handLevel()), expected);
@@ -65,6 +66,28 @@ TEST(Scoring, TheRulesInWords) {
     ASSERT_GE(lines.size(), 2u);
     EXPECT_EQ(lines[0], "3 discs: 150 points at the centre, 75 at the rim");
     EXPECT_EQ(lines[1], "2 blobs to knock down: 150 points each");
+}
+
+// A level of blocks alone scores its full points and the bonus for the shots left, so
+// its stars are shots to spare: four blocks and four shots give 400, 450 and 500, never
+// three stars for any clear.
+TEST(Scoring, ALevelOfBlocksAloneAsksForShotsToSpare) {
+    LevelScoring blocks;
+    blocks.blocks = 4;
+    blocks.shots = 4;
+    EXPECT_EQ(blocks.starScores(), (std::array<int, 3>{400, 450, 500}));
+    const std::array<std::string, 3> needs = starNeeds(blocks);
+    EXPECT_EQ(needs[0], "every target down");
+    EXPECT_EQ(needs[1], "down with 1 shot to spare (450 points)");
+    EXPECT_EQ(needs[2], "down with 2 shots to spare (500 points)");
+    // Two blobs and five shots: par 450 puts three stars at 383, which only two shots to
+    // spare reach.
+    LevelScoring blobs;
+    blobs.blobs = 2;
+    blobs.shots = 5;
+    EXPECT_EQ(blobs.starScores(), (std::array<int, 3>{300, 350, 400}));
+    blobs.shots = 1; // one shot for two blobs: one result, and it earns all three
+    EXPECT_EQ(blobs.starScores(), (std::array<int, 3>{300, 300, 300}));
 }
 
 TEST(Scoring, TheBreakdownInWords) {
@@ -115,7 +138,7 @@ TEST(Scoring, ABreakdownAddsUpToTheScore) {
     EXPECT_LE(m.score(), m.maxScore());
 }
 
-// Every shipped practice level: the stars' scores ascend up to the largest score, which
+// Every shipped practice level: the stars' scores ascend, a shot's bonus apart, up to the largest score, which
 // the rules reach only with every bonus, and that score earns three stars.
 TEST(Scoring, EveryShippedLevelsStarsAscendToItsMaximum) {
     int practice = 0;
@@ -126,8 +149,9 @@ TEST(Scoring, EveryShippedLevelsStarsAscendToItsMaximum) {
         ++practice;
         const LevelScoring s = levelScoring(l);
         const auto need = s.starScores();
-        EXPECT_LE(need[0], need[1]) << entry.path();
-        EXPECT_LE(need[1], need[2]) << entry.path();
+        // Each star a shot's bonus above the one before, where the largest score leaves room.
+        EXPECT_GE(need[1], std::min(s.maxScore(), need[0] + kShotBonus)) << entry.path();
+        EXPECT_GE(need[2], std::min(s.maxScore(), need[1] + kShotBonus)) << entry.path();
         EXPECT_LE(need[2], s.maxScore()) << entry.path();
         EXPECT_EQ(s.maxScore(), s.fullPoints() + kShotBonus * (l.shots - 1)) << entry.path();
         EXPECT_EQ(s.stars(s.maxScore(), true), 3) << entry.path();
