@@ -356,7 +356,10 @@ void Match::endShot(double closestMiss) {
         }
         if (alive <= 1 || shots == 0) return finish();
     } else if (level_.mode == Mode::Practice) {
-        if (allDown || cannon().shotsLeft == 0) return finish();
+        if (allDown) return finish();
+        // Out of shots, the game ends once what the last shot set moving has come to
+        // rest (finishWhenDone), so a block it knocks over late still scores in its shot.
+        if (cannon().shotsLeft == 0) return;
     }
     nextTurn();
 }
@@ -415,7 +418,7 @@ void Match::stepRules() {
     if (!stepPhysics()) return;
     scoreToppled();
     stepFragments();
-    if (shell_ == kNoParticle) return finishWhenAllDown();
+    if (shell_ == kNoParticle) return finishWhenDone();
     stepShell();
 }
 
@@ -439,8 +442,15 @@ bool Match::stepPhysics() {
     return true;
 }
 
-void Match::finishWhenAllDown() {
-    if (!over_ && level_.mode == Mode::Practice && allTargetsDown() && shotsFired_ > 0) finish();
+void Match::finishWhenDone() {
+    if (over_ || level_.mode != Mode::Practice || shotsFired_ == 0) return;
+    if (allTargetsDown()) return finish();
+    if (cannon().shotsLeft > 0) return;
+    const auto lastEnd = std::find_if(events_.rbegin(), events_.rend(),
+                                      [](const GameEvent& e) { return e.kind == EventKind::ShotOver; });
+    const std::uint64_t since = lastEnd == events_.rend() ? tick() : lastEnd->tick;
+    const double waited = static_cast<double>(tick() - since) * world_.def().tickSeconds;
+    if (structuresAtRest(*this) || waited >= kSettleSeconds) finish();
 }
 
 void Match::stepShell() {

@@ -277,8 +277,9 @@ class Match {
     /// Target blocks and blobs knocked off their place score for whoever fired last
     /// (match_scoring.cpp).
     void scoreToppled();
-    /// With no shell in flight, a practice level whose targets are all down is won.
-    void finishWhenAllDown();
+    /// With no shell in flight, a practice game ends: won once its targets are all down,
+    /// or, out of shots, once what the last shot set moving has come to rest.
+    void finishWhenDone();
     /// The shell's tick: its passes, a duel hit, its contacts, its weapon, its end.
     void stepShell();
     void followTargetPasses(phys::Vec2 p, double r);

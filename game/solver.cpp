@@ -87,7 +87,9 @@ Outcome play(const Level& level, const std::vector<Command>& commands, long& eva
         }
         if (next == commands.size()) {
             if (m.over()) break;
-            if (!m.shell()) {
+            // A practice game out of shots ends itself once its last shot has settled.
+            const bool ending = level.mode == Mode::Practice && m.cannon().shotsLeft == 0;
+            if (!m.shell() && !ending) {
                 if (commands.empty()) break; // the first shot goes at once
                 if (quietSince == 0) quietSince = m.tick();
                 if (!settle || m.tick() >= quietSince + kSettleTicks || structuresAtRest(m)) break;

@@ -13,10 +13,6 @@ using phys::Vec2;
 
 namespace {
 
-/// How long after a shot ends what it set moving may take to come to rest before the
-/// verdict is given anyway (s): a rope that swings a crate may never quite stop.
-constexpr double kSettleSeconds = 4.0;
-
 /// How a cannon is named in a hit on it: the computer's, yours (one person playing), or
 /// a player's by number.
 std::vector<std::string> cannonNames(const Match& m) {

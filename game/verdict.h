@@ -50,6 +50,10 @@ struct ShotTally {
 /// cannon for a hit on it.
 std::string verdictText(const ShotTally& t, bool duel, const std::vector<std::string>& cannonNames);
 
+/// The longest a shot's verdict (and, out of shots, a practice game's end) waits for what
+/// the shot set moving to come to rest, s: a rope that swings a crate may never quite stop.
+inline constexpr double kSettleSeconds = 4.0;
+
 /// Nothing that could still fall over is moving: every block and target blob at rest
 /// (below 5 cm/s and 0.05 rad/s).
 bool structuresAtRest(const Match& m);

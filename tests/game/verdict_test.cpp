@@ -166,6 +166,40 @@ TEST(Verdict, AToppleAfterTheShotEndsGivesOnlyTheToppledVerdict) {
     EXPECT_EQ(verdicts[0].text, expected);
 }
 
+// The same shot as the last of the game: the game is not over when the shell is, but once
+// the tower has come down, so the blocks that fall late are in its verdict and its score,
+// and the end comes after them.
+TEST(Verdict, TheLastShotsLateToppleIsInItsVerdictAndTheGamesEnd) {
+    Level l = level("25_tower.json");
+    l.physics.windMin = l.physics.windMax = 0.0;
+    l.shots = 1;
+    Match m(l);
+    const BlockState* top = nullptr;
+    for (const auto& b : m.blocks())
+        if (b.def.target && (!top || b.def.position.y > top->def.position.y)) top = &b;
+    ASSERT_NE(top, nullptr);
+    fireAt(m, top->def.position);
+    for (int i = 0; i < 120 * 60 && !m.over(); ++i) m.step();
+    ASSERT_TRUE(m.over());
+    const auto toppled = eventsOf(m.events(), EventKind::Toppled);
+    const auto over = eventsOf(m.events(), EventKind::ShotOver);
+    const auto verdicts = eventsOf(m.events(), EventKind::Verdict);
+    const auto end = eventsOf(m.events(), EventKind::MatchOver);
+    ASSERT_FALSE(toppled.empty());
+    ASSERT_EQ(over.size(), 1u);
+    ASSERT_EQ(end.size(), 1u);
+    EXPECT_GT(toppled.back().tick, over[0].tick) << "a block fell after the shot was over";
+    EXPECT_GE(end[0].tick, toppled.back().tick);
+    ASSERT_EQ(verdicts.size(), 1u);
+    int points = 0;
+    for (const GameEvent& e : toppled) points += static_cast<int>(e.value);
+    EXPECT_EQ(verdicts[0].value, points);
+    EXPECT_EQ(m.score(), points); // one shot, no shot left for a bonus
+    for (int i = 0; i < 120 * 10; ++i) m.step();
+    EXPECT_EQ(eventsOf(m.events(), EventKind::Toppled).size(), toppled.size())
+        << "nothing falls after the game's end";
+}
+
 namespace {
 
 /// A whole game the computer plays on `file`: its events.
