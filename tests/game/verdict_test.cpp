@@ -136,6 +136,20 @@ TEST(Verdict, AShotOverADiscSaysOverAndOneUnderItUnder) {
     }
 }
 
+namespace {
+
+/// Fires at the highest target block (the top of Tower's tower); false if there is none.
+bool fireAtTheTop(Match& m) {
+    const BlockState* top = nullptr;
+    for (const auto& b : m.blocks())
+        if (b.def.target && (!top || b.def.position.y > top->def.position.y)) top = &b;
+    if (!top) return false;
+    fireAt(m, top->def.position);
+    return true;
+}
+
+} // namespace
+
 // Tower: the shell knocks the top block off and comes to rest before the blocks it set
 // moving have fallen. The verdict waits for them: one verdict, the toppled and their
 // points, and no miss beside it.
@@ -143,11 +157,7 @@ TEST(Verdict, AToppleAfterTheShotEndsGivesOnlyTheToppledVerdict) {
     Level l = level("25_tower.json");
     l.physics.windMin = l.physics.windMax = 0.0;
     Match m(l);
-    const BlockState* top = nullptr;
-    for (const auto& b : m.blocks())
-        if (b.def.target && (!top || b.def.position.y > top->def.position.y)) top = &b;
-    ASSERT_NE(top, nullptr);
-    fireAt(m, top->def.position);
+    ASSERT_TRUE(fireAtTheTop(m));
     untilVerdicts(m, 1);
     const auto toppled = eventsOf(m.events(), EventKind::Toppled);
     const auto over = eventsOf(m.events(), EventKind::ShotOver);
@@ -174,11 +184,7 @@ TEST(Verdict, TheLastShotsLateToppleIsInItsVerdictAndTheGamesEnd) {
     l.physics.windMin = l.physics.windMax = 0.0;
     l.shots = 1;
     Match m(l);
-    const BlockState* top = nullptr;
-    for (const auto& b : m.blocks())
-        if (b.def.target && (!top || b.def.position.y > top->def.position.y)) top = &b;
-    ASSERT_NE(top, nullptr);
-    fireAt(m, top->def.position);
+    ASSERT_TRUE(fireAtTheTop(m));
     for (int i = 0; i < 120 * 60 && !m.over(); ++i) m.step();
     ASSERT_TRUE(m.over());
     const auto toppled = eventsOf(m.events(), EventKind::Toppled);
