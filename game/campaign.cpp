@@ -251,8 +251,9 @@ Lock levelLock(const Campaign& campaign, std::size_t chapter, std::size_t level,
     while (before > 0 && campaign.missing.count(levels[before - 1])) --before;
     if (before == 0) return {};
     if (cleared(progress, levels[before - 1])) return {};
-    return {false, "clear " + std::to_string(chapter + 1) + "." + std::to_string(before) +
-                       " first (one star, or win the duel)"};
+    const bool duel = campaign.duels.count(levels[before - 1]) > 0;
+    const std::string which = std::to_string(chapter + 1) + "." + std::to_string(before);
+    return {false, duel ? "win the duel " + which + " first" : "clear " + which + " first (one star)"};
 }
 
 Lock levelLock(const Campaign& campaign, std::size_t chapter, std::size_t level,

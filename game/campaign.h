@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <map>
+#include <set>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,9 @@ struct Campaign {
     /// The chapters' level files that the folder lacks or that do not load, by file name,
     /// with why (from missingLevels): they cannot be played, so they lock nothing.
     std::map<std::string, std::string> missing;
+    /// The chapters' level files that are duels (won, not starred), by file name, so a
+    /// lock names what clears the level before it.
+    std::set<std::string> duels;
 };
 
 /// A level a chapter names that cannot be played: no such file in the levels folder, or

@@ -209,7 +209,10 @@ TEST(Campaign, LevelsOpenOneAfterAnotherAndChaptersByStars) {
     Progress p;
     EXPECT_TRUE(levelLock(c, 0, 0, p).open) << "the first level is always open";
     EXPECT_FALSE(levelLock(c, 0, 1, p).open);
-    EXPECT_EQ(levelLock(c, 0, 1, p).why, "clear 1.1 first (one star, or win the duel)");
+    EXPECT_EQ(levelLock(c, 0, 1, p).why, "clear 1.1 first (one star)");
+    Campaign withDuel = c;
+    withDuel.duels.insert("1.json");
+    EXPECT_EQ(levelLock(withDuel, 0, 1, p).why, "win the duel 1.1 first") << "a duel is won, not starred";
     EXPECT_EQ(chapterLock(c, 1, p).why, "4 more stars in Chapter 1");
     p.record("1.json", 100, 0, false); // played, no star: not cleared
     EXPECT_FALSE(levelLock(c, 0, 1, p).open);

@@ -41,8 +41,10 @@ CampaignMenu campaignMenu(const std::string& folder, const std::vector<LevelEntr
         }
     }
     std::map<std::string, const LevelEntry*> byName;
-    for (const LevelEntry& e : levels)
+    for (const LevelEntry& e : levels) {
         byName[fileName(e.file)] = &e;
+        if (e.error.empty() && e.mode == game::Mode::Duel) menu.campaign.duels.insert(fileName(e.file));
+    }
     std::map<std::string, bool> placed;
     for (const game::Chapter& ch : menu.campaign.chapters) {
         menu.chapters.emplace_back();
