@@ -145,7 +145,8 @@ void drawWind(const HudSpace& s, double wind) {
     else
         std::snprintf(text, sizeof text, "wind %.1f m/s", std::abs(wind));
     s.panel(0, 0, kWindW, kWindH);
-    s.text(kWindW / 2, 4, text, kText, 0.85f, 0.5f);
+    // Calm has no arrow under its line: the line sits in the middle of the box instead.
+    s.text(kWindW / 2, std::abs(wind) < 0.05 ? 15 : 4, text, kText, 0.85f, 0.5f);
     // Arrow length grows with the wind up to 15 m/s.
     const double len = std::abs(wind) < 0.05 ? 0.0 : 16.0 + std::min(std::abs(wind), 15.0) / 15.0 * 120.0;
     const double sign = wind >= 0 ? 1.0 : -1.0;
