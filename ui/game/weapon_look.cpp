@@ -193,8 +193,10 @@ std::optional<std::size_t> projectileBar(const game::CannonState& c) {
         if (i == c.projectile) draw->AddRect(lo, hi, IM_COL32(255, 201, 60, 255), panelPx(5), 0, 2.0f);
         icon(draw, lo, size, name, spent);
         // The key in the corner, the shots left in the other.
-        draw->AddText(ImVec2(lo.x + panelPx(3), lo.y + size - ImGui::GetFontSize()), IM_COL32(185, 194, 207, 255),
-                      barKey(name).c_str());
+        // In a smaller type than the icon's, so "Tab" sits in the corner clear of the ball.
+        const float keySize = 0.75f * ImGui::GetFontSize();
+        draw->AddText(ImGui::GetFont(), keySize, ImVec2(lo.x + panelPx(3), lo.y + size - keySize - panelPx(1)),
+                      IM_COL32(185, 194, 207, 255), barKey(name).c_str());
         if (left >= 0) {
             char count[16];
             std::snprintf(count, sizeof count, "x%d", left);
