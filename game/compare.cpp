@@ -1,9 +1,9 @@
 #include "game/compare.h"
 
 #include "physics/ballistics.h"
-#include "physics/projectiles.h"
 #include "physics/forces.h"
 #include "physics/particles.h"
+#include "physics/projectiles.h"
 #include "physics/world.h"
 
 #include <algorithm>
@@ -43,8 +43,8 @@ struct Ground {
     Crossing crossing(Vec2 p, Vec2 v, Vec2 q, Vec2 w, double dt) const {
         auto point = [&](double t) {
             const double s = t / dt, s2 = s * s, s3 = s2 * s;
-            return p * (2 * s3 - 3 * s2 + 1) + v * (dt * (s3 - 2 * s2 + s)) + q * (3 * s2 - 2 * s3) +
-                   w * (dt * (s3 - s2));
+            return p * (2 * s3 - 3 * s2 + 1) + v * (dt * (s3 - 2 * s2 + s)) +
+                   q * (3 * s2 - 2 * s3) + w * (dt * (s3 - s2));
         };
         double lo = 0.0, hi = dt; // above at lo, below at hi
         for (int i = 0; i < 200 && lo < hi; ++i) {

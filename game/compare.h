@@ -3,11 +3,11 @@
 // launch height.
 //
 // Reference: with gravity alone (wind without drag included) the closed form
-// p0 + v0 t + g t^2/2 (exact at any dt); with drag or water, RK4 at 1/16 of the tick (order 4, so its own error is
-// 16^4 = 65536 times below RK4 at the tick). Every path flies through the level's forces
-// but past its blocks and targets, and lands where it first goes down through the
-// level's terrain as it is now (craters included), or, for a clean comparison on a
-// level line, where it comes back down to the launch height.
+// p0 + v0 t + g t^2/2 (exact at any dt); with drag or water, RK4 at 1/16 of the tick
+// (order 4, so its own error is 16^4 = 65536 times below RK4 at the tick). Every path
+// flies through the level's forces but past its blocks and targets, and lands where it
+// first goes down through the level's terrain as it is now (craters included), or, for a
+// clean comparison on a level line, where it comes back down to the launch height.
 #pragma once
 
 #include "game/match.h"

@@ -10,8 +10,8 @@ namespace game {
 ShotWork shotWorkPrecision(const Match& match, double angleDeg, double speedMps,
                            const ShotWorkDef& def) {
     ShotWork out;
-    out.tickSeconds = def.compare.tickSeconds > 0.0 ? def.compare.tickSeconds
-                                                    : match.world().def().tickSeconds;
+    out.tickSeconds =
+        def.compare.tickSeconds > 0.0 ? def.compare.tickSeconds : match.world().def().tickSeconds;
     const int levels = std::max(1, def.levels);
     auto tickAt = [&](int k) { return std::ldexp(out.tickSeconds, def.coarser - k); };
     const double finest = tickAt(levels - 1);
@@ -43,7 +43,8 @@ ShotWork shotWorkPrecision(const Match& match, double angleDeg, double speedMps,
 
 double observedOrder(const ShotWorkLine& line, double floor) {
     std::vector<double> tick, error;
-    for (const ShotWorkPoint& p : line.points) tick.push_back(p.tickSeconds), error.push_back(p.error);
+    for (const ShotWorkPoint& p : line.points)
+        tick.push_back(p.tickSeconds), error.push_back(p.error);
     return bench::logLogSlope(tick, error, floor);
 }
 

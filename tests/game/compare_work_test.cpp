@@ -30,7 +30,8 @@ ShotWorkDef at(double tickSeconds, LandingSurface surface) {
 
 TEST(CompareWork, OneLineOfFivePointsPerIntegratorWithTheCostOfEach) {
     const Match m(shots::level("01_earth_basics.json"));
-    const ShotWork w = shotWorkPrecision(m, 50.0, 30.0, at(1.0 / 30.0, LandingSurface::LaunchHeight));
+    const ShotWork w =
+        shotWorkPrecision(m, 50.0, 30.0, at(1.0 / 30.0, LandingSurface::LaunchHeight));
     ASSERT_EQ(w.lines.size(), phys::integrators().size());
     EXPECT_EQ(w.reference, LandingReference::ClosedForm);
     for (const ShotWorkLine& l : w.lines) {
@@ -61,19 +62,24 @@ TEST(CompareWork, UnderGravityExplicitEulerIsFirstOrderAndRk4AndVelocityVerletAr
             EXPECT_NEAR(euler.points[k - 1].error / euler.points[k].error, 2.0, 0.1) << k;
         EXPECT_NEAR(observedOrder(euler), 1.0, 0.05);
         EXPECT_GT(euler.points.front().error, 0.1);
-        for (const phys::Integrator exact : {phys::Integrator::RK4, phys::Integrator::VelocityVerlet})
-            for (const ShotWorkPoint& p : lineOf(w, exact).points) EXPECT_LT(p.error, 1e-9);
+        for (const phys::Integrator exact :
+             {phys::Integrator::RK4, phys::Integrator::VelocityVerlet})
+            for (const ShotWorkPoint& p : lineOf(w, exact).points)
+                EXPECT_LT(p.error, 1e-9);
     }
 }
 
 TEST(CompareWork, WithDragEachSlopeIsTheMethodsOrderAgainstFineRk4) {
     const Match m(shots::level("03_windy_valley.json"));
     ASSERT_FALSE(m.closedFormExact());
-    const ShotWork w = shotWorkPrecision(m, 50.0, 30.0, at(1.0 / 8.0, LandingSurface::LaunchHeight));
+    const ShotWork w =
+        shotWorkPrecision(m, 50.0, 30.0, at(1.0 / 8.0, LandingSurface::LaunchHeight));
     EXPECT_EQ(w.reference, LandingReference::FineRK4);
     for (const ShotWorkLine& l : w.lines) {
         std::string errors;
-        for (const ShotWorkPoint& p : l.points) errors += " " + std::to_string(p.error);
-        EXPECT_NEAR(observedOrder(l), phys::info(l.integrator).order, 0.3) << l.name << ":" << errors;
+        for (const ShotWorkPoint& p : l.points)
+            errors += " " + std::to_string(p.error);
+        EXPECT_NEAR(observedOrder(l), phys::info(l.integrator).order, 0.3)
+            << l.name << ":" << errors;
     }
 }

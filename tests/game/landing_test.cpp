@@ -85,7 +85,8 @@ TEST(LandedEvent, WindWithoutDragKeepsTheClosedFormExact) {
     ASSERT_NE(m.wind(), 0.0);
     EXPECT_FALSE(m.ballisticOnly()) << "the firing solutions still treat wind as unknown";
     EXPECT_TRUE(m.closedFormExact());
-    const std::vector<Command> euler = {set("tick_hz", 30.0), set("model", std::string("integrate")),
+    const std::vector<Command> euler = {set("tick_hz", 30.0),
+                                        set("model", std::string("integrate")),
                                         set("integrator", std::string("explicit-euler"))};
     const Shot still = firstShot(euler), blown = firstShot(euler, windy);
     ASSERT_TRUE(still.landed && blown.landed);
@@ -203,7 +204,8 @@ TEST(ExactPath, TheVerdictSaysHowFarFromTheExactPathAndTheViewDrawsIt) {
     ASSERT_TRUE(exact);
     // The verdict, the one line the screen shows, carries the comparison.
     const std::string verdict = feedback.verdict();
-    const std::string words = "; explicit Euler, 30 Hz: 0.69 m long of the exact path; energy +1.5 %";
+    const std::string words =
+        "; explicit Euler, 30 Hz: 0.69 m long of the exact path; energy +1.5 %";
     ASSERT_GE(verdict.size(), words.size()) << verdict;
     EXPECT_EQ(verdict.substr(verdict.size() - words.size()), words) << verdict;
     EXPECT_EQ(verdict.rfind("missed by ", 0), 0u) << verdict;

@@ -66,12 +66,14 @@ TEST(CompareKey, XDrawsTheShotsWorkPrecisionChartCoveringNothing) {
         ASSERT_NE(legend, layout.overlays.end()) << level;
         ASSERT_NE(chart, layout.overlays.end()) << level;
         EXPECT_FALSE(chart->rect.overlaps(legend->rect)) << level;
-        for (const ui::Covering& c : ui::coverings(layout)) ADD_FAILURE() << level << ": " << ui::describe(layout, c);
+        for (const ui::Covering& c : ui::coverings(layout))
+            ADD_FAILURE() << level << ": " << ui::describe(layout, c);
     }
 }
 
 TEST(CompareKey, TheChartHasALinePerIntegratorInItsPathsColour) {
-    const game::Match m(game::loadLevel((test_game::kRoot / "levels" / "12_first_shot.json").string()));
+    const game::Match m(
+        game::loadLevel((test_game::kRoot / "levels" / "12_first_shot.json").string()));
     ui::StatsPanel stats;
     stats.toggleCompare(m, ui::PendingAim{45.0, 30.0});
     const ui::charts::Chart chart = ui::shotWorkChart(stats.work());

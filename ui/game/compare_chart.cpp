@@ -46,7 +46,8 @@ charts::Chart shotWorkChart(const game::ShotWork& work) {
         s.color = compareColor(l.integrator);
         s.widthPx = 1.5f;
         for (const game::ShotWorkPoint& p : l.points)
-            s.points.push_back({p.evaluations, std::isfinite(p.error) ? std::max(p.error, kShotWorkFloor) : NAN});
+            s.points.push_back(
+                {p.evaluations, std::isfinite(p.error) ? std::max(p.error, kShotWorkFloor) : NAN});
         c.series.push_back(std::move(s));
     }
     return c;

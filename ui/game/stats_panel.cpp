@@ -124,7 +124,8 @@ std::optional<PixelRect> StatsPanel::drawLegend(Renderer2D& r, ScreenLayout* lay
     for (const game::IntegratorPath& p : paths_) {
         const auto row = legendRow(p);
         for (std::size_t c = 0; c < 3; ++c)
-            r.screenLabel({at.x0 + columns[c] * u, y}, row[c], compareColor(p), static_cast<float>(u));
+            r.screenLabel({at.x0 + columns[c] * u, y}, row[c], compareColor(p),
+                          static_cast<float>(u));
         y += 16.0 * u;
     }
     return at;
