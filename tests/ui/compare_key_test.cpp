@@ -49,11 +49,18 @@ TEST(CompareKey, XDrawsThePathsWithALegendThatCoversNothing) {
 }
 
 // The work-precision chart of the compared shot stands beside the legend, drawn with a
-// line per integrator in its path's colour, and covers no target, cannon, shell or impact.
+// line per integrator in its path's colour, and covers no target, cannon, shell or impact;
+// on a small screen too (where it is drawn at the HUD's scale).
 TEST(CompareKey, XDrawsTheShotsWorkPrecisionChartCoveringNothing) {
     const test_game::ScratchFolder scratch("compare-chart");
-    for (const char* level : {"12_first_shot.json", "03_windy_valley.json", "05_castle.json"}) {
-        test_game::HeadlessGame game(level, 1280, 720, scratch.dir);
+    struct Case {
+        const char* level;
+        int width, height;
+    };
+    for (const auto [level, width, height] :
+         {Case{"12_first_shot.json", 1280, 720}, Case{"03_windy_valley.json", 1280, 720},
+          Case{"05_castle.json", 1280, 720}, Case{"03_windy_valley.json", 960, 540}}) {
+        test_game::HeadlessGame game(level, width, height, scratch.dir);
         ASSERT_NE(game.screen, nullptr);
         test_game::tap(*game.screen, SDLK_x);
         for (int i = 0; i < 2; ++i) game.screen->frame(1.0 / 60.0);

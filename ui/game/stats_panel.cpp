@@ -21,6 +21,9 @@ namespace {
 
 ImVec4 imColor(Color c) { return ImVec4(c.r, c.g, c.b, c.a); }
 
+/// The work-precision chart's size at full text size, px.
+constexpr double kChartW = 340.0, kChartH = 210.0;
+
 /// The first of `places` clear of the objects and overlays of `layout` on a W x H screen,
 /// added to it as `name`; without a layout, the first place.
 std::optional<PixelRect> placeOverlay(ScreenLayout* layout, const char* name,
@@ -133,20 +136,29 @@ std::optional<PixelRect> StatsPanel::drawLegend(Renderer2D& r, ScreenLayout* lay
 
 void StatsPanel::drawWorkChart(Renderer2D& r, const PixelRect& legend, ScreenLayout* layout) const {
     // Beside the legend: under it, at its left, at its right, above it; else in a corner
-    // under the HUD's band; wherever it covers nothing.
+    // under the HUD's band; wherever it covers nothing. The chart's text is of a fixed
+    // size (charts::ChartStyle), so it is first tried at no less than its full size, then
+    // (on a small screen) at the HUD's scale with its text scaled alike.
     const double W = r.camera().width, H = r.camera().height, u = hudScale(W, H);
-    const double w = 340.0 * u, h = 210.0 * u, g = 8.0 * u, m = 12.0 * u, top = kHudTopBand * u;
-    const std::vector<PixelRect> places = {
-        {legend.x0, legend.y1 + g, legend.x0 + w, legend.y1 + g + h},
-        {legend.x0 - g - w, legend.y0, legend.x0 - g, legend.y0 + h},
-        {legend.x1 + g, legend.y0, legend.x1 + g + w, legend.y0 + h},
-        {legend.x0, legend.y0 - g - h, legend.x0 + w, legend.y0 - g},
-        {m, top, m + w, top + h},
-        {W - m - w, top, W - m, top + h},
-        {W - m - w, H - m - h - 100.0 * u, W - m, H - m - 100.0 * u}};
+    const double g = 8.0 * u, m = 12.0 * u, top = kHudTopBand * u;
+    std::vector<PixelRect> places;
+    for (const double k : {std::max(u, 1.0), std::min(u, 1.0)}) {
+        const double w = kChartW * k, h = kChartH * k;
+        places.insert(places.end(),
+                      {{legend.x0, legend.y1 + g, legend.x0 + w, legend.y1 + g + h},
+                       {legend.x0 - g - w, legend.y0, legend.x0 - g, legend.y0 + h},
+                       {legend.x1 + g, legend.y0, legend.x1 + g + w, legend.y0 + h},
+                       {legend.x0, legend.y0 - g - h, legend.x0 + w, legend.y0 - g},
+                       {m, top, m + w, top + h},
+                       {W - m - w, top, W - m, top + h},
+                       {W - m - w, H - m - h - 100.0 * u, W - m, H - m - 100.0 * u}});
+    }
     const auto at = placeOverlay(layout, "compare.chart", places, W, H);
     if (!at) return; // nowhere clear: the legend's errors say it in numbers
-    charts::drawChart(r, shotWorkChart(work_), {at->x0, at->y0, at->x1 - at->x0, at->y1 - at->y0});
+    charts::ChartStyle style;
+    style.textScale *= static_cast<float>(std::min(1.0, (at->x1 - at->x0) / kChartW));
+    charts::drawChart(r, shotWorkChart(work_), {at->x0, at->y0, at->x1 - at->x0, at->y1 - at->y0},
+                      style);
 }
 
 std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const PendingAim& aim) {
