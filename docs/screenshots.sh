@@ -23,6 +23,15 @@ shot "" docs/level_select.png
 shot levels/40_scatter.json docs/weapon_level.png
 shot levels/37_castle_duel.json docs/castle_duel.png --warmup 6
 
+# The lab: explicit Euler at 30 Hz on First shot, recorded and watched as a replay 150
+# ticks of 120 Hz in (5 s of the match's 30 Hz, after the landing): the exact path beside
+# the trail and the verdict that carries the comparison.
+"$exe" run levels/12_first_shot.json --commands tests/data/first_shot_euler_30hz.json \
+  --ticks 400 --record "$scratch/euler.replay.json" >/dev/null
+"$exe" play --replay "$scratch/euler.replay.json" --headless --warmup 1.25 --frames 3 \
+  --screenshot docs/lab_exact_path.png >/dev/null
+echo "drew docs/lab_exact_path.png"
+
 # The lesson screen: the first chapter's Lesson button, on the level select.
 for tool in Xvfb xdotool import; do
   command -v "$tool" >/dev/null || { echo "screenshots.sh: $tool is missing (apt-get install xvfb xdotool imagemagick)" >&2; exit 2; }
@@ -39,3 +48,18 @@ sleep 1.5
 DISPLAY=$display import -window root docs/lesson.png
 echo "drew docs/lesson.png"
 kill "$game" 2>/dev/null || true
+
+# Compare in one key: X on First shot (no air) and on Air drag, the paths, their legend
+# and the shot's work-precision chart.
+compare() { # LEVEL PNG
+  DISPLAY=$display "$exe" play "$1" --progress "$scratch/progress.json" --frames 600 >/dev/null 2>&1 &
+  game=$!
+  sleep 3
+  DISPLAY=$display xdotool key x
+  sleep 1.5
+  DISPLAY=$display import -window root "$2"
+  echo "drew $2"
+  kill "$game" 2>/dev/null || true
+}
+compare levels/12_first_shot.json docs/lab_compare.png
+compare levels/18_air_drag.json docs/lab_compare_drag.png

@@ -2,12 +2,12 @@
 // each path against the reference, with its error where it comes back down to the
 // launch height.
 //
-// Reference: with gravity alone the closed form p0 + v0 t + g t^2/2 (exact at any dt);
-// with drag, wind or water, RK4 at 1/16 of the tick (order 4, so its own error is
-// 16^4 = 65536 times below RK4 at the tick). Every path flies through the level's forces
-// but past its blocks and targets, and lands where it first goes down through the
-// level's terrain as it is now (craters included), or, for a clean comparison on a
-// level line, where it comes back down to the launch height.
+// Reference: with gravity alone (wind without drag included) the closed form
+// p0 + v0 t + g t^2/2 (exact at any dt); with drag or water, RK4 at 1/16 of the tick
+// (order 4, so its own error is 16^4 = 65536 times below RK4 at the tick). Every path
+// flies through the level's forces but past its blocks and targets, and lands where it
+// first goes down through the level's terrain as it is now (craters included), or, for a
+// clean comparison on a level line, where it comes back down to the launch height.
 #pragma once
 
 #include "game/match.h"
@@ -22,7 +22,7 @@ namespace game {
 /// What a path's landing error is measured against.
 enum class LandingReference {
     ClosedForm, ///< exact under uniform gravity: p0 + v0 t + g t^2/2
-    FineRK4,    ///< RK4 at tick / CompareDef::referenceRefinement (drag, wind or water act)
+    FineRK4,    ///< RK4 at tick / CompareDef::referenceRefinement (drag or water act)
 };
 const char* landingReferenceName(LandingReference r);
 
@@ -48,16 +48,33 @@ struct IntegratorPath {
     phys::Vec2 landing;          ///< where it first went down through the surface, m
     double flightTime = 0.0;     ///< s, to the landing
     double landingError = 0.0;   ///< |landing - reference landing|, m (0 for the reference)
+    long steps = 0;              ///< ticks flown, to the landing (flown paths)
     LandingReference reference = LandingReference::ClosedForm;
 };
+
+/// The shell the compare fires: the current cannon's selected projectile, from the muzzle
+/// at (angleDeg, speedMps).
+phys::ParticleDef compareShell(const Match& match, double angleDeg, double speedMps);
+
+/// `shell` flown with `integrator` at `tickSeconds` through the match's forces, past its
+/// blocks and targets, to where it goes down through def.surface (within def.maxSeconds).
+/// The landing inside the last tick is on the cubic Hermite interpolant of the states
+/// either side of it. `keepPoints` false keeps only the muzzle and the landing.
+IntegratorPath flyPath(const Match& match, phys::Integrator integrator, double tickSeconds,
+                       const phys::ParticleDef& shell, const CompareDef& def,
+                       bool keepPoints = true);
+
+/// The path the others are measured against, sampled at `tickSeconds`: the closed form
+/// where it is exact (Match::closedFormExact), else RK4 at tickSeconds /
+/// def.referenceRefinement.
+IntegratorPath referencePath(const Match& match, double tickSeconds,
+                             const phys::ParticleDef& shell, const CompareDef& def);
 
 /// Fires the current cannon's selected projectile from the muzzle at (angleDeg,
 /// speedMps) once per integrator in phys::integrators(), under the match's forces,
 /// tick and sub-steps (model policy Integrate, so every integrator really runs), and
-/// appends the reference path last (isReference). The landing point inside the last
-/// tick is found on the parabola from the state before it (gravity alone; the chord to
-/// the state after it if the parabola does not reach the ground), so an integrator whose
-/// state is exact (RK4, velocity Verlet under gravity) lands exactly.
+/// appends the reference path last (isReference). An integrator whose states are exact
+/// (RK4, velocity Verlet under gravity) lands exactly.
 std::vector<IntegratorPath> compareIntegrators(const Match& match, double angleDeg,
                                                double speedMps, const CompareDef& def = {});
 

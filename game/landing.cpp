@@ -112,7 +112,7 @@ void Match::reportLanding(Vec2 shellNow) {
     ev.tick = tick();
     ev.kind = EventKind::Landed;
     ev.player = current_;
-    const bool exact = ballisticOnly();
+    const bool exact = closedFormExact();
     if (first) {
         const bool onShape = first->b == phys::kNoParticle;
         ev.where = first->a == shell_ ? first->position : shellNow;
@@ -134,7 +134,7 @@ void Match::reportLanding(Vec2 shellNow) {
             break;
         }
     }
-    events_.push_back(std::move(ev));
+    emit(std::move(ev));
 }
 
 } // namespace game

@@ -222,7 +222,11 @@ void Match::addBlob(const Blob& b) {
 }
 
 void Match::emit(EventKind kind, int player, Vec2 where, double value, std::string text) {
-    events_.push_back({tick(), kind, player, where, value, std::move(text), {}, std::nullopt});
+    emit({tick(), kind, player, where, value, std::move(text), {}, std::nullopt});
+}
+
+void Match::emit(GameEvent e) {
+    events_.push_back(std::move(e));
     judge_.observe(*this, events_.back());
 }
 
@@ -231,10 +235,15 @@ std::optional<ParticleId> Match::shell() const {
     return shell_;
 }
 
-bool Match::ballisticOnly() const {
+bool Match::closedFormExact() const {
     const ForceDef& f = world_.def().forces;
     const bool drag = f.drag != DragModel::None && (f.airDensity > 0.0 || f.drag == DragModel::Linear);
-    return !drag && f.wind.x == 0.0 && f.wind.y == 0.0 && !f.water;
+    return !drag && !f.water;
+}
+
+bool Match::ballisticOnly() const {
+    const ForceDef& f = world_.def().forces;
+    return closedFormExact() && f.wind.x == 0.0 && f.wind.y == 0.0;
 }
 
 Vec2 Match::muzzle(double angleDeg) const {
@@ -295,8 +304,8 @@ void Match::fire() {
     if (!sandbox() && c.projectile < c.ammoLeft.size() && c.ammoLeft[c.projectile] > 0)
         --c.ammoLeft[c.projectile];
     ++shotsFired_;
-    emit(EventKind::Fired, current_, pd.position, c.speedMps, shellAmmo_.preset.name);
-    events_.back().model = shotModelName(world_.def(), pd);
+    emit({tick(), EventKind::Fired, current_, pd.position, c.speedMps, shellAmmo_.preset.name,
+          shotModelName(world_.def(), pd), std::nullopt});
 }
 
 void Match::burst(Vec2 at, int spared, ParticleId piece) {

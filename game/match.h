@@ -198,6 +198,11 @@ class Match {
     /// True when only uniform gravity acts on a shell (no drag, no wind, no water): the
     /// firing solution is exact.
     bool ballisticOnly() const;
+    /// True when a shell's path is the closed form p0 + v0 t + g t^2/2: no drag and no
+    /// water. Wind acts on a shell only through drag (on v - wind, phys::ForceDef), so wind
+    /// without drag leaves the path exact. The `landed` event's closed_form_error_m and
+    /// the compare's reference go by this; the firing solutions by ballisticOnly.
+    bool closedFormExact() const;
 
     /// Points a shell fired now from the current cannon would pass through, computed by
     /// the same physics (integrator, tick, drag, wind, terrain and obstacles), up to the
@@ -264,6 +269,8 @@ class Match {
     void nextTurn();
     void finish();
     void emit(EventKind kind, int player, phys::Vec2 where, double value, std::string text = {});
+    /// Records the event and lets the shot's judge see it.
+    void emit(GameEvent e);
     void updateTargets();
     // The commands (match_commands.cpp): each refused with one line, as a Refused event.
     std::string refuse(const Command& cmd, std::string why);

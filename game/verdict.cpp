@@ -1,5 +1,6 @@
 #include "game/verdict.h"
 
+#include "game/exact_path.h"
 #include "game/match.h"
 #include "game/standing_targets.h"
 
@@ -97,6 +98,12 @@ void ShotJudge::observe(const Match& m, const GameEvent& e) {
         open_ = true;
         tally_.player = e.player;
         tally_.landing = e.where;
+        model_ = e.model;
+        break;
+    case EventKind::Landed:
+        if (open_ && comparison_.empty())
+            if (const std::optional<ExactPath> exact = exactPathOf(m, e, model_))
+                comparison_ = exactPathText(*exact);
         break;
     case EventKind::Burst:
         if (open_ && !shotOver_) sample(m, e.where);
@@ -149,6 +156,7 @@ GameEvent ShotJudge::verdict(const Match& m) {
     e.value = duel ? 0.0 : tally_.points;
     tally_.side = missSide(nearest_ < crossed_.size() ? crossed_[nearest_] : 0);
     e.text = verdictText(tally_, duel, cannonNames(m));
+    if (!comparison_.empty()) e.text += "; " + comparison_;
     return e;
 }
 

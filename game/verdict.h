@@ -4,7 +4,10 @@
 // shot or the match's end, whichever comes first. The match reports it as a Verdict event
 // (value: the points the shot earned, 0 in a duel); the screen shows that text and no
 // other, so the screen and `artillery run --json` say the same. A sandbox has no
-// targets and no score: its shots get no verdict.
+// targets and no score: its shots get no verdict. A shot flown by an integrator where the
+// closed form is exact adds how far it landed from the exact path, in the same words
+// (exactPathText): "missed by 0.5 m, over; explicit Euler, 30 Hz: 0.69 m long of the
+// exact path; energy +1.5 %".
 //
 // A miss is measured from the shell's path to the outline of each target still standing
 // (a disc's rim, a block's box, a blob's circle; the enemy cannons in a duel): the
@@ -79,6 +82,8 @@ class ShotJudge {
     bool shotOver_ = false;
     std::uint64_t overTick_ = 0;
     ShotTally tally_;
+    std::string model_;      ///< what flies the shot (the `fired` event's model)
+    std::string comparison_; ///< its landing against the exact path (game/exact_path.h)
 };
 
 } // namespace game

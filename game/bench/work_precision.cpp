@@ -50,21 +50,28 @@ std::vector<WorkPrecisionPoint> runWorkPrecision(const WorkPrecisionDef& def,
     return out;
 }
 
-double convergenceSlope(const std::vector<WorkPrecisionPoint>& points, Integrator m,
-                        double floor) {
+double logLogSlope(const std::vector<double>& x, const std::vector<double>& y, double floor) {
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     int n = 0;
-    for (const auto& p : points) {
-        if (p.integrator != m || !std::isfinite(p.error) || p.error <= floor) continue;
-        const double x = std::log(p.dt), y = std::log(p.error);
-        sx += x;
-        sy += y;
-        sxx += x * x;
-        sxy += x * y;
+    for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
+        if (!std::isfinite(y[i]) || y[i] <= floor || !(x[i] > 0.0)) continue;
+        const double lx = std::log(x[i]), ly = std::log(y[i]);
+        sx += lx;
+        sy += ly;
+        sxx += lx * lx;
+        sxy += lx * ly;
         ++n;
     }
     if (n < 2) return NAN;
     return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+double convergenceSlope(const std::vector<WorkPrecisionPoint>& points, Integrator m,
+                        double floor) {
+    std::vector<double> dt, error;
+    for (const auto& p : points)
+        if (p.integrator == m) dt.push_back(p.dt), error.push_back(p.error);
+    return logLogSlope(dt, error, floor);
 }
 
 const WorkPrecisionPoint* cheapestWithin(const std::vector<WorkPrecisionPoint>& points,

@@ -33,6 +33,10 @@ struct WorkPrecisionDef {
 std::vector<WorkPrecisionPoint> runWorkPrecision(
     const WorkPrecisionDef& def, const std::function<void(int, int)>& progress = {});
 
+/// Least-squares slope of log(y) against log(x) over the pairs whose y is finite and
+/// above `floor` (and x positive); NaN with fewer than two.
+double logLogSlope(const std::vector<double>& x, const std::vector<double>& y, double floor);
+
 /// Least-squares slope of log(error) against log(dt) over the points of one integrator
 /// whose error is finite and above the rounding floor `floor` (m). The order of accuracy.
 double convergenceSlope(const std::vector<WorkPrecisionPoint>& points, phys::Integrator m,

@@ -29,7 +29,7 @@ void ShotFeedback::event(const Match& m, const GameEvent& e) {
         break;
     case EventKind::Landed:
         if (inFlight_ && (exact_ = exactPathOf(m, e, model_)))
-            notes_.push_back({ShotNote::Kind::Exact, exact_->exactLanding, exactPathText(*exact_), 0.0, 8.0});
+            notes_.push_back({ShotNote::Kind::Exact, exact_->exactLanding, {}, 0.0, 8.0});
         break;
     case EventKind::Burst:
         shellAt_ = e.where;

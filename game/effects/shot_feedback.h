@@ -4,7 +4,7 @@
 // match: it reads, never writes, and judges nothing itself.
 #pragma once
 
-#include "game/effects/exact_path.h"
+#include "game/exact_path.h"
 #include "physics/vec2.h"
 
 #include <optional>
@@ -20,8 +20,9 @@ struct GameEvent;
 
 struct ShotNote {
     /// Miss: a marker where a shot that scored nothing came down; Verdict: the shot's
-    /// verdict (its text), until the next shot; Hit: a marker where it scored; Exact: how
-    /// far from the exact path an integrator's shot landed (at the exact landing).
+    /// verdict (its text), until the next shot; Hit: a marker where it scored; Exact: the
+    /// exact path beside an integrator's shot, to its landing (how far apart they came
+    /// down is the verdict's, in its words).
     enum class Kind { Miss, Hit, Verdict, Exact } kind = Kind::Miss;
     phys::Vec2 where; ///< m
     std::string text;

@@ -24,3 +24,8 @@ cli_test(replay_verify_usage 2 "usage is: artillery replay verify FILE" "replay;
 cli_test(run_json_model_and_landing 0
          "\"kind\":\"fired\",\"model\":\"explicit-euler\".*\"closed_form_error_m\":0\\.69[0-9]*,\"kind\":\"landed\""
          "run;${levels}/12_first_shot.json;--commands;${PROJECT_SOURCE_DIR}/tests/data/first_shot_euler_30hz.json;--ticks;200;--json")
+# The verdict of a shot flown by an integrator where the closed form is exact carries the
+# comparison, in the words the screen shows.
+cli_test(run_json_verdict_carries_the_exact_path 0
+         "\"kind\":\"verdict\"[^}]*\"text\":\"missed by [0-9.]+ m, [a-z]+; explicit Euler, 30 Hz: 0\\.69 m long of the exact path; energy \\+1\\.5 %\""
+         "run;${levels}/12_first_shot.json;--commands;${PROJECT_SOURCE_DIR}/tests/data/first_shot_euler_30hz.json;--ticks;600;--json")

@@ -103,3 +103,21 @@ TEST(Compare, WithDragTheReferenceIsFineRk4AndRk4IsClose) {
     EXPECT_LT(rk4, 1e-3);
     EXPECT_GT(euler, 100.0 * rk4);
 }
+
+TEST(Compare, WindWithoutDragKeepsTheClosedFormAsTheReference) {
+    Level windy = level("01_earth_basics.json");
+    ASSERT_FALSE(windy.physics.drag);
+    windy.physics.windMin = windy.physics.windMax = -12.0;
+    const Match m(windy);
+    ASSERT_NE(m.wind(), 0.0);
+    const auto paths = compareIntegrators(m, 50.0, 30.0, onLaunchHeight());
+    EXPECT_EQ(paths.back().reference, LandingReference::ClosedForm);
+    EXPECT_EQ(paths.back().name, "closed-form");
+    // The wind reaches no shell without drag: RK4 still lands on the closed form, and
+    // every path lands where it does on the still level, to the bit.
+    EXPECT_LT(find(paths, phys::Integrator::RK4).landingError, 1e-9);
+    const Match calm(level("01_earth_basics.json"));
+    const auto still = compareIntegrators(calm, 50.0, 30.0, onLaunchHeight());
+    for (std::size_t i = 0; i < paths.size(); ++i)
+        EXPECT_EQ(paths[i].landing.x, still[i].landing.x) << paths[i].name;
+}

@@ -2,6 +2,7 @@
 // of each landing error and cost per step, placed where it covers nothing.
 #include "headless_game.h"
 #include "game/level.h"
+#include "ui/game/compare_chart.h"
 #include "ui/game/stats_panel.h"
 
 #include <gtest/gtest.h>
@@ -45,4 +46,56 @@ TEST(CompareKey, XDrawsThePathsWithALegendThatCoversNothing) {
         for (int i = 0; i < 2; ++i) game.screen->frame(1.0 / 60.0);
         EXPECT_FALSE(hasLegend());
     }
+}
+
+// The work-precision chart of the compared shot stands beside the legend, drawn with a
+// line per integrator in its path's colour, and covers no target, cannon, shell or impact;
+// on a small screen too (where it is drawn at the HUD's scale).
+TEST(CompareKey, XDrawsTheShotsWorkPrecisionChartCoveringNothing) {
+    const test_game::ScratchFolder scratch("compare-chart");
+    struct Case {
+        const char* level;
+        int width, height;
+    };
+    for (const auto [level, width, height] :
+         {Case{"12_first_shot.json", 1280, 720}, Case{"03_windy_valley.json", 1280, 720},
+          Case{"05_castle.json", 1280, 720}, Case{"03_windy_valley.json", 960, 540}}) {
+        test_game::HeadlessGame game(level, width, height, scratch.dir);
+        ASSERT_NE(game.screen, nullptr);
+        test_game::tap(*game.screen, SDLK_x);
+        for (int i = 0; i < 2; ++i) game.screen->frame(1.0 / 60.0);
+        const ui::ScreenLayout& layout = game.screen->layout();
+        const auto named = [&](const char* name) {
+            return std::find_if(layout.overlays.begin(), layout.overlays.end(),
+                                [&](const ui::LayoutOverlay& o) { return o.name == name; });
+        };
+        const auto chart = named("compare.chart"), legend = named("compare.legend");
+        ASSERT_NE(legend, layout.overlays.end()) << level;
+        ASSERT_NE(chart, layout.overlays.end()) << level;
+        EXPECT_FALSE(chart->rect.overlaps(legend->rect)) << level;
+        for (const ui::Covering& c : ui::coverings(layout))
+            ADD_FAILURE() << level << ": " << ui::describe(layout, c);
+    }
+}
+
+TEST(CompareKey, TheChartHasALinePerIntegratorInItsPathsColour) {
+    const game::Match m(
+        game::loadLevel((test_game::kRoot / "levels" / "12_first_shot.json").string()));
+    ui::StatsPanel stats;
+    stats.toggleCompare(m, ui::PendingAim{45.0, 30.0});
+    const ui::charts::Chart chart = ui::shotWorkChart(stats.work());
+    ASSERT_EQ(chart.series.size(), phys::integrators().size());
+    for (std::size_t i = 0; i < chart.series.size(); ++i) {
+        const phys::Integrator id = phys::integrators()[i].id;
+        EXPECT_EQ(chart.series[i].name, phys::info(id).name);
+        const ui::Color c = ui::compareColor(id);
+        EXPECT_EQ(chart.series[i].color.r, c.r);
+        EXPECT_EQ(chart.series[i].color.g, c.g);
+        ASSERT_EQ(chart.series[i].points.size(), 5u);
+        // Cost rises as the tick halves; an exact landing sits on the floor.
+        for (std::size_t k = 1; k < 5; ++k)
+            EXPECT_GT(chart.series[i].points[k].x, chart.series[i].points[k - 1].x);
+    }
+    for (const phys::Vec2 p : chart.series[static_cast<std::size_t>(phys::Integrator::RK4)].points)
+        EXPECT_EQ(p.y, ui::kShotWorkFloor);
 }

@@ -13,6 +13,7 @@
 #include <imgui_internal.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -200,6 +201,35 @@ TEST(ScreenLayout, TheEndCardAndTheVerdictCoverNothing) {
         EXPECT_NE(std::find(drawn.begin(), drawn.end(), "hud.verdict"), drawn.end()) << name;
         EXPECT_TRUE(ui::coverings(layout).empty()) << name << ":" << coveringsOf(layout);
     }
+}
+
+// A shot flown by explicit Euler at 30 Hz (recorded by `run`, watched as a replay 5 s in,
+// after its landing): its one verdict carries the comparison with the exact path, a line
+// far longer than the miss alone ("missed by 1.0 m, over" is some 200 px), and it covers
+// nothing.
+TEST(ScreenLayout, AnIntegratorsVerdictCarriesTheExactPathAndCoversNothing) {
+    Scratch scratch;
+    fs::create_directories(scratch.dir);
+    const fs::path replay = scratch.dir / "euler.replay.json";
+    const fs::path level = test_game::kRoot / "levels" / "12_first_shot.json";
+    const fs::path commands = test_game::kRoot / "tests" / "data" / "first_shot_euler_30hz.json";
+    const std::string command = std::string(ARTILLERY_EXE) + " run " + level.string() +
+                                " --commands " + commands.string() + " --ticks 400 --record " +
+                                replay.string() + " > /dev/null";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    ReplayOnScreen on(replay);
+    ASSERT_NE(on.screen, nullptr);
+    on.screen->warmUp(150.0 / 120.0);
+    for (int i = 0; i < 3; ++i) on.screen->frame(1.0 / 120.0);
+    const ui::ScreenLayout& layout = on.screen->layout();
+    std::size_t verdicts = 0;
+    for (const ui::LayoutOverlay& o : layout.overlays) {
+        if (o.name != "hud.verdict") continue;
+        ++verdicts;
+        EXPECT_GT(o.rect.x1 - o.rect.x0, 500.0);
+    }
+    EXPECT_EQ(verdicts, 1u);
+    EXPECT_TRUE(ui::coverings(layout).empty()) << coveringsOf(layout);
 }
 
 TEST(ScreenLayout, TheTurnsControlsFitWhatTheyHold) {

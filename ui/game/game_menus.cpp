@@ -373,7 +373,7 @@ void helpOverlay(bool& open) {
         {"F2, F6", "the lab: physics panel, Stats window (compare integrators, energy, charts)"},
         {"F3", "the cost in a corner: frame time, physics time per tick, what each model moves"},
         {"M", "measuring tools: probe a path, tape measure, stopwatch, off (the mouse measures)"},
-        {"X", "compare: every integrator fires the aim on screen, with each landing error and cost"},
+        {"X", "compare: every integrator fires the aim, each landing error and cost, and their chart"},
         {". (period)", "one tick (pauses)"},
         {"[ / ]", "slower / faster (x1/16 .. x4); \\ back to x1"},
         {"K", "pause / resume the simulation"},

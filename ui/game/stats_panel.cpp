@@ -1,5 +1,6 @@
 #include "ui/game/stats_panel.h"
 
+#include "ui/game/compare_chart.h"
 #include "ui/game/level_camera.h"
 #include "ui/platform/imgui_layer.h"
 #include "ui/render/design_canvas.h"
@@ -18,24 +19,22 @@ namespace ui {
 
 namespace {
 
-/// A colour per integrator in phys::integrators() order, then the reference (white).
-Color pathColor(const game::IntegratorPath& p) {
-    static const Color kPalette[] = {
-        Color(0.95f, 0.25f, 0.25f), // explicit-euler: red
-        Color(1.00f, 0.60f, 0.10f), // symplectic-euler: orange
-        Color(0.95f, 0.90f, 0.20f), // verlet: yellow
-        Color(0.30f, 0.85f, 0.30f), // velocity-verlet: green
-        Color(0.20f, 0.85f, 0.85f), // leapfrog: cyan
-        Color(0.35f, 0.50f, 1.00f), // midpoint: blue
-        Color(0.80f, 0.40f, 0.95f), // rk4: violet
-        Color(0.95f, 0.45f, 0.75f), // implicit-euler: pink
-    };
-    if (p.isReference) return Color(1.0f, 1.0f, 1.0f);
-    const auto i = static_cast<std::size_t>(p.integrator);
-    return i < std::size(kPalette) ? kPalette[i] : Color(0.7f, 0.7f, 0.7f);
-}
-
 ImVec4 imColor(Color c) { return ImVec4(c.r, c.g, c.b, c.a); }
+
+/// The work-precision chart's size at full text size, px.
+constexpr double kChartW = 340.0, kChartH = 210.0;
+
+/// The first of `places` clear of the objects and overlays of `layout` on a W x H screen,
+/// added to it as `name`; without a layout, the first place.
+std::optional<PixelRect> placeOverlay(ScreenLayout* layout, const char* name,
+                                      const std::vector<PixelRect>& places, double W, double H) {
+    if (!layout) return places.front();
+    std::vector<PixelRect> avoid = layout->objectRects();
+    for (const PixelRect& o : layout->overlayRects()) avoid.push_back(o);
+    const auto clear = firstClear(places, avoid, PixelRect{0.0, 0.0, W, H});
+    if (clear) layout->addOverlay(name, *clear);
+    return clear;
+}
 
 /// One row of the legend in its three columns: the path, its landing error, its cost.
 std::array<std::string, 3> legendRow(const game::IntegratorPath& p) {
@@ -102,13 +101,14 @@ std::optional<double> StatsPanel::energyTrend(double seconds) const {
 
 void StatsPanel::runCompare(const game::Match& match, const PendingAim& aim) {
     paths_ = game::compareIntegrators(match, aim.angleDeg, aim.speedMps);
+    work_ = game::shotWorkPrecision(match, aim.angleDeg, aim.speedMps);
     const phys::WorldDef& d = match.world().def();
     key_ = {aim.angleDeg, aim.speedMps, d.tickSeconds, match.wind(),
             static_cast<int>(phys::integrators().size()),
             static_cast<int>(match.cannon().projectile), static_cast<int>(d.forces.drag)};
 }
 
-void StatsPanel::drawLegend(Renderer2D& r, ScreenLayout* layout) const {
+std::optional<PixelRect> StatsPanel::drawLegend(Renderer2D& r, ScreenLayout* layout) const {
     // The legend, in pixels: under the wind box in the middle, else the top corners under
     // the HUD's band, else the bottom right; wherever it covers nothing on screen.
     const std::size_t lines = paths_.size();
@@ -119,23 +119,46 @@ void StatsPanel::drawLegend(Renderer2D& r, ScreenLayout* layout) const {
                                            {m, top, m + w, top + h},
                                            {W - m - w, top, W - m, top + h},
                                            {W - m - w, H - m - h - 100.0 * u, W - m, H - m - 100.0 * u}};
-    PixelRect at = places.front();
-    if (layout) {
-        std::vector<PixelRect> avoid = layout->objectRects();
-        for (const PixelRect& o : layout->overlayRects()) avoid.push_back(o);
-        const auto clear = firstClear(places, avoid, PixelRect{0.0, 0.0, W, H});
-        if (!clear) return; // nowhere clear: the paths speak for themselves
-        at = *clear;
-        layout->addOverlay("compare.legend", at);
-    }
+    const auto placed = placeOverlay(layout, "compare.legend", places, W, H);
+    if (!placed) return std::nullopt; // nowhere clear: the paths speak for themselves
+    const PixelRect at = *placed;
     const double columns[3] = {4.0, 140.0, 245.0}; // design px: path, error, cost
     double y = at.y0 + 4.0 * u;
     for (const game::IntegratorPath& p : paths_) {
         const auto row = legendRow(p);
         for (std::size_t c = 0; c < 3; ++c)
-            r.screenLabel({at.x0 + columns[c] * u, y}, row[c], pathColor(p), static_cast<float>(u));
+            r.screenLabel({at.x0 + columns[c] * u, y}, row[c], compareColor(p),
+                          static_cast<float>(u));
         y += 16.0 * u;
     }
+    return at;
+}
+
+void StatsPanel::drawWorkChart(Renderer2D& r, const PixelRect& legend, ScreenLayout* layout) const {
+    // Beside the legend: under it, at its left, at its right, above it; else in a corner
+    // under the HUD's band; wherever it covers nothing. The chart's text is of a fixed
+    // size (charts::ChartStyle), so it is first tried at no less than its full size, then
+    // (on a small screen) at the HUD's scale with its text scaled alike.
+    const double W = r.camera().width, H = r.camera().height, u = hudScale(W, H);
+    const double g = 8.0 * u, m = 12.0 * u, top = kHudTopBand * u;
+    std::vector<PixelRect> places;
+    for (const double k : {std::max(u, 1.0), std::min(u, 1.0)}) {
+        const double w = kChartW * k, h = kChartH * k;
+        places.insert(places.end(),
+                      {{legend.x0, legend.y1 + g, legend.x0 + w, legend.y1 + g + h},
+                       {legend.x0 - g - w, legend.y0, legend.x0 - g, legend.y0 + h},
+                       {legend.x1 + g, legend.y0, legend.x1 + g + w, legend.y0 + h},
+                       {legend.x0, legend.y0 - g - h, legend.x0 + w, legend.y0 - g},
+                       {m, top, m + w, top + h},
+                       {W - m - w, top, W - m, top + h},
+                       {W - m - w, H - m - h - 100.0 * u, W - m, H - m - 100.0 * u}});
+    }
+    const auto at = placeOverlay(layout, "compare.chart", places, W, H);
+    if (!at) return; // nowhere clear: the legend's errors say it in numbers
+    charts::ChartStyle style;
+    style.textScale *= static_cast<float>(std::min(1.0, (at->x1 - at->x0) / kChartW));
+    charts::drawChart(r, shotWorkChart(work_), {at->x0, at->y0, at->x1 - at->x0, at->y1 - at->y0},
+                      style);
 }
 
 std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const PendingAim& aim) {
@@ -162,7 +185,7 @@ std::optional<phys::WorldDef> StatsPanel::panel(const game::Match& match, const 
                 ImGui::TextDisabled("landing error vs %s, tick %.4g s", ref.name.c_str(),
                                     match.world().def().tickSeconds);
                 for (const game::IntegratorPath& p : paths_) {
-                    ImGui::TextColored(imColor(pathColor(p)), "%-18s", p.name.c_str());
+                    ImGui::TextColored(imColor(compareColor(p)), "%-18s", p.name.c_str());
                     ImGui::SameLine(panelPx(160));
                     if (p.isReference)
                         ImGui::Text(p.landed ? "lands x = %.2f m" : "no landing", p.landing.x);
@@ -241,11 +264,11 @@ void StatsPanel::drawWorld(Renderer2D& r, const game::Match& match, ScreenLayout
     (void)match;
     if (showCompare) {
         for (const game::IntegratorPath& p : paths_) {
-            const Color c = pathColor(p);
+            const Color c = compareColor(p);
             r.polyline(p.points, c, p.isReference ? 1.5f : 2.0f);
             if (p.landed) r.fillCircle(p.landing, 0.0, c, 4.0f);
         }
-        drawLegend(r, layout);
+        if (const auto legend = drawLegend(r, layout)) drawWorkChart(r, *legend, layout);
     }
     if (chartsShown()) { // folding the panel folds away its charts too
         // The charts (chartsArea) map pixels (chart.h), so they are drawn through a camera

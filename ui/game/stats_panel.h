@@ -12,6 +12,7 @@
 #pragma once
 
 #include "game/compare.h"
+#include "game/compare_work.h"
 #include "game/match.h"
 #include "ui/charts/charts_panel.h"
 #include "ui/game/match_view.h"
@@ -46,6 +47,8 @@ class StatsPanel {
     /// is the aim on screen. Returns world settings to apply when the charts' "Use it"
     /// was pressed.
     std::optional<phys::WorldDef> panel(const game::Match& match, const PendingAim& aim);
+    /// The compared shot's work-precision (empty before the first compare).
+    const game::ShotWork& work() const { return work_; }
     /// Every frame, shown or not: the compare paths follow the aim (and the tick, the
     /// wind, the projectile, drag) while they are on and "follow the aim" is ticked.
     void followAim(const game::Match& match, const PendingAim& aim);
@@ -54,7 +57,8 @@ class StatsPanel {
     void toggleCompare(const game::Match& match, const PendingAim& aim);
     /// Compare paths and the charts, through the match's camera (begin() already called).
     /// The legend stands where it covers nothing in `layout` (when given) and is added
-    /// to it as the overlay "compare.legend"; with no clear place it is left out.
+    /// to it as the overlay "compare.legend"; with no clear place it is left out. The
+    /// shot's work-precision chart stands beside it the same way ("compare.chart").
     void drawWorld(Renderer2D& r, const game::Match& match, ScreenLayout* layout = nullptr);
     /// The legend's lines: each path's name, its landing error against the reference and
     /// its cost, force evaluations per step ("explicit-euler  0.691 m  1 eval/step").
@@ -73,7 +77,11 @@ class StatsPanel {
 
   private:
     void runCompare(const game::Match& match, const PendingAim& aim);
-    void drawLegend(Renderer2D& r, ScreenLayout* layout) const;
+    /// The legend, where it covers nothing; returns where (none: left out).
+    std::optional<PixelRect> drawLegend(Renderer2D& r, ScreenLayout* layout) const;
+    /// The shot's work-precision chart beside the legend at `legend`, where it covers
+    /// nothing, as the overlay "compare.chart".
+    void drawWorkChart(Renderer2D& r, const PixelRect& legend, ScreenLayout* layout) const;
 
     // Ring buffer of samples, at most historySeconds / tick of them.
     std::vector<float> energy_, momentum_;
@@ -84,6 +92,7 @@ class StatsPanel {
     ConservedSample last_;
 
     std::vector<game::IntegratorPath> paths_;
+    game::ShotWork work_; ///< the compared shot's work-precision (game/compare_work.h)
     bool followAim_ = true;
     struct Key {
         double angle = 0, speed = 0, tick = 0, wind = 0;

@@ -1,4 +1,4 @@
-#include "game/effects/exact_path.h"
+#include "game/exact_path.h"
 
 #include "game/match.h"
 #include "game/shot_model.h"
