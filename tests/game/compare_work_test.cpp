@@ -77,8 +77,7 @@ TEST(CompareWork, WithDragEachSlopeIsTheMethodsOrderAgainstFineRk4) {
     EXPECT_EQ(w.reference, LandingReference::FineRK4);
     for (const ShotWorkLine& l : w.lines) {
         std::string errors;
-        for (const ShotWorkPoint& p : l.points)
-            errors += " " + std::to_string(p.error);
+        for (const ShotWorkPoint& p : l.points) errors.append(" ").append(std::to_string(p.error));
         EXPECT_NEAR(observedOrder(l), phys::info(l.integrator).order, 0.3)
             << l.name << ":" << errors;
     }
