@@ -578,7 +578,7 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
         const phys::ParticleSet& ps = m.world().particles;
         const Vec2 p = ps.position(*shell);
         const double rad = shellDrawRadius(ps.radius[*shell], r.camera());
-        r.fillCircle(p, rad * 1.6, Color::hex(0xffffff, 0.35f));
+        r.fillCircle(p, rad * kShellGlow, Color::hex(0xffffff, 0.35f));
         r.fillCircle(p, rad, kShell);
         r.fillCircle(p + Vec2{-0.3, 0.3} * rad, rad * 0.35, Color::hex(0x8a9099));
         drawWeaponShell(r, m, rad);
@@ -648,7 +648,7 @@ void MatchView::addObjects(const Renderer2D& r, const Match& m, const MatchViewO
     }
     if (const auto shell = m.shell()) {
         const phys::ParticleSet& ps = m.world().particles;
-        const double rad = 1.6 * shellDrawRadius(ps.radius[*shell], c);
+        const double rad = kShellGlow * shellDrawRadius(ps.radius[*shell], c);
         add("shell", ps.position(*shell) - Vec2{rad, rad}, ps.position(*shell) + Vec2{rad, rad});
     }
     for (const game::Flash& f : effects_.flashes()) {

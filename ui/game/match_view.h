@@ -128,8 +128,12 @@ double cannonDrawScale(const Camera& camera);
 
 /// A target's radius as drawn, m: never under 6 px, so a far target is still a bullseye.
 double targetDrawRadius(const game::TargetState& target, const Camera& camera);
-/// The shell's radius as drawn, m: never under 4 px (its glow reaches 1.6 times that).
+/// The shell's radius as drawn, m: never under 4 px, so a shell smaller than 6 px across
+/// on screen is drawn larger than life (its glow reaches kShellGlow times that).
 double shellDrawRadius(double radius, const Camera& camera);
+/// How far the shell's glow reaches, in shell radii as drawn: the layout reports the
+/// shell by its glow.
+inline constexpr double kShellGlow = 1.6;
 
 /// Half extents of the axis-aligned box around a block turned by its body's angle, m.
 phys::Vec2 turnedHalf(const game::Match& match, const game::BlockState& block);
