@@ -9,6 +9,7 @@
 #include "ui/game/weapon_look.h"
 
 #include "game/ai.h"
+#include "ui/game/cloth_view.h"
 #include "ui/game/effects_view.h"
 #include "ui/game/palette.h"
 #include "ui/game/screen_layout.h"
@@ -292,7 +293,7 @@ void drawBlobs(Renderer2D& r, const Match& m) {
     }
 }
 
-/// Particles that are not ropes, blobs or the shell: sandbox spawns and fragments.
+/// Particles that are not ropes, blobs, cloth or the shell: sandbox spawns and fragments.
 void drawLooseParticles(Renderer2D& r, const Match& m, std::optional<phys::ParticleId> shell) {
     const phys::ParticleSet& ps = m.world().particles;
     std::vector<bool> owned(ps.slots(), false);
@@ -304,6 +305,7 @@ void drawLooseParticles(Renderer2D& r, const Match& m, std::optional<phys::Parti
         for (int i = 0; i <= b.def.points; ++i)
             if (b.center + static_cast<phys::ParticleId>(i) < owned.size())
                 owned[b.center + static_cast<phys::ParticleId>(i)] = true;
+    markClothParticles(m, owned);
     const double minR = r.camera().metres(2.0);
     for (std::size_t i = 0; i < ps.slots(); ++i) {
         if (!(ps.flags[i] & phys::kAlive) || owned[i]) continue;
@@ -553,6 +555,7 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
     drawRopes(r, m);
     drawBlocks(r, m);
     drawBlobs(r, m);
+    drawCloths(r, m);
     for (const game::TargetState& t : m.targets()) drawTarget(r, t);
 
     const auto shell = m.shell();
