@@ -126,7 +126,12 @@ MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progres
     ImGui::BeginDisabled(!lock.open || !e.error.empty());
     if (ImGui::Button(label.c_str())) chooseLevel(menu, *next, progress, choice);
     ImGui::EndDisabled();
-    if (!lock.open) ImGui::TextColored(kLocked, "locked: %s", lock.why.c_str());
+    if (!lock.open) {
+        // As wide as the results card above it at most: a long reason wraps.
+        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + panelPx(420));
+        ImGui::TextColored(kLocked, "locked: %s", lock.why.c_str());
+        ImGui::PopTextWrapPos();
+    }
     ImGui::SameLine();
     if (ImGui::Button("Levels (L)")) choice.levelSelect = true;
     ImGui::End();
@@ -140,6 +145,7 @@ MenuChoice lessonScreen(const game::Campaign& campaign, std::size_t chapter,
     const ImVec2 d = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(d.x * 0.5f, d.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(std::min(panelPx(760), d.x - panelPx(24)), 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(d.x, d.y - panelPx(16))); // else it scrolls
     ImGui::Begin("Lesson", nullptr,
                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar);
@@ -148,8 +154,9 @@ MenuChoice lessonScreen(const game::Campaign& campaign, std::size_t chapter,
     ImGui::TextUnformatted(ch.title.c_str());
     ImGui::Separator();
     // The idea as a picture, drawn by the game from the chapter's formula.
-    const float width = ImGui::GetContentRegionAvail().x;
-    const ImVec2 size(width, std::round(width * 0.42f));
+    // On a short screen the picture gives up height first, so the text stays in view.
+    const float height = std::min(ImGui::GetContentRegionAvail().x * 0.42f, 0.4f * d.y);
+    const ImVec2 size(std::round(height / 0.42f), std::round(height));
     const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
     if (art.pictures && !art.picture.empty())
         if (const TextureTarget* t = art.pictures->picture(art.picture, static_cast<int>(size.x * scale.x),

@@ -121,6 +121,16 @@ float panelPx(float designPixels) {
     return designPixels * gPanelScale;
 }
 
+void dimWrapped(const std::string& text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    if (ImGui::GetCurrentWindow()->DC.TextWrapPos < 0.0f) {
+        ImGui::TextWrapped("%s", text.c_str());
+    } else {
+        ImGui::TextUnformatted(text.c_str()); // wraps at the position pushed
+    }
+    ImGui::PopStyleColor();
+}
+
 void keepPanelOnScreen(float margin) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
@@ -248,6 +258,15 @@ PixelRect labelRect(const Label& l) {
     const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.0f, l.text.c_str());
     const double x0 = l.pixel.x - l.alignX * extent.x * scale.x;
     return {x0, l.pixel.y, x0 + (extent.x + 1) * scale.x, l.pixel.y + (extent.y + 1) * scale.y};
+}
+
+double designTextWidth(const std::string& text, double scale) {
+    // The labels' face, measured at its design size: its advances scale with the size.
+    const ImGuiIO& io = ImGui::GetIO();
+    const ImFont* font = io.Fonts->Fonts.empty() ? nullptr : io.Fonts->Fonts[0];
+    if (!font || !io.Fonts->IsBuilt())
+        throw std::runtime_error("text measured before the panels' font is loaded");
+    return font->CalcTextSizeA(static_cast<float>(kFontPixels * scale), FLT_MAX, 0.0f, text.c_str()).x;
 }
 
 void ImGuiLayer::render() {
