@@ -161,6 +161,7 @@ MenuChoice lessonScreen(const game::Campaign& campaign, std::size_t chapter,
     if (art.pictures && !art.picture.empty())
         if (const TextureTarget* t = art.pictures->picture(art.picture, static_cast<int>(size.x * scale.x),
                                                            static_cast<int>(size.y * scale.y), art.fbo)) {
+            ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 0.5f * (ImGui::GetContentRegionAvail().x - size.x));
             ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(t->texture())), size,
                          ImVec2(0, 1), ImVec2(1, 0));
             ImGui::PushTextWrapPos(0.0f);

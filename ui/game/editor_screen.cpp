@@ -514,8 +514,10 @@ void LevelEditorView::fileButtons(EditorRequests& out) {
     ImGui::SameLine();
     if (ImGui::Button("Play (F5)")) out.play = true;
     ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::TextDisabled(editor_.valid() ? "" : "fix the level first");
+    if (!editor_.valid()) {
+        ImGui::SameLine();
+        dimWrapped("fix the level first");
+    }
     ImGui::SetNextItemWidth(panelPx(170));
     ImGui::InputText("##saveas", saveName_, sizeof saveName_);
     ImGui::SameLine();
