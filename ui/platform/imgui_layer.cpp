@@ -109,6 +109,9 @@ bool ImGuiLayer::processEvent(const SDL_Event& event) {
     // ones): they are not ImGui's.
     if (!window_) return false;
     if (taps_.holdBack(event)) return true; // a quick tap's release: next frame
+    if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_LEAVE) pointerOut_ = true;
+    if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_ENTER) pointerOut_ = false;
+    if (event.type == SDL_MOUSEMOTION) pointerOut_ = false;
     return ImGui_ImplSDL2_ProcessEvent(&event);
 }
 
@@ -180,6 +183,10 @@ void ImGuiLayer::newFrame(double dtSeconds) {
         for (const SDL_Event& release : taps_.releasesDue())
             ImGui_ImplSDL2_ProcessEvent(&release);
         ImGui_ImplSDL2_NewFrame();
+        // The backend keeps the last position inside a focused window the pointer has
+        // left (where the global state is not read): nothing there is hovered any more,
+        // so a tooltip closes. A drag that left the window still follows the pointer.
+        if (pointerOut_ && !ImGui::IsAnyMouseDown()) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
     } else {
         ImGuiIO& io = ImGui::GetIO();
         io.DisplaySize =

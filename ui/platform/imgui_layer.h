@@ -96,6 +96,7 @@ class ImGuiLayer {
     float scale_ = 0.0f;   ///< the panels' scale (design_canvas.h), 0 before the first
     Vec2 layoutDisplay_{}; ///< the display the panels are placed for, in points
     KeyTaps taps_;         ///< quick taps' releases, held back a frame
+    bool pointerOut_ = false; ///< the pointer left the window (and no button holds it)
 };
 
 } // namespace ui
