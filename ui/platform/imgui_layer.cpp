@@ -111,7 +111,11 @@ bool ImGuiLayer::processEvent(const SDL_Event& event) {
     if (taps_.holdBack(event)) return true; // a quick tap's release: next frame
     if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_LEAVE) pointerOut_ = true;
     if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_ENTER) pointerOut_ = false;
-    if (event.type == SDL_MOUSEMOTION) pointerOut_ = false;
+    if (event.type == SDL_MOUSEMOTION) {
+        pointer_ = Vec2{static_cast<double>(event.motion.x), static_cast<double>(event.motion.y)};
+        pointerSeen_ = true;
+        pointerOut_ = false;
+    }
     return ImGui_ImplSDL2_ProcessEvent(&event);
 }
 
@@ -183,10 +187,14 @@ void ImGuiLayer::newFrame(double dtSeconds) {
         for (const SDL_Event& release : taps_.releasesDue())
             ImGui_ImplSDL2_ProcessEvent(&release);
         ImGui_ImplSDL2_NewFrame();
-        // The backend keeps the last position inside a focused window the pointer has
-        // left (where the global state is not read): nothing there is hovered any more,
-        // so a tooltip closes. A drag that left the window still follows the pointer.
-        if (pointerOut_ && !ImGui::IsAnyMouseDown()) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+        // The pointer where its last motion event put it, as later ImGui backends take it:
+        // this backend reads the global pointer state, which SDL may not refresh (no raw
+        // input events under some X servers), or the last place inside a focused window
+        // the pointer has left. After it left (and no button drags it), nothing is
+        // hovered, so a tooltip closes.
+        const ImVec2 seen(static_cast<float>(pointer_.x), static_cast<float>(pointer_.y));
+        if (pointerSeen_)
+            ImGui::GetIO().MousePos = pointerOut_ && !ImGui::IsAnyMouseDown() ? ImVec2(-FLT_MAX, -FLT_MAX) : seen;
     } else {
         ImGuiIO& io = ImGui::GetIO();
         io.DisplaySize =

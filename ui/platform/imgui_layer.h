@@ -96,7 +96,9 @@ class ImGuiLayer {
     float scale_ = 0.0f;   ///< the panels' scale (design_canvas.h), 0 before the first
     Vec2 layoutDisplay_{}; ///< the display the panels are placed for, in points
     KeyTaps taps_;         ///< quick taps' releases, held back a frame
-    bool pointerOut_ = false; ///< the pointer left the window (and no button holds it)
+    bool pointerOut_ = false;  ///< the pointer left the window
+    bool pointerSeen_ = false; ///< a motion event has come: pointer_ holds its place
+    Vec2 pointer_{};           ///< the last motion event's place, in window points
 };
 
 } // namespace ui
