@@ -1,7 +1,6 @@
 #include "ui/game/campaign_view.h"
 #include "ui/game/lesson_pictures.h"
 #include "ui/platform/imgui_layer.h"
-#include "ui/render/design_canvas.h"
 
 #include <imgui.h>
 
@@ -105,18 +104,14 @@ void playNextButton(const CampaignMenu& menu, const game::Progress& progress, Me
 }
 
 MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progress,
-                         const std::string& levelFile) {
+                         const std::string& levelFile, ImVec2 corner) {
     MenuChoice choice;
     const auto next = game::nextLevel(menu.campaign, levelFile);
     if (!next) return choice;
     const LevelEntry& e = menu.chapters[next->chapter][next->level];
     const game::Lock lock =
         game::levelLock(menu.campaign, next->chapter, next->level, progress, e.mode);
-    // Just below the results card in the middle of the screen (ui/game/match_view.cpp).
-    const ImVec2 d = ImGui::GetIO().DisplaySize;
-    const auto belowCard = static_cast<float>(86.0 * hudScale(d.x, d.y));
-    ImGui::SetNextWindowPos(ImVec2(d.x * 0.5f, d.y * 0.5f + belowCard), ImGuiCond_Always,
-                            ImVec2(0.5f, 0.0f));
+    ImGui::SetNextWindowPos(corner, ImGuiCond_Always);
     ImGui::Begin("Next level", nullptr,
                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize |
