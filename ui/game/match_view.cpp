@@ -1,7 +1,8 @@
 // Section index
 //   palette      colours of the scene (shared ones: ui/game/palette.h)
 //   scenery      sky, hills, terrain, water, obstacles
-//   things       blocks, ropes, blobs, particles, cannons, targets
+//   things       blocks, ropes, blobs, particles, cannons, targets (cloth:
+//                ui/game/cloth_view.cpp)
 //   effects      trails, preview, hint (the rest: ui/game/effects_view.cpp)
 //   layout       the objects the player must see, as drawn (the HUD: ui/game/hud.cpp;
 //                the level's framing: ui/game/level_camera.cpp)

@@ -1,6 +1,7 @@
 // How a match looks: sky, terrain with its craters, water, obstacles, Box2D blocks,
-// ropes, blobs, cannons, targets, the shell and its trail, the trajectory preview, the
-// firing-solution hint, the effects (ui/game/effects_view.h), the wind and the HUD. One drawing path for the window and for
+// ropes, blobs, cloth (ui/game/cloth_view.h), cannons, targets, the shell and its trail,
+// the trajectory preview, the firing-solution hint, the effects (ui/game/effects_view.h),
+// the wind and the HUD (ui/game/hud.h). One drawing path for the window and for
 // headless frames (`artillery run --png`): everything goes through Renderer2D,
 // the HUD included (boxes in pixel space, text as labels that ImGui draws).
 //
