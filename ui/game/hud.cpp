@@ -89,28 +89,31 @@ void drawPowerBar(const HudSpace& s, double x, double y, double w, double fracti
 }
 
 /// `text` in lines no wider than `width` design px at `scale`, broken between words (a
-/// word wider than a line stands alone on it).
+/// word wider than a line stands alone on it); the spaces between words on a line are
+/// kept as written (the HUD spaces its fields with runs of them).
 std::vector<std::string> wrapped(const std::string& text, double scale, double width) {
     std::vector<std::string> lines;
-    std::string line, word;
-    auto flushWord = [&] {
+    std::string line, gap, word;
+    auto place = [&] {
         if (word.empty()) return;
-        const std::string longer = line.empty() ? word : line + " " + word;
-        if (line.empty() || designTextWidth(longer, scale) <= width) {
-            line = longer;
+        if (line.empty() || designTextWidth(line + gap + word, scale) <= width) {
+            line += (line.empty() ? "" : gap) + word;
         } else {
             lines.push_back(line);
             line = word;
         }
         word.clear();
+        gap.clear();
     };
     for (const char c : text) {
-        if (c == ' ')
-            flushWord();
-        else
+        if (c != ' ') {
             word += c;
+            continue;
+        }
+        place();
+        gap += ' ';
     }
-    flushWord();
+    place();
     if (!line.empty() || lines.empty()) lines.push_back(line);
     return lines;
 }
