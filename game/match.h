@@ -114,6 +114,15 @@ struct RopeState {
     phys::ParticleId last = phys::kNoParticle;
 };
 
+/// A cloth as built: its particles row by row from the top-left one, `columns` to a row,
+/// and the spacing they were laid at, so it can be drawn as a sheet between them rather
+/// than as dots (the simulation knows only particles and springs).
+struct ClothState {
+    std::vector<phys::ParticleId> particles;
+    int columns = 0;
+    double spacing = 0.0; ///< m between neighbours at rest
+};
+
 /// What the sandbox's hand holds: a block (pulled by a critically damped spring force
 /// toward the pointer) or a particle (on a spring to the pointer).
 struct GrabState {
@@ -162,6 +171,8 @@ class Match {
     const std::vector<BlobState>& blobs() const { return blobs_; }
     /// The level's ropes and the ones spawned in the sandbox, in the order made.
     const std::vector<RopeState>& ropes() const { return ropes_; }
+    /// The cloths spawned in the sandbox, in the order made. Not hashed: their particles are.
+    const std::vector<ClothState>& cloths() const { return cloths_; }
     /// The particle-body coupling: its events are the last tick's hits of particles on
     /// blocks (read by the sound; nothing may change it from outside).
     const phys::ParticleBodyCoupling& coupling() const { return coupling_; }
@@ -331,6 +342,7 @@ class Match {
     std::vector<BlockState> blocks_;
     std::vector<BlobState> blobs_;
     std::vector<RopeState> ropes_;
+    std::vector<ClothState> cloths_;
     std::vector<GameEvent> events_;
     std::mt19937_64 rng_;
     int current_ = 0;

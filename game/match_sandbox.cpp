@@ -115,7 +115,10 @@ void Match::addCloth(Vec2 topLeft, double size) {
     // hung from its top row. k and m keep w dt = sqrt(k/m) dt under 1 at 1/60 s.
     constexpr int n = 10;
     const double spacing = size / (n - 1);
-    std::vector<ParticleId> ids;
+    ClothState cloth;
+    cloth.columns = n;
+    cloth.spacing = spacing;
+    std::vector<ParticleId>& ids = cloth.particles;
     for (int row = 0; row < n; ++row)
         for (int col = 0; col < n; ++col) {
             ParticleDef pd;
@@ -143,6 +146,7 @@ void Match::addCloth(Vec2 topLeft, double size) {
                 spring(r, c + 1, r + 1, c);
             }
         }
+    cloths_.push_back(std::move(cloth));
 }
 
 std::string Match::grabAt(Vec2 at) {

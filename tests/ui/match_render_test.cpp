@@ -9,6 +9,7 @@
 // writes tests/data/earth_basics_tick90.png; look at it before committing it.
 #include "game/level.h"
 #include "game/session.h"
+#include "ui/game/cloth_view.h"
 #include "ui/game/match_frame.h"
 #include "ui/game/match_view.h"
 #include "ui/platform/gl_context.h"
@@ -245,3 +246,46 @@ TEST(MatchRender, LaunchArcReachesClearOfTheCannonOnAMapSeenWhole) {
 }
 
 } // namespace
+
+// A cloth is drawn as fabric: the middle of every cell between four of its particles is
+// the cell's fill (the fabric shaded by the cell's stretch), where the sky was before
+// the cloth was spawned, and no particle of it is drawn as a dot over it.
+TEST(MatchRender, ClothIsDrawnAsFabricBetweenItsParticles) {
+    Headless h(1280, 720);
+    ASSERT_TRUE(h.context) << "no headless GL context (OSMesa or EGL)";
+    game::Session session(game::loadLevel(sourceDir() + "/levels/11_sandbox.json"));
+    ui::MatchView view;
+    ui::MatchViewOptions o;
+    o.hud = false;
+    o.trajectoryPreview = false;
+    ui::Camera camera;
+    const ui::Image before = h.draw(session.match(), view, o, &camera);
+    game::Command spawn;
+    spawn.kind = game::CommandKind::Spawn;
+    spawn.text = "cloth";
+    spawn.at = {20.0, 14.0};
+    spawn.number = 6.0;
+    ASSERT_EQ(session.submit(spawn), "");
+    for (int i = 0; i < 30; ++i) session.step();
+    const ui::Image with = h.draw(session.match(), view, o);
+    ASSERT_EQ(session.match().cloths().size(), 1u);
+    const game::ClothState& cloth = session.match().cloths().front();
+    const phys::ParticleSet& ps = session.match().world().particles;
+    const int n = cloth.columns, rows = static_cast<int>(cloth.particles.size()) / n;
+    ASSERT_GT(rows, 1);
+    auto at = [&](int r, int c) { return ps.position(cloth.particles[static_cast<std::size_t>(r * n + c)]); };
+    int cells = 0;
+    for (int r = 0; r + 1 < rows; ++r)
+        for (int c = 0; c + 1 < n; ++c) {
+            const Vec2 q[] = {at(r, c), at(r, c + 1), at(r + 1, c + 1), at(r + 1, c)};
+            double sides = 0.0;
+            for (int k = 0; k < 4; ++k) sides += phys::length(q[(k + 1) % 4] - q[k]);
+            const Vec2 mid = camera.toPixel((q[0] + q[1] + q[2] + q[3]) * 0.25);
+            const int x = static_cast<int>(mid.x), y = static_cast<int>(mid.y);
+            const Color fill = ui::clothFill(sides / (4.0 * cloth.spacing) - 1.0);
+            EXPECT_TRUE(near(with.pixel(x, y), fill, 12)) << "cell " << r << ", " << c << " at " << x << ", " << y;
+            EXPECT_FALSE(near(before.pixel(x, y), fill, 40)) << "the sky there was the fabric's colour already";
+            ++cells;
+        }
+    EXPECT_EQ(cells, (rows - 1) * (n - 1));
+}

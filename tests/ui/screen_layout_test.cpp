@@ -6,6 +6,7 @@
 #include "headless_game.h"
 #include "game/replay.h"
 #include "game/replay_player.h"
+#include "ui/game/match_view.h"
 #include "ui/game/screen_layout.h"
 
 #include <gtest/gtest.h>
@@ -177,6 +178,42 @@ TEST(ScreenLayout, ShotsInFlightAndTheirImpactsAreNotCovered) {
 
 TEST(ScreenLayout, DuelShotsInFlightAndTheirImpactsAreNotCovered) {
     expectShotsClear("10_duel.replay.json", 3);
+}
+
+// A shell smaller than 6 px across on screen is drawn larger than life: its disc (the
+// layout's rectangle is its glow, kShellGlow times the disc) is at least 6 px across at
+// 1280 x 720, mid-flight in the solver's games and the computer's duel.
+TEST(ScreenLayout, TheShellInFlightIsDrawnAtLeastSixPixelsAcross) {
+    int small = 0;
+    for (const char* name : {"01_earth_basics.replay.json", "05_castle.replay.json",
+                             "10_duel.replay.json"}) {
+        const fs::path file = test_game::kRoot / "tests" / "replays" / name;
+        for (const Shot& s : shotsOf(file)) {
+            if (s.impact <= s.fired) continue;
+            ReplayOnScreen on(file);
+            ASSERT_NE(on.screen, nullptr);
+            ui::GameScreen& screen = *on.screen;
+            screen.warmUp(static_cast<double>((s.fired + s.impact) / 2) / 120.0);
+            for (int i = 0; i < 3; ++i) screen.frame(1.0 / 120.0);
+            ASSERT_NE(screen.replayViewer(), nullptr) << name;
+            const game::Match& m = screen.replayViewer()->match();
+            ASSERT_TRUE(m.shell().has_value()) << name << ": a shell in flight mid-shot";
+            const double trueAcross =
+                2.0 * m.world().particles.radius[*m.shell()] * screen.camera().pixelsPerMetre;
+            if (trueAcross >= 6.0) continue;
+            ++small;
+            bool seen = false;
+            for (const ui::LayoutObject& o : screen.layout().objects) {
+                if (o.kind != "shell" || o.view != "main") continue;
+                seen = true;
+                const double across = std::max(o.rect.x1 - o.rect.x0, o.rect.y1 - o.rect.y0);
+                EXPECT_GE(across / ui::kShellGlow, 6.0 - 1e-9)
+                    << name << ": a shell " << trueAcross << " px across drawn " << across / ui::kShellGlow;
+            }
+            EXPECT_TRUE(seen) << name << ": the shell in flight is not in the layout";
+        }
+    }
+    EXPECT_GT(small, 0) << "no shell smaller than 6 px across: nothing was checked";
 }
 
 // A game's end, played on from its replay (taken over at the end, as T does): the card

@@ -1,7 +1,6 @@
 #include "ui/game/campaign_view.h"
 #include "ui/game/lesson_pictures.h"
 #include "ui/platform/imgui_layer.h"
-#include "ui/render/design_canvas.h"
 
 #include <imgui.h>
 
@@ -107,18 +106,14 @@ void playNextButton(const CampaignMenu& menu, const game::Progress& progress, Me
 }
 
 MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progress,
-                         const std::string& levelFile) {
+                         const std::string& levelFile, ImVec2 corner) {
     MenuChoice choice;
     const auto next = game::nextLevel(menu.campaign, levelFile);
     if (!next) return choice;
     const LevelEntry& e = menu.chapters[next->chapter][next->level];
     const game::Lock lock =
         game::levelLock(menu.campaign, next->chapter, next->level, progress, e.mode);
-    // Just below the results card in the middle of the screen (ui/game/match_view.cpp).
-    const ImVec2 d = ImGui::GetIO().DisplaySize;
-    const auto belowCard = static_cast<float>(86.0 * hudScale(d.x, d.y));
-    ImGui::SetNextWindowPos(ImVec2(d.x * 0.5f, d.y * 0.5f + belowCard), ImGuiCond_Always,
-                            ImVec2(0.5f, 0.0f));
+    ImGui::SetNextWindowPos(corner, ImGuiCond_Always);
     ImGui::Begin("Next level", nullptr,
                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize |
@@ -128,7 +123,12 @@ MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progres
     ImGui::BeginDisabled(!lock.open || !e.error.empty());
     if (ImGui::Button(label.c_str())) chooseLevel(menu, *next, progress, choice);
     ImGui::EndDisabled();
-    if (!lock.open) ImGui::TextColored(kLocked, "locked: %s", lock.why.c_str());
+    if (!lock.open) {
+        // As wide as the results card above it at most: a long reason wraps.
+        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + panelPx(420));
+        ImGui::TextColored(kLocked, "locked: %s", lock.why.c_str());
+        ImGui::PopTextWrapPos();
+    }
     ImGui::SameLine();
     if (ImGui::Button("Levels (L)")) choice.levelSelect = true;
     ImGui::End();
@@ -142,6 +142,7 @@ MenuChoice lessonScreen(const game::Campaign& campaign, std::size_t chapter,
     const ImVec2 d = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(d.x * 0.5f, d.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(std::min(panelPx(760), d.x - panelPx(24)), 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(d.x, d.y - panelPx(16))); // else it scrolls
     ImGui::Begin("Lesson", nullptr,
                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar);
@@ -150,12 +151,14 @@ MenuChoice lessonScreen(const game::Campaign& campaign, std::size_t chapter,
     ImGui::TextUnformatted(ch.title.c_str());
     ImGui::Separator();
     // The idea as a picture, drawn by the game from the chapter's formula.
-    const float width = ImGui::GetContentRegionAvail().x;
-    const ImVec2 size(width, std::round(width * 0.42f));
+    // On a short screen the picture gives up height first, so the text stays in view.
+    const float height = std::min(ImGui::GetContentRegionAvail().x * 0.42f, 0.4f * d.y);
+    const ImVec2 size(std::round(height / 0.42f), std::round(height));
     const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
     if (art.pictures && !art.picture.empty())
         if (const TextureTarget* t = art.pictures->picture(art.picture, static_cast<int>(size.x * scale.x),
                                                            static_cast<int>(size.y * scale.y), art.fbo)) {
+            ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 0.5f * (ImGui::GetContentRegionAvail().x - size.x));
             ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(t->texture())), size,
                          ImVec2(0, 1), ImVec2(1, 0));
             ImGui::PushTextWrapPos(0.0f);

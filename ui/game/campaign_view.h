@@ -44,9 +44,10 @@ void playNextButton(const CampaignMenu& menu, const game::Progress& progress, Me
 
 /// When a match of `levelFile` is over: a small card with the campaign's next level, its
 /// button (the lesson first when its chapter starts and was not read) or why it is locked.
-/// Draws nothing for a level outside the chapters or the last one.
+/// Draws nothing for a level outside the chapters or the last one. Its top-left corner
+/// is at `corner` (window points).
 MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progress,
-                         const std::string& levelFile);
+                         const std::string& levelFile, ImVec2 corner);
 
 class LessonPictures;
 

@@ -104,7 +104,7 @@ bool physicsFields(game::LevelPhysics& p) {
     changed |= ImGui::Checkbox("air drag on shells", &p.drag);
     changed |= number("wind min (m/s)", p.windMin, 0.5);
     changed |= number("wind max (m/s)", p.windMax, 0.5);
-    ImGui::TextDisabled("each turn draws the wind in [min, max]");
+    dimWrapped("each turn draws the wind in [min, max]");
     changed |= ImGui::Checkbox("water", &p.water);
     if (p.water) changed |= number("water level (m)", p.waterLevel, 0.5);
     return changed;
@@ -117,7 +117,7 @@ bool cannonFields(game::Cannon& c) {
     changed |= number("speed (m/s)", c.speedMps, 1.0, "%.1f");
     changed |= number("max speed (m/s)", c.maxSpeedMps, 1.0, "%.1f");
     changed |= choice("player", c.player, {"1", "2", "cpu"});
-    ImGui::TextDisabled("weapons (count -1 = unlimited)");
+    dimWrapped("weapons (count -1 = unlimited)");
     c.projectileCounts.resize(c.projectiles.size(), -1);
     for (std::size_t i = 0; i < c.projectiles.size(); ++i) {
         ImGui::PushID(static_cast<int>(i));
@@ -181,7 +181,7 @@ bool ropeFields(game::Rope& r) {
     changed |= number("mass per link (kg)", r.massPerSegment, 0.1);
     changed |= integer("tie from to block", r.fromBlock);
     changed |= integer("tie to to block", r.toBlock);
-    ImGui::TextDisabled("a tie names a block by index (-1: none)");
+    dimWrapped("a tie names a block by index (-1: none)");
     return changed;
 }
 

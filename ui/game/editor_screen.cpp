@@ -487,7 +487,7 @@ void LevelEditorView::verdict() {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
     ImGui::TextWrapped("%s", editor_.problem().c_str());
     ImGui::PopStyleColor();
-    if (editor_.checked()) ImGui::TextDisabled("drawn: the last state that passed");
+    if (editor_.checked()) dimWrapped("drawn: the last state that passed");
 }
 
 void LevelEditorView::fileButtons(EditorRequests& out) {
@@ -514,8 +514,10 @@ void LevelEditorView::fileButtons(EditorRequests& out) {
     ImGui::SameLine();
     if (ImGui::Button("Play (F5)")) out.play = true;
     ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::TextDisabled(editor_.valid() ? "" : "fix the level first");
+    if (!editor_.valid()) {
+        ImGui::SameLine();
+        dimWrapped("fix the level first");
+    }
     ImGui::SetNextItemWidth(panelPx(170));
     ImGui::InputText("##saveas", saveName_, sizeof saveName_);
     ImGui::SameLine();
@@ -539,8 +541,7 @@ EditorRequests LevelEditorView::panel() {
                      ImGuiWindowFlags_NoSavedSettings);
     const game::Level& l = editor_.level();
     ImGui::TextWrapped("%s%s", l.name.c_str(), editor_.modified() ? "  (changed)" : "");
-    ImGui::TextDisabled("%s", editor_.file().empty() ? "new level, not saved yet"
-                                                     : editor_.file().c_str());
+    dimWrapped(editor_.file().empty() ? "new level, not saved yet" : editor_.file());
     ImGui::Separator();
     toolButtons();
     ImGui::Separator();
@@ -556,7 +557,8 @@ EditorRequests LevelEditorView::panel() {
     // The fields edit a copy; a change is one undo step however long the field is held.
     game::Level draft = l;
     bool changed = false;
-    ImGui::PushItemWidth(panelPx(140)); // room for the labels beside the fields
+    // The fields take what the labels beside them leave, however deep in a tree.
+    ImGui::PushItemWidth(-panelPx(165));
     if (exists(l, selected_)) {
         char title[64];
         std::snprintf(title, sizeof title, "%s %d###selected",
@@ -577,18 +579,21 @@ EditorRequests LevelEditorView::panel() {
     }
     ImGui::End();
 
-    // What the tool does, under the world.
-    ImGui::SetNextWindowPos(
-        ImVec2(std::min(panelPx(kEditorPanelWidth), 0.5f * display.x) + panelPx(12),
-               display.y - panelPx(34)),
-        ImGuiCond_Always);
+    // What the tool does, under the world: its bottom edge stays put, so a hint that wraps
+    // to more lines grows upwards and no line leaves the screen.
+    const float left = std::min(panelPx(kEditorPanelWidth), 0.5f * display.x) + panelPx(12);
+    const float room = display.x - left - panelPx(12);
+    ImGui::SetNextWindowPos(ImVec2(left, display.y - panelPx(8)), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(room, display.y));
     ImGui::SetNextWindowBgAlpha(0.55f);
     ImGui::Begin("##editorhint", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                      ImGuiWindowFlags_NoNav);
+    ImGui::PushTextWrapPos(room - ImGui::GetStyle().WindowPadding.x);
     ImGui::Text("%s   |  wheel zoom, right drag pan, Home frame  |  Ctrl+Z undo, Ctrl+Y redo",
                 kTools[static_cast<int>(tool_)].hint);
+    ImGui::PopTextWrapPos();
     ImGui::End();
     return out;
 }

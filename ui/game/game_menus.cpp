@@ -27,10 +27,26 @@ namespace {
 const ImVec4 kGoldText(1.0f, 0.79f, 0.24f, 1.0f);
 const ImVec4 kDimText(0.7f, 0.75f, 0.82f, 1.0f);
 
+/// The next window in the middle of the display, `width` design px wide (at most the
+/// display's) and as tall as it needs, up to the display's height (then it scrolls).
 void centreNextWindow(float width) {
     const ImVec2 d = ImGui::GetIO().DisplaySize;
+    const float margin = panelPx(8);
     ImGui::SetNextWindowPos(ImVec2(d.x * 0.5f, d.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(panelPx(width), 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(std::min(panelPx(width), d.x - 2 * margin), 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(d.x - 2 * margin, d.y - 2 * margin));
+}
+
+/// The next window in the middle of the display, sized to what it holds: at least `width`
+/// design px wide, never past the display's edges (a taller one scrolls). Its text wraps
+/// (dimWrapped, TextWrapped) at the width its widest control sets.
+ImGuiWindowFlags centreFittedWindow(float width) {
+    const ImVec2 d = ImGui::GetIO().DisplaySize;
+    const float margin = panelPx(8);
+    ImGui::SetNextWindowPos(ImVec2(d.x * 0.5f, d.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(panelPx(width), d.x - 2 * margin), 0),
+                                        ImVec2(d.x - 2 * margin, d.y - 2 * margin));
+    return ImGuiWindowFlags_AlwaysAutoResize;
 }
 
 /// A full-screen menu: a fixed window in the middle with a gold heading and a dim line.
@@ -284,7 +300,7 @@ bool soundSection(game::audio::SoundMix& mix, const std::string& silentWhy) {
     volume("effects volume", mix.effects);
     volume("UI volume", mix.ui);
     done |= ImGui::Checkbox("mute", &mix.mute);
-    if (!silentWhy.empty()) ImGui::TextDisabled("silent: %s", silentWhy.c_str());
+    if (!silentWhy.empty()) dimWrapped("silent: " + silentWhy);
     return done;
 }
 
@@ -305,7 +321,7 @@ void rewindAndReplay(const game::Match& m, RewindControl& rewind, MenuChoice& ch
     if (ImGui::IsItemDeactivatedAfterEdit() && rewind.seconds < now)
         choice.rewindTo = static_cast<std::uint64_t>(std::llround(rewind.seconds / dt));
     ImGui::PopItemWidth();
-    ImGui::TextDisabled("drag back and let go: you play on from there (Backspace: 1 s)");
+    dimWrapped("drag back and let go: you play on from there (Backspace: 1 s)");
     ImGui::BeginDisabled(m.shotsFired() == 0 || m.shell().has_value());
     if (ImGui::Button("Watch the last shot again (Z)", ImVec2(-FLT_MIN, 0))) choice.watchLastShot = true;
     ImGui::EndDisabled();
@@ -317,9 +333,9 @@ void rewindAndReplay(const game::Match& m, RewindControl& rewind, MenuChoice& ch
 MenuChoice pauseMenu(PlayerSettings& settings, const std::string& silentWhy,
                      const game::Match* match, RewindControl& rewind) {
     MenuChoice choice;
-    centreNextWindow(300.0f);
+    const ImGuiWindowFlags fitted = centreFittedWindow(300.0f);
     ImGui::Begin("Paused", nullptr,
-                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                 fitted | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                      ImGuiWindowFlags_NoSavedSettings);
     const ImVec2 wide(-FLT_MIN, 0);
     if (ImGui::Button("Resume (Esc)", wide)) choice.resume = true;
@@ -335,7 +351,7 @@ MenuChoice pauseMenu(PlayerSettings& settings, const std::string& silentWhy,
     choice.settingsChanged |= ImGui::Checkbox("trajectory preview (P)", &settings.trajectoryPreview);
     choice.settingsChanged |= ImGui::Checkbox("full preview, assisted (V)", &settings.fullPreview);
     choice.settingsChanged |= ImGui::Checkbox("firing-solution hint, assisted (H)", &settings.solutionHint);
-    ImGui::TextDisabled("assisted results earn at most two stars");
+    dimWrapped("assisted results earn at most two stars");
     choice.settingsChanged |= ImGui::Checkbox("camera follows the shell (C)", &settings.cameraFollow);
     choice.settingsChanged |= ImGui::Checkbox("screen shake", &settings.screenShake);
     choice.settingsChanged |= ImGui::Checkbox("physics panel (F2)", &settings.physicsPanel);
@@ -407,8 +423,9 @@ void helpOverlay(bool& open) {
         }
         ImGui::EndTable();
     }
-    ImGui::TextColored(kDimText,
-                       "Every change you make is a command at a tick: the game is recorded as a replay.");
+    ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
+    ImGui::TextWrapped("Every change you make is a command at a tick: the game is recorded as a replay.");
+    ImGui::PopStyleColor();
     ImGui::End();
 }
 

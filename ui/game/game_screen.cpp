@@ -413,8 +413,14 @@ void GameScreen::matchPanels(MenuChoice& choice, bool& sceneToEditor) {
         if (auto d = statsPanel_.panel(m, shownAim)) submit(settingCommands(m.world().def(), *d));
     if (settings.physicsPanel) physicsPanelOfMatch(m);
     if (costShown_) costReadout(costFigures(m, stats_.frameMs), clearCorner("Cost", costReadoutEstimate()));
-    if (m.over() && play_.resultRecorded() && !choice.openLevel && !editor_.playtest())
-        choice = menus_.nextLevelCard(files_.progress(), level_.file);
+    if (m.over() && play_.resultRecorded() && !choice.openLevel && !editor_.playtest()) {
+        // Beside the results card, wherever the HUD put it, and clear of the field.
+        const auto card = std::find_if(layout_.overlays.begin(), layout_.overlays.end(),
+                                       [](const LayoutOverlay& o) { return o.name == "card"; });
+        const ImVec2 corner = clearCorner("Next level", ImVec2(panelPx(460), panelPx(60)),
+                                          card == layout_.overlays.end() ? nullptr : &card->rect);
+        choice = menus_.nextLevelCard(files_.progress(), level_.file, corner);
+    }
 }
 
 /// The aim on screen: the one being edited, else the cannon's.
@@ -435,7 +441,7 @@ double GameScreen::labPanelsRight() const {
     return right;
 }
 
-ImVec2 GameScreen::clearCorner(const char* name, ImVec2 estimate) const {
+ImVec2 GameScreen::clearCorner(const char* name, ImVec2 estimate, const PixelRect* nextTo) const {
     const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
     ImVec2 size(estimate.x, estimate.y); // until it has been drawn once
     if (const auto was = openWindowRect(name))
@@ -444,11 +450,17 @@ ImVec2 GameScreen::clearCorner(const char* name, ImVec2 estimate) const {
     const double W = context_.width(), H = context_.height(), u = hudScale(W, H);
     const double w = size.x * scale.x, h = size.y * scale.y, m = 12.0 * u;
     const double beside = 336.0 * u, top = kHudTopBand * u;
-    std::vector<PixelRect> places = {{beside, H - m - h, beside + w, H - m},
+    std::vector<PixelRect> places;
+    if (nextTo) {
+        const double x = 0.5 * (nextTo->x0 + nextTo->x1 - w);
+        places.push_back({x, nextTo->y1 + m, x + w, nextTo->y1 + m + h});
+        places.push_back({x, nextTo->y0 - m - h, x + w, nextTo->y0 - m});
+    }
+    places.insert(places.end(), {{beside, H - m - h, beside + w, H - m},
                                      {W - m - w, H - m - h, W - m, H - m},
                                      {W - m - w, top, W - m, top + h},
                                      {m, top, m + w, top + h},
-                                     {0.5 * (W - w), H - m - h, 0.5 * (W + w), H - m}};
+                                     {0.5 * (W - w), H - m - h, 0.5 * (W + w), H - m}});
     // When the corners are taken (the lab's panels open, the close-up beside them), the
     // bottom edge and the top band, left to right, before standing over anything.
     for (double x = m; x + w <= W - m; x += 24.0 * u)

@@ -144,8 +144,9 @@ class GameScreen final : public Screen {
     /// of the usual places (beside the aim readout at the bottom, the bottom right, the
     /// top right and the top left under the HUD's band, the bottom middle, then along the
     /// bottom edge and the top band) where it covers nothing the frame shows so far; its
-    /// size is last frame's, or `estimate` (points).
-    ImVec2 clearCorner(const char* name, ImVec2 estimate) const;
+    /// size is last frame's, or `estimate` (points). With `nextTo` (pixels), under it and
+    /// over it, centred, come first.
+    ImVec2 clearCorner(const char* name, ImVec2 estimate, const PixelRect* nextTo = nullptr) const;
     double labPanelsRight() const;
     PendingAim shownAim() const;
     void physicsPanelOfMatch(game::Match& m);

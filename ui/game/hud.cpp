@@ -9,6 +9,7 @@
 #include "ui/game/palette.h"
 #include "ui/game/screen_layout.h"
 #include "ui/game/weapon_look.h"
+#include "ui/platform/imgui_layer.h"
 #include "ui/render/design_canvas.h"
 #include "game/shot_model.h"
 #include "physics/integrators.h"
@@ -87,6 +88,36 @@ void drawPowerBar(const HudSpace& s, double x, double y, double w, double fracti
         s.rect(x + w * k / 4.0, y + 1, x + w * k / 4.0 + 1, y + 11, Color::hex(0xffffff, 0.25f));
 }
 
+/// `text` in lines no wider than `width` design px at `scale`, broken between words (a
+/// word wider than a line stands alone on it); the spaces between words on a line are
+/// kept as written (the HUD spaces its fields with runs of them).
+std::vector<std::string> wrapped(const std::string& text, double scale, double width) {
+    std::vector<std::string> lines;
+    std::string line, gap, word;
+    auto place = [&] {
+        if (word.empty()) return;
+        if (line.empty() || designTextWidth(line + gap + word, scale) <= width) {
+            line += (line.empty() ? "" : gap) + word;
+        } else {
+            lines.push_back(line);
+            line = word;
+        }
+        word.clear();
+        gap.clear();
+    };
+    for (const char c : text) {
+        if (c != ' ') {
+            word += c;
+            continue;
+        }
+        place();
+        gap += ' ';
+    }
+    place();
+    if (!line.empty() || lines.empty()) lines.push_back(line);
+    return lines;
+}
+
 // ---- boxes --------------------------------------------------------------------------------
 // Each box: its size in design pixels, and a function drawing it at a HudSpace's origin.
 constexpr double kMargin = 12.0;
@@ -95,10 +126,21 @@ constexpr double kWindW = 168.0, kWindH = 48.0;
 constexpr double kAimW = 312.0, kAimH = 92.0;
 constexpr double kCardW = 460.0, kDuelCardH = 150.0;
 constexpr double kLineH = 19.0, kSmall = 0.8; ///< a line of the card and the rules, design px
+constexpr double kHeadH = 17.0, kNoteH = 14.0, kNote = 0.72; ///< the aim box's lines, design px
+constexpr double kPad = 12.0; ///< a box's text from its sides, design px
 
-void drawScore(const HudSpace& s, const Match& m) {
+/// The score box's width: its standard one, or wider for a long level name or player name.
+double scoreWidth(const Match& m, const MatchViewOptions& o) {
+    double w = designTextWidth(m.level().name, 1.0) + 2 * kPad;
+    if (m.level().mode == game::Mode::Duel)
+        for (int i = 0; i < static_cast<int>(m.cannons().size()) && i < 2; ++i)
+            w = std::max(w, 30 + designTextWidth(playerName(m, o, i), 0.95) + 64);
+    return std::max(kScoreW, w);
+}
+
+void drawScore(const HudSpace& s, const Match& m, double width) {
     const game::CannonState& cs = m.cannon();
-    s.panel(0, 0, kScoreW, kScoreH);
+    s.panel(0, 0, width, kScoreH);
     s.text(12, 7, m.level().name, kText, 1.0f);
     char line[96];
     if (m.sandbox()) {
@@ -110,15 +152,15 @@ void drawScore(const HudSpace& s, const Match& m) {
     // Shots left as pips, the number beside them when there are too many to show.
     const int shown = std::min(cs.shotsLeft, 8);
     for (int k = 0; k < shown; ++k) {
-        s.r.fillCircle(s.w(kScoreW - 20 - 14 * k, 45), s.metres(4.5), kShell.withAlpha(0.9f));
-        s.r.fillCircle(s.w(kScoreW - 21 - 14 * k, 44), s.metres(1.6), Color::hex(0x9aa0aa));
+        s.r.fillCircle(s.w(width - 20 - 14 * k, 45), s.metres(4.5), kShell.withAlpha(0.9f));
+        s.r.fillCircle(s.w(width - 21 - 14 * k, 44), s.metres(1.6), Color::hex(0x9aa0aa));
     }
     std::snprintf(line, sizeof line, "%d", cs.shotsLeft);
-    s.text(kScoreW - 28 - 14 * shown, 36, cs.shotsLeft > 8 || shown == 0 ? line : "", kText, 0.85f, 1.0f);
+    s.text(width - 28 - 14 * shown, 36, cs.shotsLeft > 8 || shown == 0 ? line : "", kText, 0.85f, 1.0f);
 }
 
-void drawPlayers(const HudSpace& s, const Match& m, const MatchViewOptions& o) {
-    s.panel(0, 0, kScoreW, kDuelH);
+void drawPlayers(const HudSpace& s, const Match& m, const MatchViewOptions& o, double width) {
+    s.panel(0, 0, width, kDuelH);
     const int cur = m.currentPlayer();
     char line[96];
     for (int i = 0; i < static_cast<int>(m.cannons().size()) && i < 2; ++i) {
@@ -129,7 +171,7 @@ void drawPlayers(const HudSpace& s, const Match& m, const MatchViewOptions& o) {
         s.text(30, yy + 1, line, i == cur && !m.over() ? kText : kTextDim, 0.95f);
         // Hit points as pips, right-aligned.
         for (int p = 0; p < game::kCannonHitPoints; ++p) {
-            const Vec2 at = s.w(kScoreW - 18 - 16 * p, yy + 10);
+            const Vec2 at = s.w(width - 18 - 16 * p, yy + 10);
             s.r.fillCircle(at, s.metres(6), Color::hex(0x111111, 0.6f));
             s.r.fillCircle(at, s.metres(4.5), game::kCannonHitPoints - 1 - p < ci.hitPoints
                                                   ? Color::hex(0x4ade80)
@@ -172,34 +214,53 @@ std::string flightModelLine(const Match& m) {
     return line;
 }
 
-void drawAim(const HudSpace& s, const Match& m, const MatchViewOptions& o, const PendingAim& aim) {
+/// The aim box's text: who fires what (wrapped), and the weapon's summary or the flight
+/// model (wrapped in the smaller face), and the box's height for them.
+struct AimText {
+    std::vector<std::string> head, note;
+    double height = kAimH;
+};
+
+AimText aimText(const Match& m, const MatchViewOptions& o) {
     const game::CannonState& cs = m.cannon();
-    const int cur = m.currentPlayer();
-    s.panel(0, 0, kAimW, kAimH);
     const game::Ammo ammo = m.selectedAmmo();
     const int left = cs.projectile < cs.ammoLeft.size() ? cs.ammoLeft[cs.projectile] : -1;
+    const bool duel = m.level().mode == game::Mode::Duel;
     char line[160];
     std::snprintf(line, sizeof line, "%s%s%s   %.3g kg  %.0f mm%s",
-                  m.level().mode == game::Mode::Duel ? playerName(m, o, cur).c_str() : "",
-                  m.level().mode == game::Mode::Duel ? ":  " : "",
-                  ammo.preset.name ? ammo.preset.name : "?", ammo.preset.mass,
-                  ammo.preset.diameter * 1000.0, left >= 0 ? ("   x" + std::to_string(left)).c_str() : "");
+                  duel ? playerName(m, o, m.currentPlayer()).c_str() : "", duel ? ":  " : "",
+                  ammo.preset.name ? ammo.preset.name : "?", ammo.preset.mass, ammo.preset.diameter * 1000.0,
+                  left >= 0 ? ("   x" + std::to_string(left)).c_str() : "");
+    AimText t;
+    t.head = wrapped(line, 0.85, kAimW - 28 - kPad);
+    t.note = wrapped(ammo.weapon ? weaponHudLine(ammo) : flightModelLine(m), kNote, kAimW - 2 * kPad);
+    t.height = kAimH + kHeadH * static_cast<double>(t.head.size() - 1) +
+               kNoteH * static_cast<double>(t.note.size() - 1);
+    return t;
+}
+
+void drawAim(const HudSpace& s, const Match& m, const MatchViewOptions& o, const PendingAim& aim,
+             const AimText& t) {
+    const game::CannonState& cs = m.cannon();
+    const int cur = m.currentPlayer();
+    s.panel(0, 0, kAimW, t.height);
     s.r.fillCircle(s.w(16, 16), s.metres(5.5), team(cur));
-    s.text(28, 7, line, kText, 0.85f);
+    for (std::size_t i = 0; i < t.head.size(); ++i)
+        s.text(28, 7 + kHeadH * static_cast<double>(i), t.head[i], kText, 0.85f);
+    const double y = kHeadH * static_cast<double>(t.head.size() - 1); // the rows below move down
+    char line[64];
     std::snprintf(line, sizeof line, "%.1f°", aim.angleDeg);
-    s.text(12, 28, line, kText, 1.0f);
+    s.text(12, 28 + y, line, kText, 1.0f);
     std::snprintf(line, sizeof line, "%.1f / %.0f m/s", aim.speedMps, cs.def.maxSpeedMps);
-    s.text(kAimW - 12, 28, line, kText, 1.0f, 1.0f);
+    s.text(kAimW - 12, 28 + y, line, kText, 1.0f, 1.0f);
     const double shown = o.charge ? *o.charge * cs.def.maxSpeedMps : aim.speedMps;
-    drawPowerBar(s, 12, 52, kAimW - 24, shown / cs.def.maxSpeedMps, team(cur), o.charge);
-    s.text(12, 70, ammo.weapon ? weaponHudLine(ammo) : flightModelLine(m), kTextDim, 0.72f);
+    drawPowerBar(s, 12, 52 + y, kAimW - 24, shown / cs.def.maxSpeedMps, team(cur), o.charge);
+    for (std::size_t i = 0; i < t.note.size(); ++i)
+        s.text(12, 70 + y + kNoteH * static_cast<double>(i), t.note[i], kTextDim, static_cast<float>(kNote));
 }
 
 /// A line in a dark box, `width` design pixels for `text` at `scale`.
-double lineWidth(const std::string& text, double scale) {
-    // The HUD font averages under 8 design px a character at scale 1.
-    return 8.0 * scale * static_cast<double>(text.size()) + 28.0;
-}
+double lineWidth(const std::string& text, double scale) { return designTextWidth(text, scale) + 28.0; }
 
 void drawLine(const HudSpace& s, const std::string& text, Color colour, double scale, Color back) {
     const double w = lineWidth(text, scale);
@@ -220,13 +281,21 @@ void drawTick(const HudSpace& s, double x, double y, bool earned) {
 
 /// What each star needs, a line each with a tick on the ones earned, from `y` down
 /// (3 lines).
-void drawStarNeeds(const HudSpace& s, const Match& m, double y) {
+std::vector<std::string> starNeedLines(const Match& m) {
     const auto needs = game::starNeeds(game::levelScoring(m.level()));
+    std::vector<std::string> lines;
+    for (std::size_t k = 0; k < 3; ++k)
+        lines.push_back(std::to_string(k + 1) + (k ? " stars: " : " star: ") + needs[k]);
+    return lines;
+}
+
+void drawStarNeeds(const HudSpace& s, const Match& m, double y) {
+    const std::vector<std::string> lines = starNeedLines(m);
     for (int k = 0; k < 3; ++k) {
         const double yy = y + kLineH * k;
         drawTick(s, 26, yy + 8, k < m.stars());
-        s.text(40, yy, std::to_string(k + 1) + (k ? " stars: " : " star: ") + needs[static_cast<std::size_t>(k)],
-               k < m.stars() ? kText : kTextDim, static_cast<float>(kSmall));
+        s.text(40, yy, lines[static_cast<std::size_t>(k)], k < m.stars() ? kText : kTextDim,
+               static_cast<float>(kSmall));
     }
 }
 
@@ -244,13 +313,30 @@ double cardHeight(const Match& m) {
     return 102 + kLineH * static_cast<double>(cardLines(m).size() + 3) + (m.assisted() ? 28 : 8);
 }
 
-void drawCard(Renderer2D& r, const HudSpace& s, const Match& m, const MatchViewOptions& o) {
+constexpr const char* kAssistedNote = "assisted (full preview or hint): no third star";
+
+std::string winnerLine(const Match& m, const MatchViewOptions& o) {
+    const int win = m.winner();
+    return win < 0 ? std::string("Draw") : playerName(m, o, win) + " wins!";
+}
+
+/// The card's width: its standard one, or wider for whatever line of it is longer.
+double cardWidth(const Match& m, const MatchViewOptions& o) {
+    double w = kCardW;
+    if (m.level().mode == game::Mode::Duel) return std::max(w, designTextWidth(winnerLine(m, o), 1.8) + 4 * kPad);
+    for (const std::string& line : cardLines(m)) w = std::max(w, 20 + designTextWidth(line, kSmall) + 20);
+    for (const std::string& line : starNeedLines(m)) w = std::max(w, 40 + designTextWidth(line, kSmall) + 20);
+    if (m.assisted()) w = std::max(w, designTextWidth(kAssistedNote, 0.8) + 4 * kPad);
+    return w;
+}
+
+void drawCard(Renderer2D& r, const HudSpace& s, const Match& m, const MatchViewOptions& o, double width) {
     const bool duel = m.level().mode == game::Mode::Duel;
-    s.panel(0, 0, kCardW, cardHeight(m), Color::hex(0x0e1420, 0.88f));
-    const double cx = kCardW / 2;
+    s.panel(0, 0, width, cardHeight(m), Color::hex(0x0e1420, 0.88f));
+    const double cx = width / 2;
     if (duel) {
         const int win = m.winner();
-        const std::string who = win < 0 ? std::string("Draw") : playerName(m, o, win) + " wins!";
+        const std::string who = winnerLine(m, o);
         s.text(cx, 22, who, win < 0 ? kText : team(win), 1.8f, 0.5f);
         char line[96];
         std::snprintf(line, sizeof line, "shots fired %d", m.shotsFired());
@@ -271,8 +357,7 @@ void drawCard(Renderer2D& r, const HudSpace& s, const Match& m, const MatchViewO
     const double needsAt = 102 + kLineH * static_cast<double>(lines.size());
     drawStarNeeds(s, m, needsAt);
     if (m.assisted())
-        s.text(cx, needsAt + 3 * kLineH + 4, "assisted (full preview or hint): no third star", kTextDim, 0.8f,
-               0.5f);
+        s.text(cx, needsAt + 3 * kLineH + 4, kAssistedNote, kTextDim, 0.8f, 0.5f);
 }
 
 /// The level's scoring before the first shot: what the targets are worth, the bonus, what
@@ -345,23 +430,26 @@ void Hud::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o, const P
     };
     const bool duel = m.level().mode == game::Mode::Duel;
 
-    const double scoreH = duel ? kDuelH : kScoreH;
-    if (auto p = placed("hud.score", at({{mg, mg}, {W - mg - kScoreW, mg}, {mg, H - mg - scoreH}}, kScoreW, scoreH))) {
+    const double scoreH = duel ? kDuelH : kScoreH, scoreW = scoreWidth(m, o);
+    if (auto p = placed("hud.score", at({{mg, mg}, {W - mg - scoreW, mg}, {mg, H - mg - scoreH}}, scoreW, scoreH))) {
         if (duel)
-            drawPlayers(box(p), m, o);
+            drawPlayers(box(p), m, o, scoreW);
         else
-            drawScore(box(p), m);
+            drawScore(box(p), m, scoreW);
     }
     if (auto p = placed("hud.wind", at({{W / 2 - kWindW / 2, mg}, {W / 2 - kWindW / 2, H - mg - kWindH},
                                         {W * 0.3 - kWindW / 2, mg}, {W * 0.7 - kWindW / 2, mg}},
                                        kWindW, kWindH)))
         drawWind(box(p), m.wind());
     // The aim while it can be changed: no shell in the air, the match not over.
-    if (!m.shell() && !m.over())
-        if (auto p = placed("hud.aim", at({{mg, H - mg - kAimH}, {W - mg - kAimW, H - mg - kAimH},
+    if (!m.shell() && !m.over()) {
+        const AimText text = aimText(m, o);
+        const double h = text.height;
+        if (auto p = placed("hud.aim", at({{mg, H - mg - h}, {W - mg - kAimW, H - mg - h},
                                            {W - mg - kAimW, mg + kScoreH + mg}},
-                                          kAimW, kAimH)))
-            drawAim(box(p), m, o, aim);
+                                          kAimW, h)))
+            drawAim(box(p), m, o, aim, text);
+    }
     // The power and angle a drag sets, beside the pointer where it covers nothing.
     if (o.rubberBand && !m.shell() && !m.over()) {
         char text[64];
@@ -416,13 +504,13 @@ void Hud::drawRulesAndCard(Renderer2D& r, const Match& m, const MatchViewOptions
             drawRules(box(p), rules, w);
     }
     if (m.over() && o.endCard) {
-        const double ch = cardHeight(m);
-        if (auto p = placed("card", at({{W / 2 - kCardW / 2, H / 2 - ch / 2}, {W / 2 - kCardW / 2, mg + kWindH + 8},
-                                        {W / 2 - kCardW / 2, H - mg - ch}, {mg, H / 2 - ch / 2},
-                                        {W - mg - kCardW, H / 2 - ch / 2}, {mg, mg}, {W - mg - kCardW, mg},
-                                        {mg, H - mg - ch}, {W - mg - kCardW, H - mg - ch}},
-                                       kCardW, ch)))
-            drawCard(r, box(p), m, o);
+        const double ch = cardHeight(m), cw = cardWidth(m, o);
+        if (auto p = placed("card", at({{W / 2 - cw / 2, H / 2 - ch / 2}, {W / 2 - cw / 2, mg + kWindH + 8},
+                                        {W / 2 - cw / 2, H - mg - ch}, {mg, H / 2 - ch / 2},
+                                        {W - mg - cw, H / 2 - ch / 2}, {mg, mg}, {W - mg - cw, mg},
+                                        {mg, H - mg - ch}, {W - mg - cw, H - mg - ch}},
+                                       cw, ch)))
+            drawCard(r, box(p), m, o, cw);
     }
 }
 

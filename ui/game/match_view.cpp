@@ -1,7 +1,8 @@
 // Section index
 //   palette      colours of the scene (shared ones: ui/game/palette.h)
 //   scenery      sky, hills, terrain, water, obstacles
-//   things       blocks, ropes, blobs, particles, cannons, targets
+//   things       blocks, ropes, blobs, particles, cannons, targets (cloth:
+//                ui/game/cloth_view.cpp)
 //   effects      trails, preview, hint (the rest: ui/game/effects_view.cpp)
 //   layout       the objects the player must see, as drawn (the HUD: ui/game/hud.cpp;
 //                the level's framing: ui/game/level_camera.cpp)
@@ -9,6 +10,7 @@
 #include "ui/game/weapon_look.h"
 
 #include "game/ai.h"
+#include "ui/game/cloth_view.h"
 #include "ui/game/effects_view.h"
 #include "ui/game/palette.h"
 #include "ui/game/screen_layout.h"
@@ -292,7 +294,7 @@ void drawBlobs(Renderer2D& r, const Match& m) {
     }
 }
 
-/// Particles that are not ropes, blobs or the shell: sandbox spawns and fragments.
+/// Particles that are not ropes, blobs, cloth or the shell: sandbox spawns and fragments.
 void drawLooseParticles(Renderer2D& r, const Match& m, std::optional<phys::ParticleId> shell) {
     const phys::ParticleSet& ps = m.world().particles;
     std::vector<bool> owned(ps.slots(), false);
@@ -304,6 +306,7 @@ void drawLooseParticles(Renderer2D& r, const Match& m, std::optional<phys::Parti
         for (int i = 0; i <= b.def.points; ++i)
             if (b.center + static_cast<phys::ParticleId>(i) < owned.size())
                 owned[b.center + static_cast<phys::ParticleId>(i)] = true;
+    markClothParticles(m, owned);
     const double minR = r.camera().metres(2.0);
     for (std::size_t i = 0; i < ps.slots(); ++i) {
         if (!(ps.flags[i] & phys::kAlive) || owned[i]) continue;
@@ -553,6 +556,7 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
     drawRopes(r, m);
     drawBlocks(r, m);
     drawBlobs(r, m);
+    drawCloths(r, m);
     for (const game::TargetState& t : m.targets()) drawTarget(r, t);
 
     const auto shell = m.shell();
@@ -578,7 +582,7 @@ void MatchView::draw(Renderer2D& r, const Match& m, const MatchViewOptions& o) {
         const phys::ParticleSet& ps = m.world().particles;
         const Vec2 p = ps.position(*shell);
         const double rad = shellDrawRadius(ps.radius[*shell], r.camera());
-        r.fillCircle(p, rad * 1.6, Color::hex(0xffffff, 0.35f));
+        r.fillCircle(p, rad * kShellGlow, Color::hex(0xffffff, 0.35f));
         r.fillCircle(p, rad, kShell);
         r.fillCircle(p + Vec2{-0.3, 0.3} * rad, rad * 0.35, Color::hex(0x8a9099));
         drawWeaponShell(r, m, rad);
@@ -648,7 +652,7 @@ void MatchView::addObjects(const Renderer2D& r, const Match& m, const MatchViewO
     }
     if (const auto shell = m.shell()) {
         const phys::ParticleSet& ps = m.world().particles;
-        const double rad = 1.6 * shellDrawRadius(ps.radius[*shell], c);
+        const double rad = kShellGlow * shellDrawRadius(ps.radius[*shell], c);
         add("shell", ps.position(*shell) - Vec2{rad, rad}, ps.position(*shell) + Vec2{rad, rad});
     }
     for (const game::Flash& f : effects_.flashes()) {

@@ -1,6 +1,7 @@
 // How a match looks: sky, terrain with its craters, water, obstacles, Box2D blocks,
-// ropes, blobs, cannons, targets, the shell and its trail, the trajectory preview, the
-// firing-solution hint, the effects (ui/game/effects_view.h), the wind and the HUD. One drawing path for the window and for
+// ropes, blobs, cloth (ui/game/cloth_view.h), cannons, targets, the shell and its trail,
+// the trajectory preview, the firing-solution hint, the effects (ui/game/effects_view.h),
+// the wind and the HUD (ui/game/hud.h). One drawing path for the window and for
 // headless frames (`artillery run --png`): everything goes through Renderer2D,
 // the HUD included (boxes in pixel space, text as labels that ImGui draws).
 //
@@ -128,8 +129,12 @@ double cannonDrawScale(const Camera& camera);
 
 /// A target's radius as drawn, m: never under 6 px, so a far target is still a bullseye.
 double targetDrawRadius(const game::TargetState& target, const Camera& camera);
-/// The shell's radius as drawn, m: never under 4 px (its glow reaches 1.6 times that).
+/// The shell's radius as drawn, m: never under 4 px, so a shell smaller than 6 px across
+/// on screen is drawn larger than life (its glow reaches kShellGlow times that).
 double shellDrawRadius(double radius, const Camera& camera);
+/// How far the shell's glow reaches, in shell radii as drawn: the layout reports the
+/// shell by its glow.
+inline constexpr double kShellGlow = 1.6;
 
 /// Half extents of the axis-aligned box around a block turned by its body's angle, m.
 phys::Vec2 turnedHalf(const game::Match& match, const game::BlockState& block);

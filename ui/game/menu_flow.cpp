@@ -51,8 +51,9 @@ MenuChoice MenuFlow::draw(const game::Progress& progress, PlayerSettings& settin
     return choice;
 }
 
-MenuChoice MenuFlow::nextLevelCard(const game::Progress& progress, const std::string& levelFile) const {
-    return ui::nextLevelCard(campaign_, progress, levelFile);
+MenuChoice MenuFlow::nextLevelCard(const game::Progress& progress, const std::string& levelFile,
+                                   ImVec2 corner) const {
+    return ui::nextLevelCard(campaign_, progress, levelFile, corner);
 }
 
 bool MenuFlow::follow(const MenuChoice& choice, game::Progress& progress,

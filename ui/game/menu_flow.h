@@ -49,7 +49,8 @@ class MenuFlow {
                     const std::string& editing, const game::Match* match, RewindControl& rewind,
                     unsigned fbo);
     /// The card at a finished level's end: the next level on the way, again, the select.
-    MenuChoice nextLevelCard(const game::Progress& progress, const std::string& levelFile) const;
+    MenuChoice nextLevelCard(const game::Progress& progress, const std::string& levelFile,
+                             ImVec2 corner) const;
     /// Carries out the choices that only move between menus (a lesson, the replays, back,
     /// help). True when a lesson read for the first time went into `progress` (save it).
     bool follow(const MenuChoice& choice, game::Progress& progress, const std::string& replaysFolder);

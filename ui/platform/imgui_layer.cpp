@@ -109,6 +109,13 @@ bool ImGuiLayer::processEvent(const SDL_Event& event) {
     // ones): they are not ImGui's.
     if (!window_) return false;
     if (taps_.holdBack(event)) return true; // a quick tap's release: next frame
+    if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_LEAVE) pointerOut_ = true;
+    if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_ENTER) pointerOut_ = false;
+    if (event.type == SDL_MOUSEMOTION) {
+        pointer_ = Vec2{static_cast<double>(event.motion.x), static_cast<double>(event.motion.y)};
+        pointerSeen_ = true;
+        pointerOut_ = false;
+    }
     return ImGui_ImplSDL2_ProcessEvent(&event);
 }
 
@@ -119,6 +126,16 @@ ImFont* largeFont() {
 
 float panelPx(float designPixels) {
     return designPixels * gPanelScale;
+}
+
+void dimWrapped(const std::string& text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    if (ImGui::GetCurrentWindow()->DC.TextWrapPos < 0.0f) {
+        ImGui::TextWrapped("%s", text.c_str());
+    } else {
+        ImGui::TextUnformatted(text.c_str()); // wraps at the position pushed
+    }
+    ImGui::PopStyleColor();
 }
 
 void keepPanelOnScreen(float margin) {
@@ -170,6 +187,14 @@ void ImGuiLayer::newFrame(double dtSeconds) {
         for (const SDL_Event& release : taps_.releasesDue())
             ImGui_ImplSDL2_ProcessEvent(&release);
         ImGui_ImplSDL2_NewFrame();
+        // The pointer where its last motion event put it, as later ImGui backends take it:
+        // this backend reads the global pointer state, which SDL may not refresh (no raw
+        // input events under some X servers), or the last place inside a focused window
+        // the pointer has left. After it left (and no button drags it), nothing is
+        // hovered, so a tooltip closes.
+        const ImVec2 seen(static_cast<float>(pointer_.x), static_cast<float>(pointer_.y));
+        if (pointerSeen_)
+            ImGui::GetIO().MousePos = pointerOut_ && !ImGui::IsAnyMouseDown() ? ImVec2(-FLT_MAX, -FLT_MAX) : seen;
     } else {
         ImGuiIO& io = ImGui::GetIO();
         io.DisplaySize =
@@ -248,6 +273,15 @@ PixelRect labelRect(const Label& l) {
     const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.0f, l.text.c_str());
     const double x0 = l.pixel.x - l.alignX * extent.x * scale.x;
     return {x0, l.pixel.y, x0 + (extent.x + 1) * scale.x, l.pixel.y + (extent.y + 1) * scale.y};
+}
+
+double designTextWidth(const std::string& text, double scale) {
+    // The labels' face, measured at its design size: its advances scale with the size.
+    const ImGuiIO& io = ImGui::GetIO();
+    const ImFont* font = io.Fonts->Fonts.empty() ? nullptr : io.Fonts->Fonts[0];
+    if (!font || !io.Fonts->IsBuilt())
+        throw std::runtime_error("text measured before the panels' font is loaded");
+    return font->CalcTextSizeA(static_cast<float>(kFontPixels * scale), FLT_MAX, 0.0f, text.c_str()).x;
 }
 
 void ImGuiLayer::render() {

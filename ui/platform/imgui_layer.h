@@ -33,11 +33,18 @@ ImFont* largeFont();
 std::vector<std::pair<std::string, PixelRect>> drawnWindowRects();
 /// Where `label` will be drawn, in framebuffer pixels, in the font of the panels being built.
 PixelRect labelRect(const Label& label);
+/// How wide `text` is at `scale` x the panels' design font size, in design pixels (the
+/// 1280x720 canvas): what a box the HUD lays out in design pixels needs to hold it.
+double designTextWidth(const std::string& text, double scale);
 
 /// Design pixels (the 1280x720 canvas of ui/render/design_canvas.h) to pixels of the
 /// panels being built: what a fixed width or position in a panel is given in, so it
 /// scales with their text on a large screen.
 float panelPx(float designPixels);
+
+/// A line in the disabled (dim) colour, wrapped at the window's edge (or the wrap
+/// position pushed): a note that never runs out of its panel.
+void dimWrapped(const std::string& text);
 
 /// Call between Begin and End: a panel that grew past the bottom or the right of the
 /// display (it fits what it holds, and holds more now) moves back in, `margin` pixels
@@ -89,6 +96,9 @@ class ImGuiLayer {
     float scale_ = 0.0f;   ///< the panels' scale (design_canvas.h), 0 before the first
     Vec2 layoutDisplay_{}; ///< the display the panels are placed for, in points
     KeyTaps taps_;         ///< quick taps' releases, held back a frame
+    bool pointerOut_ = false;  ///< the pointer left the window
+    bool pointerSeen_ = false; ///< a motion event has come: pointer_ holds its place
+    Vec2 pointer_{};           ///< the last motion event's place, in window points
 };
 
 } // namespace ui
