@@ -59,6 +59,16 @@ TEST(TargetInset, HidesOnceTheMainViewShowsTheTargetsReadable) {
     EXPECT_TRUE(ui::targetInset(m, close));
 }
 
+// First shot's discs, drawn at least as large as they read, stand in the main view for
+// themselves: no close-up covers the sky for them; the castle's blocks at the same framing
+// want it.
+TEST(TargetInset, DiscsAloneReadInTheMainView) {
+    const game::Match discs(game::loadLevel(sourceDir() + "/levels/12_first_shot.json"));
+    EXPECT_FALSE(ui::targetInset(discs, ui::levelCamera(discs, 1280, 720)));
+    const game::Match castle(game::loadLevel(sourceDir() + "/levels/05_castle.json"));
+    EXPECT_TRUE(ui::targetInset(castle, ui::levelCamera(castle, 1280, 720)));
+}
+
 // The Stats window open over the close-up's corner (as it first opens at 1280x720) moves
 // the close-up to its left, clear of it and on the screen; a window elsewhere, or one
 // that leaves no room left of it, leaves the close-up where it is.

@@ -79,6 +79,15 @@ double smallestTarget(const game::Match& m, const Camera& screen) {
     return smallest;
 }
 
+/// A target block or blob still standing: something whose fall depends on its shape.
+bool aimsAtStructures(const game::Match& m) {
+    for (const game::BlockState& b : m.blocks())
+        if (b.def.target && !b.toppled) return true;
+    for (const game::BlobState& b : m.blobs())
+        if (b.def.target && !b.toppled) return true;
+    return false;
+}
+
 /// Where the close-up may stand, w x h px, in order: the top right under the HUD's band,
 /// the top left under it, the bottom right and the bottom left over the aim's band.
 std::vector<PixelRect> insetPlaces(const Camera& screen, const TargetInsetDef& def, double w, double h) {
@@ -95,11 +104,13 @@ std::optional<TargetInset> targetInset(const game::Match& m, const Camera& scree
     const auto aimed = aimedAtBox(m);
     if (!aimed) return std::nullopt;
     const auto [lo, hi] = *aimed;
-    // Shown readable already: the main view's own picture of it is tall enough, and no
-    // target in it is too small to make out.
+    // Shown readable already: no target in it is too small to make out, and a structure
+    // (a castle to knock down, a duel's cover) stands tall enough to read its shape. Discs
+    // alone, drawn at their readable size, need nothing more.
     const double shownPx = std::max(hi.y - lo.y, 1.0) * screen.pixelsPerMetre;
     const double smallestPx = smallestTarget(m, screen) * screen.pixelsPerMetre;
-    if (shownPx >= def.readablePx && smallestPx >= def.smallestPx) return std::nullopt;
+    const bool shapeToRead = m.level().mode == game::Mode::Duel || aimsAtStructures(m);
+    if (smallestPx >= def.smallestPx && (!shapeToRead || shownPx >= def.readablePx)) return std::nullopt;
     std::vector<PixelRect> avoid;
     if (layout) avoid = layout->objectRects();
     if (layout)

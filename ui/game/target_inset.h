@@ -5,7 +5,8 @@
 //
 // What is aimed at: the targets not yet hit, the target blocks and blobs still standing,
 // and in a duel the other players' cannons. The close-up hides itself once the main view
-// shows them big enough (the camera following a shell closes in on them).
+// shows them big enough (the camera following a shell closes in on them); discs alone,
+// drawn larger than life where they are small, never need it.
 #pragma once
 
 #include "ui/game/match_view.h"
@@ -45,8 +46,9 @@ struct TargetInset {
 std::optional<std::pair<Vec2, Vec2>> aimedAtBox(const game::Match& match);
 
 /// The close-up for a frame seen through `screen`, or nothing when the screen already
-/// shows what is aimed at readably: at least `def.readablePx` tall, and every target in
-/// it at least `def.smallestPx` across (or nothing is aimed at). With `layout`, it stands
+/// shows what is aimed at readably: every target in it at least `def.smallestPx` across,
+/// and, where there is a shape to read (target blocks or blobs standing, a duel's
+/// castles), at least `def.readablePx` tall (or nothing is aimed at). With `layout`, it stands
 /// where it covers none of the layout's objects and overlays (the top right under the
 /// HUD's band, else the top left, else the bottom corners; smaller if it must), and
 /// nothing when no place is clear.
