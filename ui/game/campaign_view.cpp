@@ -130,6 +130,9 @@ MenuChoice nextLevelCard(const CampaignMenu& menu, const game::Progress& progres
         ImGui::PopTextWrapPos();
     }
     ImGui::SameLine();
+    // Another go at this level, as R does: what a player who missed a star reaches for.
+    if (ImGui::Button("Retry (R)")) choice.restart = true;
+    ImGui::SameLine();
     if (ImGui::Button("Levels (L)")) choice.levelSelect = true;
     ImGui::End();
     return choice;
