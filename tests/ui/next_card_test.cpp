@@ -1,6 +1,7 @@
 // The card that follows a finished level: the next level (or why it is locked), another
 // go at this one, the level select. A game of First shot played out without a star: its
-// Retry button, pressed as a player presses it, starts the level again.
+// Retry button, pressed as a player presses it, starts the level again; the card opens
+// where it stays.
 #include "headless_game.h"
 
 #include <gtest/gtest.h>
@@ -32,8 +33,6 @@ ImGuiWindow* playOut(ui::GameScreen& screen) {
 /// Headless, ImGui takes no SDL events: the pointer is set on its IO, as its backend does.
 std::optional<ImVec2> buttonIn(ui::GameScreen& screen, ImGuiWindow* window, const char* label) {
     const ImGuiID id = window->GetID(label);
-    // The card finds its place clear of the field as the camera comes home (1.5 s).
-    for (int i = 0; i < 180; ++i) screen.frame(1.0 / 60.0);
     const ImRect r = window->Rect();
     for (float y = r.Min.y + 4.0f; y < r.Max.y; y += 8.0f)
         for (float x = r.Min.x + 4.0f; x < r.Max.x; x += 12.0f) {
@@ -54,6 +53,15 @@ TEST(NextCard, RetryPlaysTheLevelAgain) {
     ImGuiWindow* card = playOut(screen);
     ASSERT_NE(card, nullptr) << "the game ends and its card is drawn";
     EXPECT_EQ(screen.session()->match().stars(), 0);
+    // It opens where it stays: only once the camera is home, so it does not hop about
+    // as the view glides back (ImGui sizes it over its first two frames).
+    for (int i = 0; i < 2; ++i) screen.frame(1.0 / 60.0);
+    const ImVec2 opened = card->Pos;
+    for (int i = 0; i < 180; ++i) {
+        screen.frame(1.0 / 60.0);
+        ASSERT_EQ(card->Pos.x, opened.x) << "frame " << i;
+        ASSERT_EQ(card->Pos.y, opened.y) << "frame " << i;
+    }
     const auto retry = buttonIn(screen, card, "Retry (R)");
     ASSERT_TRUE(retry) << "the card has a Retry button";
     // A press and a release on it, a frame each, as a click reaches ImGui.

@@ -48,6 +48,9 @@ class CameraControl {
 
     /// The player moved the view away from the framing (panned or zoomed it).
     bool moved() const { return moved_; }
+    /// The view is still: home, or where the player put it (not following, holding on an
+    /// impact or gliding back).
+    bool still() const { return moved_ || rig_.phase() == game::CameraRig::Phase::Home; }
     /// Home again (Home, a new level): framed anew, following again.
     void forgetMoves() { moved_ = false; }
     bool panning() const { return panning_; }

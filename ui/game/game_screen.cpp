@@ -413,8 +413,10 @@ void GameScreen::matchPanels(MenuChoice& choice, bool& sceneToEditor) {
         if (auto d = statsPanel_.panel(m, shownAim)) submit(settingCommands(m.world().def(), *d));
     if (settings.physicsPanel) physicsPanelOfMatch(m);
     if (costShown_) costReadout(costFigures(m, stats_.frameMs), clearCorner("Cost", costReadoutEstimate()));
-    if (m.over() && play_.resultRecorded() && !choice.openLevel && !editor_.playtest()) {
-        // Beside the results card, wherever the HUD put it, and clear of the field.
+    if (m.over() && play_.resultRecorded() && !choice.openLevel && !editor_.playtest() &&
+        camera_.still()) {
+        // Beside the results card, wherever the HUD put it, and clear of the field: once
+        // the camera is home, so it opens in its place rather than hopping as the view glides.
         const auto card = std::find_if(layout_.overlays.begin(), layout_.overlays.end(),
                                        [](const LayoutOverlay& o) { return o.name == "card"; });
         const ImVec2 corner = clearCorner("Next level", ImVec2(panelPx(460), panelPx(60)),
