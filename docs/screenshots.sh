@@ -21,6 +21,7 @@ shot() { # LEVEL-OR-EMPTY PNG [play options...]
 }
 shot "" docs/level_select.png
 shot levels/40_scatter.json docs/weapon_level.png
+shot levels/01_earth_basics.json docs/scoring_hud.png
 shot levels/37_castle_duel.json docs/castle_duel.png --warmup 6
 
 # The lab: explicit Euler at 30 Hz on First shot, recorded and watched as a replay 150
@@ -47,6 +48,19 @@ DISPLAY=$display xdotool mousemove 461 62 click 1
 sleep 1.5
 DISPLAY=$display import -window root docs/lesson.png
 echo "drew docs/lesson.png"
+kill "$game" 2>/dev/null || true
+
+# The end card: Earth basics as the computer played it (its golden replay), watched to
+# just past the match's end (tick 2779 of 120 Hz) and taken over with T, as a player
+# takes over a replay; the card stands once the camera is home.
+DISPLAY=$display "$exe" play --replay tests/replays/01_earth_basics.replay.json --warmup 23.7 \
+  --frames 900 >/dev/null 2>&1 &
+game=$!
+sleep 4
+DISPLAY=$display xdotool key t
+sleep 3
+DISPLAY=$display import -window root docs/end_card.png
+echo "drew docs/end_card.png"
 kill "$game" 2>/dev/null || true
 
 # Compare in one key: X on First shot (no air) and on Air drag, the paths, their legend
