@@ -26,18 +26,27 @@ struct HeadlessGame {
     std::unique_ptr<ui::GLContext> context;
     std::unique_ptr<ui::GameScreen> screen;
 
-    HeadlessGame(const std::string& level, int w, int h, const std::filesystem::path& settings) {
+    HeadlessGame(const std::string& level, int w, int h, const std::filesystem::path& settings)
+        : HeadlessGame(levelDef(level, settings), w, h) {}
+
+    /// Any screen the game opens on (a replay, the editor, the level select): `def`, its
+    /// levels folder the source tree's.
+    HeadlessGame(ui::GameScreenDef def, int w, int h) {
         std::string error;
         context = ui::createHeadlessContext(w, h, ui::HeadlessBackend::Auto, error);
         EXPECT_NE(context, nullptr) << error;
         if (!context) return;
-        ui::GameScreenDef def;
-        def.levelFile = (kRoot / "levels" / level).string();
         def.levelsFolder = (kRoot / "levels").string();
-        def.settingsFolder = settings.string();
         screen = std::make_unique<ui::GameScreen>(*context, nullptr, def);
         for (int i = 0; i < 2; ++i)
             screen->frame(1.0 / 60.0);
+    }
+
+    static ui::GameScreenDef levelDef(const std::string& level, const std::filesystem::path& settings) {
+        ui::GameScreenDef def;
+        def.levelFile = (kRoot / "levels" / level).string();
+        def.settingsFolder = settings.string();
+        return def;
     }
 };
 

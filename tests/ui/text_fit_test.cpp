@@ -92,13 +92,11 @@ TEST(TextFits, TheLabsPanelsHoldWhatTheyDraw) {
 
 TEST(TextFits, TheReplaysPanelHoldsWhatItDraws) {
     for (const Size s : kSizes) {
-        std::string error;
-        auto context = ui::createHeadlessContext(s.w, s.h, ui::HeadlessBackend::Auto, error);
-        ASSERT_NE(context, nullptr) << error;
         ui::GameScreenDef def;
         def.replayFile = (test_game::kRoot / "tests" / "replays" / "39_crows_nests.replay.json").string();
-        def.levelsFolder = (test_game::kRoot / "levels").string();
-        ui::GameScreen screen(*context, nullptr, def);
+        test_game::HeadlessGame game(def, s.w, s.h);
+        ASSERT_NE(game.screen, nullptr);
+        ui::GameScreen& screen = *game.screen;
         screen.warmUp(4.0);
         frames(screen, 3);
         ASSERT_NE(screen.replayViewer(), nullptr);
@@ -127,16 +125,12 @@ TEST(TextFits, ThePauseMenuAndTheHelpHoldWhatTheyDraw) {
 TEST(TextFits, TheEditorHoldsWhatItDraws) {
     for (const Size s : kSizes) {
         test_game::ScratchFolder scratch("text-fit-editor");
-        std::string error;
-        auto context = ui::createHeadlessContext(s.w, s.h, ui::HeadlessBackend::Auto, error);
-        ASSERT_NE(context, nullptr) << error;
-        ui::GameScreenDef def;
+        ui::GameScreenDef def = test_game::HeadlessGame::levelDef("05_castle.json", scratch.dir);
         def.edit = true;
-        def.levelFile = (test_game::kRoot / "levels" / "05_castle.json").string();
-        def.levelsFolder = (test_game::kRoot / "levels").string();
-        def.settingsFolder = scratch.dir.string();
-        ui::GameScreen screen(*context, nullptr, def);
-        frames(screen, 4);
+        test_game::HeadlessGame game(def, s.w, s.h);
+        ASSERT_NE(game.screen, nullptr);
+        ui::GameScreen& screen = *game.screen;
+        frames(screen, 2);
         ASSERT_NE(screen.levelEditor(), nullptr);
         ASSERT_NE(ImGui::FindWindowByName("##editorhint"), nullptr);
         expectWindowsFit(at("the editor", s), s.w, s.h);
@@ -149,14 +143,12 @@ TEST(TextFits, TheEditorHoldsWhatItDraws) {
 
 TEST(TextFits, TheLessonHoldsWhatItDraws) {
     for (const Size s : kSizes) {
-        std::string error;
-        auto context = ui::createHeadlessContext(s.w, s.h, ui::HeadlessBackend::Auto, error);
-        ASSERT_NE(context, nullptr) << error;
         test_game::ScratchFolder scratch("text-fit-lesson");
         ui::GameScreenDef def;
-        def.levelsFolder = (test_game::kRoot / "levels").string();
         def.settingsFolder = scratch.dir.string();
-        ui::GameScreen screen(*context, nullptr, def);
+        test_game::HeadlessGame game(def, s.w, s.h);
+        ASSERT_NE(game.screen, nullptr);
+        ui::GameScreen& screen = *game.screen;
         ImGuiIO& io = ImGui::GetIO();
         io.KeyMap[ImGuiKey_Enter] = SDL_SCANCODE_RETURN;
         frames(screen, 3);

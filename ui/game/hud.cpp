@@ -393,8 +393,7 @@ std::optional<PixelRect> Hud::place(const std::string& name, const std::vector<P
                                     double height) {
     auto pixels = [&](const PixelRect& d) { return PixelRect{d.x0 * u, d.y0 * u, d.x1 * u, d.y1 * u}; };
     if (!o.layout) return candidates.empty() ? std::nullopt : std::optional(candidates.front());
-    std::vector<PixelRect> avoid = o.layout->objectRects();
-    for (const PixelRect& r : o.layout->overlayRects()) avoid.push_back(r);
+    const std::vector<PixelRect> avoid = o.layout->taken();
     const PixelRect screen{0.0, 0.0, width, height};
     auto clear = [&](const PixelRect& d) {
         const PixelRect p = pixels(d);

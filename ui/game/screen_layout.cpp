@@ -35,6 +35,20 @@ std::vector<PixelRect> ScreenLayout::overlayRects() const {
     return rects;
 }
 
+std::vector<PixelRect> ScreenLayout::taken() const {
+    std::vector<PixelRect> rects = objectRects();
+    for (const LayoutOverlay& o : overlays) rects.push_back(o.rect);
+    return rects;
+}
+
+std::optional<PixelRect> ScreenLayout::placeOverlay(std::string name,
+                                                    std::span<const PixelRect> candidates) {
+    const auto clear = firstClear(candidates, taken(),
+                                  PixelRect{0.0, 0.0, static_cast<double>(width), static_cast<double>(height)});
+    if (clear) addOverlay(std::move(name), *clear);
+    return clear;
+}
+
 std::vector<Covering> coverings(const ScreenLayout& layout) {
     std::vector<Covering> found;
     for (std::size_t i = 0; i < layout.overlays.size(); ++i)

@@ -39,6 +39,11 @@ struct ScreenLayout {
     std::vector<PixelRect> objectRects() const;
     /// The overlays' rectangles so far, for placing one more clear of them too.
     std::vector<PixelRect> overlayRects() const;
+    /// What one more overlay must stand clear of: the objects and the overlays so far.
+    std::vector<PixelRect> taken() const;
+    /// The first of `candidates` clear of taken() and on the screen, added as the overlay
+    /// `name`; nothing (and nothing added) when none is clear.
+    std::optional<PixelRect> placeOverlay(std::string name, std::span<const PixelRect> candidates);
 };
 
 /// An overlay over an object: their indices in the layout.

@@ -24,16 +24,11 @@ ImVec4 imColor(Color c) { return ImVec4(c.r, c.g, c.b, c.a); }
 /// The work-precision chart's size at full text size, px.
 constexpr double kChartW = 340.0, kChartH = 210.0;
 
-/// The first of `places` clear of the objects and overlays of `layout` on a W x H screen,
-/// added to it as `name`; without a layout, the first place.
+/// The first of `places` clear on `layout` (added to it as `name`); without a layout, the
+/// first place.
 std::optional<PixelRect> placeOverlay(ScreenLayout* layout, const char* name,
-                                      const std::vector<PixelRect>& places, double W, double H) {
-    if (!layout) return places.front();
-    std::vector<PixelRect> avoid = layout->objectRects();
-    for (const PixelRect& o : layout->overlayRects()) avoid.push_back(o);
-    const auto clear = firstClear(places, avoid, PixelRect{0.0, 0.0, W, H});
-    if (clear) layout->addOverlay(name, *clear);
-    return clear;
+                                      const std::vector<PixelRect>& places) {
+    return layout ? layout->placeOverlay(name, places) : std::optional(places.front());
 }
 
 /// One row of the legend in its three columns: the path, its landing error, its cost.
@@ -119,7 +114,7 @@ std::optional<PixelRect> StatsPanel::drawLegend(Renderer2D& r, ScreenLayout* lay
                                            {m, top, m + w, top + h},
                                            {W - m - w, top, W - m, top + h},
                                            {W - m - w, H - m - h - 100.0 * u, W - m, H - m - 100.0 * u}};
-    const auto placed = placeOverlay(layout, "compare.legend", places, W, H);
+    const auto placed = placeOverlay(layout, "compare.legend", places);
     if (!placed) return std::nullopt; // nowhere clear: the paths speak for themselves
     const PixelRect at = *placed;
     const double columns[3] = {4.0, 140.0, 245.0}; // design px: path, error, cost
@@ -153,7 +148,7 @@ void StatsPanel::drawWorkChart(Renderer2D& r, const PixelRect& legend, ScreenLay
                        {W - m - w, top, W - m, top + h},
                        {W - m - w, H - m - h - 100.0 * u, W - m, H - m - 100.0 * u}});
     }
-    const auto at = placeOverlay(layout, "compare.chart", places, W, H);
+    const auto at = placeOverlay(layout, "compare.chart", places);
     if (!at) return; // nowhere clear: the legend's errors say it in numbers
     charts::ChartStyle style;
     style.textScale *= static_cast<float>(std::min(1.0, (at->x1 - at->x0) / kChartW));

@@ -111,10 +111,7 @@ std::optional<TargetInset> targetInset(const game::Match& m, const Camera& scree
     const double smallestPx = smallestTarget(m, screen) * screen.pixelsPerMetre;
     const bool shapeToRead = m.level().mode == game::Mode::Duel || aimsAtStructures(m);
     if (smallestPx >= def.smallestPx && (!shapeToRead || shownPx >= def.readablePx)) return std::nullopt;
-    std::vector<PixelRect> avoid;
-    if (layout) avoid = layout->objectRects();
-    if (layout)
-        for (const PixelRect& r : layout->overlayRects()) avoid.push_back(r);
+    const std::vector<PixelRect> avoid = layout ? layout->taken() : std::vector<PixelRect>{};
     const PixelRect whole{0.0, 0.0, static_cast<double>(screen.width), static_cast<double>(screen.height)};
     // As large as a clear place allows: its full size, else smaller.
     for (const double fraction : {def.widthFraction, 0.75 * def.widthFraction, 0.55 * def.widthFraction}) {
